@@ -1,0 +1,55 @@
+// error.hpp — typed errors for bad input and a minimal Expected<T> to return them.
+// Bad input (a malformed file, a mesh with the wrong topology, an unknown option) is an ordinary
+// result, not an exception: every fallible entry point returns Expected<T>, whose error carries a
+// category (stable, machine-readable; the CLI maps every category to exit code 2) and a message that
+// says what was found and where (line, face, vertex). Exceptions are reserved for programmer errors.
+#pragma once
+#include <string>
+#include <utility>
+#include <variant>
+
+namespace straightest {
+
+enum class ErrorCode {
+  Io,                 // file cannot be read
+  UnsupportedFormat,  // neither OBJ nor OFF, or an unknown format name
+  Parse,              // syntax error: bad token, bad header, truncated file, line too long
+  Empty,              // no vertices or no faces
+  TooLarge,           // over the configured caps (or a header claims more than the file can hold)
+  NonFinite,          // NaN or Inf coordinate
+  IndexOutOfRange,    // face refers to a vertex that does not exist (or index 0 in OBJ)
+  InvalidFace,        // fewer than 3 vertices, or a vertex repeated inside one face
+  DuplicateFace,      // two faces with the same vertex set
+  NonManifoldEdge,    // an edge shared by more than two faces
+  NonManifoldVertex,  // a vertex whose faces form more than one fan
+  NonOrientable,      // e.g. a Möbius strip: no consistent orientation exists
+  Topology,           // the algorithm needs another topology (disk, boundary, ...)
+  InvalidArgument,    // an option or index given by the caller is wrong
+};
+
+/// Stable snake_case name of a category ("non_manifold_edge"); used in JSON and JS errors.
+const char* errorCodeName(ErrorCode code);
+
+struct Error {
+  ErrorCode code;
+  std::string message;
+};
+
+/// Either a value or an Error. Deliberately small: value(), error(), ok().
+template <class T>
+class Expected {
+ public:
+  Expected(T value) : v_(std::move(value)) {}             // NOLINT(implicit)
+  Expected(Error error) : v_(std::move(error)) {}         // NOLINT(implicit)
+  bool ok() const { return v_.index() == 0; }
+  explicit operator bool() const { return ok(); }
+  T& value() & { return std::get<0>(v_); }
+  const T& value() const& { return std::get<0>(v_); }
+  T&& value() && { return std::get<0>(std::move(v_)); }
+  const Error& error() const { return std::get<1>(v_); }
+
+ private:
+  std::variant<T, Error> v_;
+};
+
+}  // namespace straightest

@@ -1,0 +1,106 @@
+// trimesh.hpp — the validated, immutable triangle mesh every algorithm works on.
+//
+// Contract: TriMesh::build() takes positions and triangles in the file's order (0-based, no welding,
+// no reordering; unreferenced vertices are kept and reported) and either returns a mesh that is a
+// manifold, consistently oriented (faces flipped to agree with the majority of their connected
+// component; the count is reported) triangle mesh with finite coordinates, or an Error saying what
+// was found and where. Zero-area faces are reported, not rejected: each algorithm decides whether
+// it can cope.
+//
+// Connectivity is a half-edge table with implicit halfedges: halfedge h = 3*f + k goes from corner k
+// of face f to corner (k+1)%3; next(h) stays in the face; twin(h) is the opposite halfedge or -1 on
+// the boundary. Boundary loops are ordered along the boundary halfedges (so they follow the faces'
+// orientation: the surface lies to the left when walking a loop).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "straightest/error.hpp"
+#include "straightest/vec3.hpp"
+
+namespace straightest {
+
+using Triangle = std::array<int32_t, 3>;
+
+struct BuildLimits {
+  int64_t maxVertices = 50'000'000;
+  int64_t maxFaces = 100'000'000;
+};
+
+struct BoundingBox {
+  Vec3 min, max;
+  double diagonal() const { return norm(max - min); }
+};
+
+/// A one-look summary of a mesh, as `straightest info` and `mesh.info()` report it.
+struct MeshSummary {
+  int64_t vertices = 0;
+  int64_t faces = 0;
+  int64_t edges = 0;
+  std::vector<int64_t> boundaryLoopSizes;  // longest first
+  int64_t eulerCharacteristic = 0;         // V - E + F over referenced vertices
+  int64_t components = 0;
+  int64_t degenerateFaces = 0;
+  int64_t reorientedFaces = 0;
+  int64_t unreferencedVertices = 0;
+  BoundingBox bbox;
+  std::vector<std::string> problems;  // human-readable notes on what was found and repaired
+};
+
+class TriMesh {
+ public:
+  /// Validates and builds. See the file comment for what is checked and repaired. `notes` (e.g. from a
+  /// loader: "3 polygons were triangulated") are prepended to the summary's problems.
+  static Expected<TriMesh> build(std::vector<Vec3> positions, std::vector<Triangle> triangles,
+                                 const BuildLimits& limits = {}, std::vector<std::string> notes = {});
+
+  int32_t numVertices() const { return static_cast<int32_t>(positions_.size()); }
+  int32_t numFaces() const { return static_cast<int32_t>(triangles_.size()); }
+  const std::vector<Vec3>& positions() const { return positions_; }
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+  const Vec3& position(int32_t v) const { return positions_[v]; }
+  const Triangle& triangle(int32_t f) const { return triangles_[f]; }
+
+  // Half-edge connectivity (see file comment).
+  static int32_t face(int32_t h) { return h / 3; }
+  static int32_t next(int32_t h) { return h - h % 3 + (h % 3 + 1) % 3; }
+  static int32_t prev(int32_t h) { return h - h % 3 + (h % 3 + 2) % 3; }
+  int32_t twin(int32_t h) const { return twin_[h]; }
+  int32_t tail(int32_t h) const { return triangles_[h / 3][h % 3]; }
+  int32_t head(int32_t h) const { return triangles_[h / 3][(h % 3 + 1) % 3]; }
+  bool isBoundaryHalfedge(int32_t h) const { return twin_[h] < 0; }
+  /// An outgoing halfedge of v (tail(h) == v), -1 if v is unreferenced. For a boundary vertex it is
+  /// the outgoing boundary halfedge, so rotating counter-clockwise with h = twin(prev(h)) from it visits
+  /// the whole fan (until -1); for an interior vertex the rotation comes back to where it started.
+  int32_t vertexHalfedge(int32_t v) const { return vertexHalfedge_[v]; }
+  bool isBoundaryVertex(int32_t v) const { return isBoundaryVertex_[v] != 0; }
+
+  const std::vector<std::vector<int32_t>>& boundaryLoops() const { return boundaryLoops_; }
+  /// Unit normal of face f (zero for a degenerate face) and its area.
+  const Vec3& faceNormal(int32_t f) const { return faceNormals_[f]; }
+  double faceArea(int32_t f) const { return faceAreas_[f]; }
+  bool isDegenerateFace(int32_t f) const { return degenerate_[f] != 0; }
+
+  const MeshSummary& summary() const { return summary_; }
+
+ private:
+  TriMesh() = default;
+  std::vector<Vec3> positions_;
+  std::vector<Triangle> triangles_;
+  std::vector<int32_t> twin_;
+  std::vector<int32_t> vertexHalfedge_;
+  std::vector<uint8_t> isBoundaryVertex_;
+  std::vector<std::vector<int32_t>> boundaryLoops_;
+  std::vector<Vec3> faceNormals_;
+  std::vector<double> faceAreas_;
+  std::vector<uint8_t> degenerate_;
+  MeshSummary summary_;
+};
+
+/// Relative threshold below which a face counts as degenerate: |e1 × e2| <= kDegenerateRel * |e1| * |e2|
+/// (the sine of the face's angle at its first corner is below it) or an edge has zero length.
+inline constexpr double kDegenerateRel = 1e-12;
+
+}  // namespace straightest

@@ -1,0 +1,128 @@
+// Built-in sample meshes (see samples.hpp). Each generator builds positions and triangles and goes
+// through TriMesh::build like any file would.
+#include "straightest/samples.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace straightest {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TriMesh buildOrDie(std::vector<Vec3> positions, std::vector<Triangle> triangles) {
+  auto mesh = TriMesh::build(std::move(positions), std::move(triangles));
+  // The generators are ours: a failure here is a programmer error.
+  if (!mesh) throw std::logic_error("sample generator produced an invalid mesh: " + mesh.error().message);
+  return std::move(mesh).value();
+}
+
+/// Concentric rings around a center vertex over the unit disk (ring i has 6*i vertices at radius
+/// i/rings), mapped through `lift(x, y) -> Vec3`. Gives well-shaped triangles and a round boundary.
+template <class Lift>
+TriMesh diskMesh(int rings, Lift lift) {
+  std::vector<Vec3> positions{lift(0.0, 0.0)};
+  std::vector<Triangle> triangles;
+  auto ringStart = [](int i) { return i == 0 ? 0 : 1 + 3 * i * (i - 1); };  // vertices before ring i
+  for (int i = 1; i <= rings; ++i) {
+    const int count = 6 * i;
+    for (int j = 0; j < count; ++j) {
+      const double a = 2 * kPi * j / count, r = static_cast<double>(i) / rings;
+      positions.push_back(lift(r * std::cos(a), r * std::sin(a)));
+    }
+  }
+  for (int i = 1; i <= rings; ++i) {
+    const int outer = ringStart(i), inner = ringStart(i - 1);
+    const int nOuter = 6 * i, nInner = i == 1 ? 1 : 6 * (i - 1), innerSteps = i == 1 ? 0 : nInner;
+    // Walk both rings by angle; each step emits one triangle advancing the ring that lags behind.
+    int a = 0, b = 0;
+    while (a < nOuter || b < innerSteps) {
+      const double angleOuter = static_cast<double>(a + 1) / nOuter;
+      const double angleInner = i == 1 ? 2.0 : static_cast<double>(b + 1) / nInner;
+      const int o0 = outer + a % nOuter, o1 = outer + (a + 1) % nOuter;
+      const int i0 = inner + (i == 1 ? 0 : b % nInner), i1 = inner + (i == 1 ? 0 : (b + 1) % nInner);
+      if (b >= innerSteps || (a < nOuter && angleOuter <= angleInner)) {
+        triangles.push_back({o0, o1, i0});
+        ++a;
+      } else {
+        triangles.push_back({i0, o0, i1});
+        ++b;
+      }
+    }
+  }
+  return buildOrDie(std::move(positions), std::move(triangles));
+}
+
+double mountainHeight(double x, double y) {
+  auto bump = [](double x, double y, double cx, double cy, double s, double h) {
+    return h * std::exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (2 * s * s));
+  };
+  return bump(x, y, 0.1, 0.05, 0.35, 0.8) + bump(x, y, -0.5, 0.45, 0.25, 0.45) + bump(x, y, 0.55, -0.5, 0.2, 0.35);
+}
+
+double faceHeight(double x, double y) {
+  auto bump = [](double x, double y, double cx, double cy, double sx, double sy, double h) {
+    return h * std::exp(-((x - cx) * (x - cx) / (2 * sx * sx) + (y - cy) * (y - cy) / (2 * sy * sy)));
+  };
+  const double dome = 0.45 * std::sqrt(std::max(0.0, 1.0 - 0.8 * (x * x + y * y)));
+  return dome + bump(x, y, 0, 0.0, 0.07, 0.25, 0.28)        // nose
+         + bump(x, y, -0.3, 0.35, 0.2, 0.06, 0.08)         // brows
+         + bump(x, y, 0.3, 0.35, 0.2, 0.06, 0.08)
+         - bump(x, y, -0.3, 0.2, 0.1, 0.06, 0.1)           // eye sockets
+         - bump(x, y, 0.3, 0.2, 0.1, 0.06, 0.1)
+         + bump(x, y, -0.4, -0.2, 0.18, 0.18, 0.07)        // cheeks
+         + bump(x, y, 0.4, -0.2, 0.18, 0.18, 0.07)
+         + bump(x, y, 0, -0.5, 0.2, 0.05, 0.05)            // lips
+         + 0.015 * std::sin(9 * x) * std::cos(7 * y);     // skin bumps
+}
+
+}  // namespace
+
+std::vector<std::string> sampleNames() { return {"mountain", "cap", "saddle", "face"}; }
+
+TriMesh makeHeightField(int n) {
+  if (n < 2) n = 2;
+  std::vector<Vec3> positions;
+  positions.reserve(static_cast<size_t>(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+      positions.push_back({x, y, mountainHeight(x, y)});
+    }
+  std::vector<Triangle> triangles;
+  triangles.reserve(2 * static_cast<size_t>(n - 1) * (n - 1));
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      if ((i + j) % 2 == 0) {
+        triangles.push_back({a, b, d});
+        triangles.push_back({a, d, c});
+      } else {
+        triangles.push_back({a, b, c});
+        triangles.push_back({b, d, c});
+      }
+    }
+  return buildOrDie(std::move(positions), std::move(triangles));
+}
+
+TriMesh makeSphericalCap(double radius, double thetaMax, int rings) {
+  return diskMesh(rings, [&](double x, double y) {
+    const double r = std::sqrt(x * x + y * y), theta = r * thetaMax, phi = std::atan2(y, x);
+    return Vec3{radius * std::sin(theta) * std::cos(phi), radius * std::sin(theta) * std::sin(phi),
+                radius * std::cos(theta)};
+  });
+}
+
+Expected<TriMesh> makeSample(const std::string& name) {
+  if (name == "mountain") return makeHeightField(50);
+  if (name == "cap") return makeSphericalCap(1.0, kPi / 3, 16);
+  if (name == "saddle") return diskMesh(16, [](double x, double y) { return Vec3{x, y, x * x - y * y}; });
+  if (name == "face")
+    return diskMesh(20, [](double x, double y) { return Vec3{0.8 * x, y, faceHeight(0.8 * x, y)}; });
+  std::string names;
+  for (const auto& n : sampleNames()) names += (names.empty() ? "" : ", ") + n;
+  return Error{ErrorCode::InvalidArgument, "unknown sample '" + name + "' (available: " + names + ")"};
+}
+
+}  // namespace straightest

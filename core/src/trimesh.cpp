@@ -1,0 +1,276 @@
+// Validation and connectivity for TriMesh. Every pass is linear (edge grouping buckets halfedges by
+// their smaller vertex with a counting sort), so hostile meshes cannot make it quadratic.
+#include "straightest/trimesh.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+namespace straightest {
+namespace {
+
+std::string str(const Vec3& p) {
+  std::ostringstream s;
+  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return s.str();
+}
+
+Error err(ErrorCode code, const std::string& message) { return Error{code, message}; }
+
+}  // namespace
+
+Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triangle> triangles,
+                                 const BuildLimits& limits, std::vector<std::string> notes) {
+  const int64_t nv = static_cast<int64_t>(positions.size());
+  const int64_t nf = static_cast<int64_t>(triangles.size());
+  if (nv > limits.maxVertices || nv > std::numeric_limits<int32_t>::max() / 2)
+    return err(ErrorCode::TooLarge, "mesh has " + std::to_string(nv) + " vertices, more than the limit of " +
+                                        std::to_string(limits.maxVertices));
+  if (nf > limits.maxFaces || nf > std::numeric_limits<int32_t>::max() / 4)
+    return err(ErrorCode::TooLarge, "mesh has " + std::to_string(nf) + " faces, more than the limit of " +
+                                        std::to_string(limits.maxFaces));
+  if (nv == 0) return err(ErrorCode::Empty, "mesh has no vertices");
+  if (nf == 0) return err(ErrorCode::Empty, "mesh has no faces (" + std::to_string(nv) + " vertices)");
+
+  for (int64_t v = 0; v < nv; ++v)
+    if (!isFinite(positions[v]))
+      return err(ErrorCode::NonFinite, "vertex " + std::to_string(v) + " has a non-finite coordinate " +
+                                           str(positions[v]));
+
+  for (int64_t f = 0; f < nf; ++f) {
+    const Triangle& t = triangles[f];
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < 0 || t[k] >= nv)
+        return err(ErrorCode::IndexOutOfRange, "face " + std::to_string(f) + " refers to vertex " +
+                                                   std::to_string(t[k]) + ", but the mesh has " +
+                                                   std::to_string(nv) + " vertices (valid: 0.." +
+                                                   std::to_string(nv - 1) + ")");
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      return err(ErrorCode::InvalidFace, "face " + std::to_string(f) + " uses a vertex twice (" +
+                                             std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
+                                             std::to_string(t[2]) + ")");
+  }
+
+  // Group halfedges by undirected edge: bucket by the smaller endpoint (counting sort), then sort
+  // each small bucket by the larger endpoint.
+  const int32_t nh = static_cast<int32_t>(3 * nf);
+  auto tailOf = [&](int32_t h) { return triangles[h / 3][h % 3]; };
+  auto headOf = [&](int32_t h) { return triangles[h / 3][(h % 3 + 1) % 3]; };
+  std::vector<int32_t> bucketStart(nv + 1, 0);
+  for (int32_t h = 0; h < nh; ++h) ++bucketStart[std::min(tailOf(h), headOf(h)) + 1];
+  std::partial_sum(bucketStart.begin(), bucketStart.end(), bucketStart.begin());
+  std::vector<int32_t> bucket(nh);
+  {
+    std::vector<int32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
+    for (int32_t h = 0; h < nh; ++h) bucket[fill[std::min(tailOf(h), headOf(h))]++] = h;
+  }
+  std::vector<int32_t> mate(nh, -1);          // the other halfedge of the same edge (before orientation repair)
+  std::vector<uint8_t> sameDirection(nh, 0);  // mate runs the same way: one of the two faces is flipped
+  for (int64_t v = 0; v < nv; ++v) {
+    auto first = bucket.begin() + bucketStart[v], last = bucket.begin() + bucketStart[v + 1];
+    std::sort(first, last, [&](int32_t a, int32_t b) {
+      const int32_t ma = std::max(tailOf(a), headOf(a)), mb = std::max(tailOf(b), headOf(b));
+      return ma != mb ? ma < mb : a < b;
+    });
+    for (auto it = first; it != last;) {
+      const int32_t other = std::max(tailOf(*it), headOf(*it));
+      auto end = it;
+      while (end != last && std::max(tailOf(*end), headOf(*end)) == other) ++end;
+      const auto count = end - it;
+      if (count > 2) {
+        std::string fs;
+        for (auto j = it; j != end && j - it < 6; ++j) fs += (j == it ? "" : ", ") + std::to_string(*j / 3);
+        return err(ErrorCode::NonManifoldEdge, "edge (" + std::to_string(v) + ", " + std::to_string(other) +
+                                                   ") is shared by " + std::to_string(count) + " faces (" + fs +
+                                                   (count > 6 ? ", ..." : "") + ")");
+      }
+      if (count == 2) {
+        const int32_t a = it[0], b = it[1];
+        if (a / 3 == b / 3) {  // cannot happen without a repeated vertex, which was rejected above
+          return err(ErrorCode::InvalidFace, "face " + std::to_string(a / 3) + " uses an edge twice");
+        }
+        if (tailOf(a) == tailOf(b)) {
+          // Same direction: either inconsistent orientation, or a duplicate face. Check duplicates.
+          const Triangle& ta = triangles[a / 3];
+          const Triangle& tb = triangles[b / 3];
+          auto sorted = [](Triangle t) { std::sort(t.begin(), t.end()); return t; };
+          if (sorted(ta) == sorted(tb))
+            return err(ErrorCode::DuplicateFace, "faces " + std::to_string(a / 3) + " and " +
+                                                     std::to_string(b / 3) + " have the same vertices (" +
+                                                     std::to_string(ta[0]) + ", " + std::to_string(ta[1]) +
+                                                     ", " + std::to_string(ta[2]) + ")");
+          sameDirection[a] = sameDirection[b] = 1;
+        }
+        mate[a] = b;
+        mate[b] = a;
+      }
+      it = end;
+    }
+  }
+  // Opposite-direction duplicates (f and its mirror) share all three edges: detect them too.
+  for (int64_t f = 0; f < nf; ++f) {
+    const int32_t m0 = mate[3 * f], m1 = mate[3 * f + 1], m2 = mate[3 * f + 2];
+    if (m0 >= 0 && m1 >= 0 && m2 >= 0 && m0 / 3 == m1 / 3 && m1 / 3 == m2 / 3)
+      return err(ErrorCode::DuplicateFace, "faces " + std::to_string(f) + " and " + std::to_string(m0 / 3) +
+                                               " have the same vertices (" + std::to_string(triangles[f][0]) +
+                                               ", " + std::to_string(triangles[f][1]) + ", " +
+                                               std::to_string(triangles[f][2]) + ")");
+  }
+
+  // Orientation: breadth-first over faces through shared edges; flip[g] = flip[f] xor sameDirection.
+  std::vector<int8_t> flip(nf, -1);
+  std::vector<int32_t> componentOf(nf, -1);
+  std::vector<int32_t> queue;
+  queue.reserve(nf);
+  int32_t components = 0;
+  int64_t reoriented = 0;
+  for (int32_t seed = 0; seed < nf; ++seed) {
+    if (flip[seed] >= 0) continue;
+    const size_t begin = queue.size();
+    flip[seed] = 0;
+    componentOf[seed] = components;
+    queue.push_back(seed);
+    for (size_t q = begin; q < queue.size(); ++q) {
+      const int32_t f = queue[q];
+      for (int k = 0; k < 3; ++k) {
+        const int32_t h = 3 * f + k, m = mate[h];
+        if (m < 0) continue;
+        const int32_t g = m / 3;
+        const int8_t want = static_cast<int8_t>(flip[f] ^ sameDirection[h]);
+        if (flip[g] < 0) {
+          flip[g] = want;
+          componentOf[g] = components;
+          queue.push_back(g);
+        } else if (flip[g] != want) {
+          return err(ErrorCode::NonOrientable,
+                     "the surface is not orientable (like a Möbius strip): faces " + std::to_string(f) + " and " +
+                         std::to_string(g) + " across edge (" + std::to_string(tailOf(h)) + ", " +
+                         std::to_string(headOf(h)) + ") cannot be oriented consistently");
+        }
+      }
+    }
+    const size_t size = queue.size() - begin;
+    size_t flipped = 0;
+    for (size_t q = begin; q < queue.size(); ++q) flipped += flip[queue[q]];
+    if (2 * flipped > size) {  // keep the majority's orientation
+      for (size_t q = begin; q < queue.size(); ++q) flip[queue[q]] ^= 1;
+      flipped = size - flipped;
+    }
+    reoriented += static_cast<int64_t>(flipped);
+    ++components;
+  }
+
+  TriMesh mesh;
+  // Apply flips: (a, b, c) -> (a, c, b). Halfedge k of a flipped face becomes halfedge 2 - k.
+  auto newHalfedge = [&](int32_t h) { const int32_t f = h / 3, k = h % 3; return 3 * f + (flip[f] ? 2 - k : k); };
+  for (int64_t f = 0; f < nf; ++f)
+    if (flip[f]) std::swap(triangles[f][1], triangles[f][2]);
+  mesh.twin_.assign(nh, -1);
+  int64_t edges = 0;
+  for (int32_t h = 0; h < nh; ++h) {
+    if (mate[h] >= 0) {
+      mesh.twin_[newHalfedge(h)] = newHalfedge(mate[h]);
+      if (h < mate[h]) ++edges;
+    } else {
+      ++edges;
+    }
+  }
+  mesh.positions_ = std::move(positions);
+  mesh.triangles_ = std::move(triangles);
+
+  // Vertex fans: one outgoing halfedge per vertex (the boundary one when there is one); a vertex whose
+  // faces are not reached by rotating around it from there is non-manifold (several fans).
+  std::vector<int32_t> cornerCount(nv, 0);
+  mesh.vertexHalfedge_.assign(nv, -1);
+  mesh.isBoundaryVertex_.assign(nv, 0);
+  for (int32_t h = 0; h < nh; ++h) {
+    const int32_t v = mesh.tail(h);
+    ++cornerCount[v];
+    if (mesh.twin_[h] < 0) {
+      if (mesh.isBoundaryVertex_[v])
+        return err(ErrorCode::NonManifoldVertex,
+                   "vertex " + std::to_string(v) + " is where separate pieces of surface touch (two boundary "
+                   "edges leave it, e.g. two triangles sharing only this corner)");
+      mesh.isBoundaryVertex_[v] = 1;
+      mesh.vertexHalfedge_[v] = h;
+    } else if (mesh.vertexHalfedge_[v] < 0) {
+      mesh.vertexHalfedge_[v] = h;
+    }
+  }
+  int64_t unreferenced = 0;
+  for (int32_t v = 0; v < nv; ++v) {
+    const int32_t start = mesh.vertexHalfedge_[v];
+    if (start < 0) { ++unreferenced; continue; }
+    int32_t count = 0, h = start;
+    do {
+      ++count;
+      h = mesh.twin_[prev(h)];
+    } while (h >= 0 && h != start && count <= cornerCount[v]);
+    if (count != cornerCount[v])
+      return err(ErrorCode::NonManifoldVertex,
+                 "vertex " + std::to_string(v) + " joins " + std::to_string(cornerCount[v]) +
+                     " faces that do not form a single fan around it (separate pieces of surface touch there)");
+  }
+
+  // Boundary loops, following boundary halfedges (the surface on the left), longest first.
+  std::vector<uint8_t> visited(nh, 0);
+  for (int32_t h0 = 0; h0 < nh; ++h0) {
+    if (mesh.twin_[h0] >= 0 || visited[h0]) continue;
+    std::vector<int32_t> loop;
+    int32_t h = h0;
+    while (!visited[h]) {
+      visited[h] = 1;
+      loop.push_back(mesh.tail(h));
+      h = mesh.vertexHalfedge_[mesh.head(h)];  // the unique outgoing boundary halfedge of the head
+    }
+    mesh.boundaryLoops_.push_back(std::move(loop));
+  }
+  std::stable_sort(mesh.boundaryLoops_.begin(), mesh.boundaryLoops_.end(),
+                   [](const auto& a, const auto& b) { return a.size() > b.size(); });
+
+  // Face geometry.
+  mesh.faceNormals_.resize(nf);
+  mesh.faceAreas_.resize(nf);
+  mesh.degenerate_.assign(nf, 0);
+  int64_t degenerate = 0;
+  for (int32_t f = 0; f < nf; ++f) {
+    const Triangle& t = mesh.triangles_[f];
+    const Vec3 e1 = mesh.positions_[t[1]] - mesh.positions_[t[0]];
+    const Vec3 e2 = mesh.positions_[t[2]] - mesh.positions_[t[0]];
+    const Vec3 c = cross(e1, e2);
+    const double twiceArea = norm(c);
+    mesh.faceAreas_[f] = 0.5 * twiceArea;
+    const bool isDegenerate = !(twiceArea > kDegenerateRel * norm(e1) * norm(e2)) || !std::isfinite(twiceArea);
+    mesh.degenerate_[f] = isDegenerate;
+    degenerate += isDegenerate;
+    mesh.faceNormals_[f] = isDegenerate ? Vec3{} : c / twiceArea;
+  }
+
+  MeshSummary& s = mesh.summary_;
+  s.vertices = nv;
+  s.faces = nf;
+  s.edges = edges;
+  for (const auto& loop : mesh.boundaryLoops_) s.boundaryLoopSizes.push_back(static_cast<int64_t>(loop.size()));
+  s.eulerCharacteristic = (nv - unreferenced) - edges + nf;
+  s.components = components;
+  s.degenerateFaces = degenerate;
+  s.reorientedFaces = reoriented;
+  s.unreferencedVertices = unreferenced;
+  s.bbox.min = s.bbox.max = mesh.positions_[0];
+  for (const Vec3& p : mesh.positions_) {
+    s.bbox.min = {std::min(s.bbox.min.x, p.x), std::min(s.bbox.min.y, p.y), std::min(s.bbox.min.z, p.z)};
+    s.bbox.max = {std::max(s.bbox.max.x, p.x), std::max(s.bbox.max.y, p.y), std::max(s.bbox.max.z, p.z)};
+  }
+  s.problems = std::move(notes);
+  if (reoriented > 0)
+    s.problems.push_back(std::to_string(reoriented) + " faces had the opposite orientation of their neighbours "
+                         "and were flipped");
+  if (degenerate > 0) s.problems.push_back(std::to_string(degenerate) + " degenerate (zero-area) faces");
+  if (unreferenced > 0)
+    s.problems.push_back(std::to_string(unreferenced) + " vertices are not used by any face (kept, ignored)");
+  if (components > 1) s.problems.push_back("the mesh has " + std::to_string(components) + " connected components");
+  return mesh;
+}
+
+}  // namespace straightest

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs the system packages straightest needs (Debian 12), only those that are missing.
+# Idempotent: when everything is present it only checks and returns in about a second.
+set -euo pipefail
+
+packages=(cmake g++ make emscripten libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev googletest chromium nodejs)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    # nodejs may come from another source (nodesource or a tarball): accept a working node >= 20.
+    if [ "$p" = nodejs ] && command -v node >/dev/null && \
+       [ "$(node -p 'process.versions.node.split(".")[0]')" -ge 20 ]; then continue; fi
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all system packages present"
+  exit 0
+fi
+
+echo "setup: installing missing packages: ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null; then SUDO=sudo; else
+    echo "setup: not root and no sudo; run as root:" >&2
+    echo "  apt-get update && apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+else
+  SUDO=
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "setup: done"

@@ -1,0 +1,52 @@
+// The built-in samples are valid disks with the geometry their names promise.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "straightest/samples.hpp"
+
+namespace straightest {
+namespace {
+
+TEST(Samples, EverySampleIsAConsistentlyOrientedDiskWithoutDegenerateFaces) {
+  for (const std::string& name : sampleNames()) {
+    auto mesh = makeSample(name);
+    ASSERT_TRUE(mesh.ok()) << name << ": " << mesh.error().message;
+    const MeshSummary& s = mesh.value().summary();
+    EXPECT_EQ(s.boundaryLoopSizes.size(), 1u) << name;
+    EXPECT_EQ(s.eulerCharacteristic, 1) << name;
+    EXPECT_EQ(s.components, 1) << name;
+    EXPECT_EQ(s.degenerateFaces, 0) << name;
+    EXPECT_EQ(s.reorientedFaces, 0) << name;
+    for (int f = 0; f < mesh.value().numFaces(); ++f)
+      ASSERT_GT(mesh.value().faceNormal(f).z, 0) << name << ": face " << f << " faces down";
+  }
+}
+
+TEST(Samples, MountainIsThePapers2500VertexHeightField) {
+  const TriMesh mesh = makeSample("mountain").value();
+  EXPECT_EQ(mesh.numVertices(), 2500);
+  EXPECT_EQ(mesh.numFaces(), 2 * 49 * 49);
+  EXPECT_EQ(mesh.boundaryLoops()[0].size(), 4u * 49);
+}
+
+TEST(Samples, CapVerticesLieOnTheUnitSphereWithinItsPolarAngle) {
+  const double thetaMax = 3.14159265358979323846 / 3;
+  const TriMesh mesh = makeSphericalCap(1.0, thetaMax, 8);
+  EXPECT_EQ(mesh.numVertices(), 1 + 3 * 8 * 9);
+  for (const Vec3& p : mesh.positions()) {
+    EXPECT_NEAR(norm(p), 1.0, 1e-12);
+    EXPECT_GE(p.z, std::cos(thetaMax) - 1e-12);
+  }
+  for (int v : mesh.boundaryLoops()[0]) EXPECT_NEAR(mesh.position(v).z, std::cos(thetaMax), 1e-12);
+}
+
+TEST(Samples, UnknownNameListsTheAvailableOnes) {
+  auto mesh = makeSample("teapot");
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::InvalidArgument);
+  EXPECT_NE(mesh.error().message.find("mountain"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace straightest

@@ -1,0 +1,183 @@
+// TriMesh validation, orientation repair and topology summaries.
+#include <algorithm>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "straightest/samples.hpp"
+#include "straightest/trimesh.hpp"
+#include "test_util.hpp"
+
+namespace straightest {
+namespace {
+
+using testing::dataPath;
+using testing::loadGood;
+
+ErrorCode buildError(std::vector<Vec3> p, std::vector<Triangle> t) {
+  auto mesh = TriMesh::build(std::move(p), std::move(t));
+  EXPECT_FALSE(mesh.ok());
+  return mesh.ok() ? ErrorCode::InvalidArgument : mesh.error().code;
+}
+
+/// Every interior edge is traversed once in each direction: the definition of consistent orientation.
+void expectConsistentlyOriented(const TriMesh& mesh) {
+  std::set<std::pair<int, int>> directed;
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto e = std::make_pair(mesh.triangle(f)[k], mesh.triangle(f)[(k + 1) % 3]);
+      EXPECT_TRUE(directed.insert(e).second) << "edge " << e.first << "->" << e.second << " used twice";
+    }
+  for (int h = 0; h < 3 * mesh.numFaces(); ++h) {
+    const int t = mesh.twin(h);
+    if (t < 0) continue;
+    EXPECT_EQ(mesh.tail(h), mesh.head(t));
+    EXPECT_EQ(mesh.head(h), mesh.tail(t));
+    EXPECT_EQ(mesh.twin(t), h);
+  }
+}
+
+TEST(Orientation, FlipsTheMinorityToAgreeWithTheirNeighbours) {
+  const TriMesh mesh = loadGood("good/inconsistent.obj");
+  EXPECT_EQ(mesh.summary().reorientedFaces, 2);
+  expectConsistentlyOriented(mesh);
+  for (int f = 0; f < mesh.numFaces(); ++f) EXPECT_GT(mesh.faceNormal(f).z, 0.99) << "face " << f;
+}
+
+TEST(Orientation, ConsistentMeshIsLeftAlone) {
+  const TriMesh mesh = loadGood("good/tetrahedron.off");
+  EXPECT_EQ(mesh.summary().reorientedFaces, 0);
+  expectConsistentlyOriented(mesh);
+}
+
+TEST(Orientation, MoebiusStripIsNonOrientable) {
+  auto mesh = loadMeshFile(dataPath("bad/moebius.obj"));
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::NonOrientable) << mesh.error().message;
+}
+
+TEST(Topology, DiskHasOneBoundaryLoopAndEulerCharacteristicOne) {
+  const TriMesh mesh = loadGood("good/quad_grid.obj");
+  ASSERT_EQ(mesh.boundaryLoops().size(), 1u);
+  EXPECT_EQ(mesh.boundaryLoops()[0].size(), 8u);
+  EXPECT_EQ(mesh.summary().eulerCharacteristic, 1);
+  EXPECT_EQ(mesh.summary().components, 1);
+  EXPECT_FALSE(mesh.isBoundaryVertex(4));  // the center of the 3 x 3 grid
+}
+
+TEST(Topology, BoundaryLoopKeepsTheSurfaceOnItsLeft) {
+  // For a flat disk with upward normals, the boundary runs counter-clockwise: positive signed area.
+  const TriMesh mesh = loadGood("good/quad_grid.obj");
+  const auto& loop = mesh.boundaryLoops()[0];
+  double twiceArea = 0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Vec3& a = mesh.position(loop[i]);
+    const Vec3& b = mesh.position(loop[(i + 1) % loop.size()]);
+    twiceArea += a.x * b.y - a.y * b.x;
+  }
+  EXPECT_NEAR(twiceArea / 2, 4.0, 1e-12);
+}
+
+TEST(Topology, AnnulusHasTwoLoopsAndEulerCharacteristicZero) {
+  const TriMesh mesh = loadGood("good/annulus.off");
+  EXPECT_EQ(mesh.boundaryLoops().size(), 2u);
+  EXPECT_EQ(mesh.summary().boundaryLoopSizes, (std::vector<int64_t>{4, 4}));
+  EXPECT_EQ(mesh.summary().eulerCharacteristic, 0);
+}
+
+TEST(Topology, ClosedTetrahedronHasNoBoundaryAndEulerCharacteristicTwo) {
+  const TriMesh mesh = loadGood("good/tetrahedron.off");
+  EXPECT_TRUE(mesh.boundaryLoops().empty());
+  EXPECT_EQ(mesh.summary().eulerCharacteristic, 2);
+  EXPECT_EQ(mesh.summary().edges, 6);
+}
+
+TEST(Topology, VertexFanRotationVisitsEveryIncidentFace) {
+  const TriMesh mesh = makeSample("mountain").value();
+  std::vector<int> incident(mesh.numVertices(), 0);
+  for (const Triangle& t : mesh.triangles())
+    for (int v : t) ++incident[v];
+  for (int v = 0; v < mesh.numVertices(); ++v) {
+    int count = 0, h = mesh.vertexHalfedge(v);
+    const int start = h;
+    do {
+      ASSERT_EQ(mesh.tail(h), v);
+      ++count;
+      h = mesh.twin(TriMesh::prev(h));
+    } while (h >= 0 && h != start);
+    EXPECT_EQ(count, incident[v]) << "vertex " << v;
+    EXPECT_EQ(h < 0, mesh.isBoundaryVertex(v)) << "vertex " << v;
+  }
+}
+
+TEST(Topology, CountsComponentsAndUnreferencedVertices) {
+  auto mesh = TriMesh::build({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}, {3, 0, 0}, {4, 0, 0}, {3, 1, 0}},
+                             {{0, 1, 2}, {4, 5, 6}});
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh.value().summary().components, 2);
+  EXPECT_EQ(mesh.value().summary().unreferencedVertices, 1);
+  EXPECT_EQ(mesh.value().summary().eulerCharacteristic, 2);
+}
+
+TEST(Validation, ReportsDegenerateFacesWithoutRejectingThem) {
+  auto mesh = TriMesh::build({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}}, {{0, 1, 2}, {0, 3, 1}});
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh.value().summary().degenerateFaces, 1);  // (0, 3, 1) is collinear
+  EXPECT_TRUE(mesh.value().isDegenerateFace(1));
+  EXPECT_FALSE(mesh.value().isDegenerateFace(0));
+}
+
+TEST(Validation, RejectsNonManifoldEdge) {
+  auto mesh = loadMeshFile(dataPath("bad/nonmanifold_edge.obj"));
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::NonManifoldEdge);
+  EXPECT_NE(mesh.error().message.find("3 faces"), std::string::npos) << mesh.error().message;
+}
+
+TEST(Validation, RejectsBowtieVertex) {
+  auto mesh = loadMeshFile(dataPath("bad/nonmanifold_vertex.obj"));
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::NonManifoldVertex) << mesh.error().message;
+}
+
+TEST(Validation, RejectsTwoClosedFansSharingAVertex) {
+  // Two tetrahedra glued at one vertex: every edge is manifold, the shared vertex is not.
+  std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  std::vector<Triangle> t{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2},
+                          {0, 4, 5}, {0, 6, 4}, {4, 6, 5}, {0, 5, 6}};
+  EXPECT_EQ(buildError(p, t), ErrorCode::NonManifoldVertex);
+}
+
+TEST(Validation, RejectsDuplicateFacesInEitherWinding) {
+  auto mesh = loadMeshFile(dataPath("bad/duplicate_face.obj"));
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::DuplicateFace) << mesh.error().message;
+  EXPECT_EQ(buildError({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}}), ErrorCode::DuplicateFace);
+}
+
+TEST(Validation, RejectsEmptyOutOfRangeRepeatedAndNonFinite) {
+  EXPECT_EQ(buildError({}, {}), ErrorCode::Empty);
+  EXPECT_EQ(buildError({{0, 0, 0}}, {}), ErrorCode::Empty);
+  EXPECT_EQ(buildError({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 3}}), ErrorCode::IndexOutOfRange);
+  EXPECT_EQ(buildError({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, -1}}), ErrorCode::IndexOutOfRange);
+  EXPECT_EQ(buildError({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 1}}), ErrorCode::InvalidFace);
+  EXPECT_EQ(buildError({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}, {{0, 1, 2}}), ErrorCode::NonFinite);
+}
+
+TEST(Validation, EnforcesConfigurableCaps) {
+  BuildLimits limits;
+  limits.maxVertices = 2;
+  auto mesh = TriMesh::build({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}, limits);
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::TooLarge);
+}
+
+TEST(Validation, BoundingBoxSpansAllVertices) {
+  const TriMesh mesh = loadGood("good/annulus.off");
+  EXPECT_DOUBLE_EQ(mesh.summary().bbox.min.x, -2);
+  EXPECT_DOUBLE_EQ(mesh.summary().bbox.max.y, 2);
+  EXPECT_DOUBLE_EQ(mesh.summary().bbox.max.z, 0);
+}
+
+}  // namespace
+}  // namespace straightest
