@@ -3,6 +3,7 @@
 #include "straightest/trimesh.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -271,6 +272,33 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     s.problems.push_back(std::to_string(unreferenced) + " vertices are not used by any face (kept, ignored)");
   if (components > 1) s.problems.push_back("the mesh has " + std::to_string(components) + " connected components");
   return mesh;
+}
+
+Expected<TriMesh> meshFromFlatArrays(const std::vector<double>& xyz, const std::vector<double>& indices,
+                                     const BuildLimits& limits) {
+  if (xyz.size() % 3 != 0)
+    return err(ErrorCode::InvalidArgument, "positions has " + std::to_string(xyz.size()) +
+                                               " numbers, not a multiple of 3 (x, y, z per vertex)");
+  if (indices.size() % 3 != 0)
+    return err(ErrorCode::InvalidArgument, "indices has " + std::to_string(indices.size()) +
+                                               " numbers, not a multiple of 3 (3 vertices per triangle)");
+  if (static_cast<int64_t>(xyz.size() / 3) > limits.maxVertices)
+    return err(ErrorCode::TooLarge, std::to_string(xyz.size() / 3) + " vertices, over the limit of " +
+                                        std::to_string(limits.maxVertices));
+  if (static_cast<int64_t>(indices.size() / 3) > limits.maxFaces)
+    return err(ErrorCode::TooLarge, std::to_string(indices.size() / 3) + " faces, over the limit of " +
+                                        std::to_string(limits.maxFaces));
+  std::vector<Vec3> positions(xyz.size() / 3);
+  for (size_t v = 0; v < positions.size(); ++v) positions[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+  std::vector<Triangle> triangles(indices.size() / 3);
+  for (size_t i = 0; i < indices.size(); ++i) {
+    const double index = indices[i];
+    if (!(index >= 0 && index <= std::numeric_limits<int32_t>::max() && index == std::floor(index)))
+      return err(ErrorCode::IndexOutOfRange, "indices[" + std::to_string(i) + "] (face " + std::to_string(i / 3) +
+                                                 ") is " + std::to_string(index) + ", not a vertex index");
+    triangles[i / 3][i % 3] = static_cast<int32_t>(index);
+  }
+  return TriMesh::build(std::move(positions), std::move(triangles), limits);
 }
 
 }  // namespace straightest

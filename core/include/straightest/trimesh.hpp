@@ -99,6 +99,12 @@ class TriMesh {
   MeshSummary summary_;
 };
 
+/// Builds from flat arrays as a caller (JS, a file-less API) hands them: xyz has 3 coordinates per
+/// vertex, indices 3 vertex indices per face. Checks the lengths and that every index is a
+/// non-negative integer before TriMesh::build does the rest.
+Expected<TriMesh> meshFromFlatArrays(const std::vector<double>& xyz, const std::vector<double>& indices,
+                                     const BuildLimits& limits = {});
+
 /// Relative threshold below which a face counts as degenerate: |e1 × e2| <= kDegenerateRel * |e1| * |e2|
 /// (the sine of the face's angle at its first corner is below it) or an edge has zero length.
 inline constexpr double kDegenerateRel = 1e-12;

@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# npm test: installs what is missing, then runs every layer and prints each layer's totals:
+#   native   — native build + ctest (GoogleTest suite + CLI contract)
+#   wasm     — WASM build + ctest running the same GoogleTest sources under Node
+#   js       — node --test on the npm API (tests/js), including installing the packed package
+#   browser  — the page in headless Chromium (tests/e2e)
+# Exits non-zero if any layer fails. Set LAYERS="native wasm" to run a subset.
+source "$(dirname "$0")/common.sh"
+LAYERS="${LAYERS:-native wasm js browser}"
+LOG_DIR="$ROOT/build/test-logs"
+mkdir -p "$LOG_DIR"
+
+t=$(now_ms); ensure_system_packages; echo "setup: system packages $(elapsed "$t") s"
+t=$(now_ms); ensure_node_modules; echo "setup: npm packages $(elapsed "$t") s"
+
+summary=()
+total_pass=0
+total_fail=0
+status=0
+
+record() {  # layer pass fail seconds
+  summary+=("$(printf '%-8s %5d passed, %3d failed  (%s s)' "$1" "$2" "$3" "$4")")
+  total_pass=$((total_pass + $2))
+  total_fail=$((total_fail + $3))
+  if [ "$3" -ne 0 ]; then status=1; fi
+}
+
+ctest_counts() {  # log -> "pass fail" from "N% tests passed, F tests failed out of T"
+  local line total failed
+  line=$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$1" | tail -1 || true)
+  if [ -z "$line" ]; then echo "0 1"; return; fi
+  failed=$(echo "$line" | sed -E 's/.* ([0-9]+) tests? failed out of.*/\1/')
+  total=$(echo "$line" | sed -E 's/.*out of ([0-9]+).*/\1/')
+  echo "$((total - failed)) $failed"
+}
+
+run_layer() {  # name command... ; output to console and log; sets LAST_RC
+  local name=$1; shift
+  echo
+  echo "=== $name ==="
+  set +e
+  "$@" 2>&1 | tee "$LOG_DIR/$name.log"
+  LAST_RC=${PIPESTATUS[0]}
+  set -e
+}
+
+for layer in $LAYERS; do
+  t=$(now_ms)
+  case "$layer" in
+    native|wasm)
+      run_layer "$layer-build" bash scripts/build.sh "$layer"
+      if [ "$LAST_RC" -ne 0 ]; then record "$layer" 0 1 "$(elapsed "$t")"; continue; fi
+      echo "$layer build: $(elapsed "$t") s"
+      run_layer "$layer" ctest --preset "$layer"
+      read -r p f < <(ctest_counts "$LOG_DIR/$layer.log")
+      if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
+      record "$layer" "$p" "$f" "$(elapsed "$t")"
+      ;;
+    js)
+      run_layer js node --test tests/js/
+      p=$(grep -E '^# pass [0-9]+' "$LOG_DIR/js.log" | tail -1 | awk '{print $3}')
+      f=$(grep -E '^# fail [0-9]+' "$LOG_DIR/js.log" | tail -1 | awk '{print $3}')
+      p=${p:-0}; f=${f:-1}
+      if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
+      record js "$p" "$f" "$(elapsed "$t")"
+      ;;
+    browser)
+      run_layer browser node tests/e2e/browser.test.mjs
+      line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$LOG_DIR/browser.log" | tail -1 || true)
+      p=$(echo "$line" | awk '{print $1}'); f=$(echo "$line" | awk '{print $3}')
+      p=${p:-0}; f=${f:-1}
+      if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
+      record browser "$p" "$f" "$(elapsed "$t")"
+      ;;
+    *) echo "unknown layer '$layer'" >&2; exit 2 ;;
+  esac
+done
+
+echo
+echo "=== summary ==="
+for line in "${summary[@]}"; do echo "$line"; done
+echo "total: $total_pass passed, $total_fail failed"
+exit $status

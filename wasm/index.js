@@ -1,0 +1,116 @@
+// straightest — the npm package's ESM face. Loads the WebAssembly core once per createStraightest()
+// and wraps its Embind objects: errors become JS Errors, arrays are copied out of WASM memory once,
+// and meshes must be delete()d (a FinalizationRegistry frees forgotten ones eventually).
+import createStraightestModule from './dist/straightest-core.mjs';
+
+const isNode = typeof process !== 'undefined' && !!process.versions?.node && typeof window === 'undefined';
+
+/** An error from the core: `message` says what was found and where; `category` is machine-readable. */
+export class StraightestError extends Error {
+  constructor(message, category) {
+    super(message);
+    this.name = 'StraightestError';
+    this.category = category;
+  }
+}
+
+function unwrap(result) {
+  if (result.error !== undefined) throw new StraightestError(result.error, result.category);
+  return result;
+}
+
+const FORMATS = new Set(['auto', 'obj', 'off']);
+
+function toBytes(data) {
+  if (typeof data === 'string') return new TextEncoder().encode(data);
+  if (data instanceof Uint8Array) return data;
+  if (data instanceof ArrayBuffer) return new Uint8Array(data);
+  if (ArrayBuffer.isView(data)) return new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
+  throw new TypeError('loadMesh expects a Uint8Array, an ArrayBuffer or a string with the file contents');
+}
+
+const finalizer = typeof FinalizationRegistry === 'function'
+  ? new FinalizationRegistry((handle) => { try { handle.delete(); } catch { /* already gone */ } })
+  : null;
+
+/** A validated triangle mesh living in WASM memory. Call delete() when done. */
+export class Mesh {
+  #handle;
+
+  constructor(handle) {
+    this.#handle = handle;
+    finalizer?.register(this, handle, this);
+  }
+
+  #live() {
+    if (!this.#handle) throw new Error('straightest: this mesh has been deleted');
+    return this.#handle;
+  }
+
+  /** { vertices, faces, edges, boundaryLoops, eulerCharacteristic, components, degenerateFaces, ... } */
+  info() { return this.#live().info(); }
+
+  /** Vertex positions, 3 per vertex, in the file's order (a copy). */
+  positions() { return this.#live().positionsView().slice(); }
+
+  /** Triangle vertex indices, 3 per face (a copy; faces may have been reoriented for consistency). */
+  indices() { return this.#live().indicesView().slice(); }
+
+  get deleted() { return !this.#handle; }
+
+  /** Frees the WASM memory of this mesh. Idempotent. */
+  delete() {
+    if (!this.#handle) return;
+    finalizer?.unregister(this);
+    this.#handle.delete();
+    this.#handle = null;
+  }
+}
+
+/** The loaded library. Create with `await createStraightest()`. */
+export class Straightest {
+  #module;
+
+  constructor(module) { this.#module = module; }
+
+  /** Parses an OBJ or OFF file given as bytes (Uint8Array/ArrayBuffer) or text. */
+  loadMesh(data, format = 'auto', limits = {}) {
+    const fmt = String(format).toLowerCase();
+    if (!FORMATS.has(fmt)) throw new StraightestError(`unknown mesh format '${format}' (use obj, off or auto)`, 'unsupported_format');
+    return new Mesh(unwrap(this.#module.loadMeshBytes(toBytes(data), fmt, limits)).mesh);
+  }
+
+  /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
+  meshFromArrays(positions, indices, limits = {}) {
+    return new Mesh(unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh);
+  }
+
+  /** Names of the built-in sample meshes. */
+  sampleNames() { return this.#module.sampleNames(); }
+
+  /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face'). */
+  sample(name) { return new Mesh(unwrap(this.#module.sample(String(name))).mesh); }
+
+  /** Bytes of WASM memory currently reserved (grows, never shrinks). */
+  get memoryBytes() { return this.#module.HEAPU8.length; }
+}
+
+/**
+ * Loads the WebAssembly module. Options: `wasmUrl` (where the .wasm is served, for bundlers and
+ * CDNs), `locateFile(name)` (Emscripten's hook), or `wasmBinary` (the bytes themselves).
+ */
+export async function createStraightest(options = {}) {
+  const args = {};
+  if (options.wasmBinary) {
+    args.wasmBinary = options.wasmBinary;
+  } else if (options.wasmUrl) {
+    args.locateFile = () => String(options.wasmUrl);
+  } else if (options.locateFile) {
+    args.locateFile = options.locateFile;
+  } else if (isNode) {
+    // The loader is built for web and workers; in Node hand it the bytes next to this file.
+    const { readFile } = await import('node:fs/promises');
+    args.wasmBinary = await readFile(new URL('./dist/straightest-core.wasm', import.meta.url));
+  }
+  return new Straightest(await createStraightestModule(args));
+}

@@ -1,0 +1,7 @@
+import type { BufferGeometry } from 'three';
+import type { Mesh, Straightest } from './index.js';
+
+/** Builds a straightest Mesh from a three.js BufferGeometry (indexed or not). */
+export function meshFromBufferGeometry(st: Straightest, geometry: BufferGeometry): Mesh;
+/** A BufferGeometry (Float32 positions, Uint32 index) of a straightest Mesh. */
+export function toBufferGeometry(mesh: Mesh): BufferGeometry;

@@ -1,0 +1,25 @@
+// straightest/three — three.js helpers, kept apart so the core package does not require three.
+import { BufferAttribute, BufferGeometry } from 'three';
+
+/** Builds a straightest Mesh from a three.js BufferGeometry (indexed or not). */
+export function meshFromBufferGeometry(st, geometry) {
+  const position = geometry.getAttribute('position');
+  if (!position) throw new TypeError('meshFromBufferGeometry: the geometry has no position attribute');
+  const positions = new Float64Array(position.count * 3);
+  for (let i = 0; i < position.count; ++i) {
+    positions[3 * i] = position.getX(i);
+    positions[3 * i + 1] = position.getY(i);
+    positions[3 * i + 2] = position.getZ(i);
+  }
+  const index = geometry.getIndex();
+  const indices = index ? Uint32Array.from(index.array) : Uint32Array.from({ length: position.count }, (_, i) => i);
+  return st.meshFromArrays(positions, indices);
+}
+
+/** A BufferGeometry (Float32 positions, Uint32 index) of a straightest Mesh. */
+export function toBufferGeometry(mesh) {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(new Float32Array(mesh.positions()), 3));
+  geometry.setIndex(new BufferAttribute(mesh.indices(), 1));
+  return geometry;
+}
