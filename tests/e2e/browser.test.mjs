@@ -1,0 +1,356 @@
+// End-to-end tests of the web page in headless Debian Chromium (playwright-core, no bundled browser).
+//
+//   node tests/e2e/browser.test.mjs
+//
+// Starts scripts/serve.mjs on a free port, opens /web/index.html once per test, and prints
+// `ok - name` / `not ok - name: reason` per test and finally `N passed, M failed` (exit 1 on failure).
+// Needs the WASM build (wasm/dist/) and `npm install` (three, playwright-core).
+
+import http from 'node:http';
+import zlib from 'node:zlib';
+import { chromium } from 'playwright-core';
+import { startServer } from '../../scripts/serve.mjs';
+
+const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
+const CHROMIUM_ARGS = [
+  '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync',
+  '--no-first-run', '--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+];
+const WAIT_TIMEOUT_MS = 8_000; // any single wait in a page
+const TEST_TIMEOUT_MS = 20_000;
+const RUN_TIMEOUT_MS = 55_000;
+const VIEWPORT = { width: 1000, height: 700 };
+
+// ------------------------------------------------------------------ helpers
+
+/** Decodes an 8-bit, non-interlaced RGB or RGBA PNG into { width, height, channels, data }. */
+function decodePng(png) {
+  const signature = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+  if (!png.subarray(0, 8).equals(signature)) throw new Error('not a PNG file');
+  let width = 0, height = 0, bitDepth = 0, colorType = 0, interlace = 0;
+  const idat = [];
+  for (let pos = 8; pos < png.length; ) {
+    const length = png.readUInt32BE(pos);
+    const type = png.toString('latin1', pos + 4, pos + 8);
+    const data = png.subarray(pos + 8, pos + 8 + length);
+    if (type === 'IHDR') {
+      width = data.readUInt32BE(0);
+      height = data.readUInt32BE(4);
+      [bitDepth, colorType] = [data[8], data[9]];
+      interlace = data[12];
+    } else if (type === 'IDAT') {
+      idat.push(data);
+    } else if (type === 'IEND') {
+      break;
+    }
+    pos += 12 + length;
+  }
+  const channels = { 2: 3, 6: 4 }[colorType];
+  if (bitDepth !== 8 || !channels || interlace !== 0) {
+    throw new Error(`unsupported PNG: bit depth ${bitDepth}, color type ${colorType}, interlace ${interlace}`);
+  }
+  const raw = zlib.inflateSync(Buffer.concat(idat));
+  const stride = width * channels;
+  const data = Buffer.alloc(height * stride);
+  for (let y = 0; y < height; y++) {
+    const filter = raw[y * (stride + 1)];
+    const src = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
+    const row = y * stride;
+    for (let x = 0; x < stride; x++) {
+      const left = x >= channels ? data[row + x - channels] : 0;
+      const up = y > 0 ? data[row - stride + x] : 0;
+      const upLeft = y > 0 && x >= channels ? data[row - stride + x - channels] : 0;
+      let predictor;
+      switch (filter) {
+        case 0: predictor = 0; break;
+        case 1: predictor = left; break;
+        case 2: predictor = up; break;
+        case 3: predictor = (left + up) >> 1; break;
+        case 4: {
+          const p = left + up - upLeft;
+          const [pa, pb, pc] = [Math.abs(p - left), Math.abs(p - up), Math.abs(p - upLeft)];
+          predictor = pa <= pb && pa <= pc ? left : pb <= pc ? up : upLeft;
+          break;
+        }
+        default: throw new Error(`bad PNG filter type ${filter} in row ${y}`);
+      }
+      data[row + x] = (src[x] + predictor) & 0xff;
+    }
+  }
+  return { width, height, channels, data };
+}
+
+/** Fraction of pixels whose colour differs from `rgb` by more than `tolerance` in some channel. */
+function fractionDiffering({ width, height, channels, data }, rgb, tolerance = 8) {
+  let differing = 0;
+  for (let i = 0; i < width * height; i++) {
+    const p = i * channels;
+    if (rgb.some((c, k) => Math.abs(data[p + k] - c) > tolerance)) differing++;
+  }
+  return differing / (width * height);
+}
+
+/** Raw GET without URL normalisation (so `..` reaches the server as sent). */
+function rawGet(port, path) {
+  return new Promise((resolve, reject) => {
+    const req = http.get({ host: '127.0.0.1', port, path, timeout: 5000 }, (res) => {
+      res.resume();
+      res.on('end', () => resolve({ status: res.statusCode, headers: res.headers }));
+    });
+    req.on('timeout', () => req.destroy(new Error(`GET ${path} timed out`)));
+    req.on('error', reject);
+  });
+}
+
+function assert(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+function withTimeout(promise, ms, what) {
+  let timer;
+  const timeout = new Promise((_, reject) => {
+    timer = setTimeout(() => reject(new Error(`${what} timed out after ${ms} ms`)), ms);
+  });
+  return Promise.race([promise, timeout]).finally(() => clearTimeout(timer));
+}
+
+// ------------------------------------------------------------------ page fixture
+
+/** Opens the page in a fresh context and records console errors and uncaught page errors. */
+async function openPage(browser, baseUrl) {
+  const context = await browser.newContext({ viewport: VIEWPORT });
+  const page = await context.newPage();
+  page.setDefaultTimeout(WAIT_TIMEOUT_MS);
+  const problems = [];
+  page.on('console', (msg) => {
+    if (msg.type() === 'error') problems.push(`console error: ${msg.text()}`);
+  });
+  page.on('pageerror', (err) => problems.push(`page error: ${err.message}`));
+  page.on('requestfailed', (req) => problems.push(`request failed: ${req.url()} (${req.failure()?.errorText})`));
+  await page.goto(`${baseUrl}/web/index.html`);
+  return { page, context, problems };
+}
+
+/** Waits until the page has finished loading something and returns its state and hooks. */
+async function settled(page, predicate = 'true') {
+  try {
+    await page.waitForFunction(
+      `document.body.dataset.state !== 'loading' && window.__straightest && (${predicate})`,
+    );
+  } catch (err) {
+    const state = await page.evaluate(() => document.body.dataset.state).catch(() => 'unknown');
+    const status = await page.textContent('#status', { timeout: 1000 }).catch(() => '');
+    throw new Error(`page stayed in state '${state}' (status: ${status.trim()}): ${err.message.split('\n')[0]}`);
+  }
+  return page.evaluate(() => ({
+    state: document.body.dataset.state,
+    lastInfo: window.__straightest.lastInfo,
+    lastError: window.__straightest.lastError,
+  }));
+}
+
+async function expectReady(page, predicate) {
+  const result = await settled(page, predicate);
+  assert(result.state === 'ready',
+    `page state is '${result.state}'${result.lastError ? `: ${result.lastError.message}` : ''}`);
+  return result;
+}
+
+function expectNoProblems(problems) {
+  assert(problems.length === 0, problems.join('; '));
+}
+
+// A 3×3 vertex grid (z = 0) with 4 quads: the OBJ loader triangulates them into 8 faces.
+const QUAD_GRID_OBJ = [
+  '# 3x3 quad grid',
+  'v 0 0 0', 'v 1 0 0', 'v 2 0 0',
+  'v 0 1 0', 'v 1 1 0.2', 'v 2 1 0',
+  'v 0 2 0', 'v 1 2 0', 'v 2 2 0',
+  'f 1 2 5 4', 'f 2 3 6 5',
+  'f 4 5 8 7', 'f 5 6 9 8',
+  '',
+].join('\n');
+
+// A consistently oriented tetrahedron: closed, genus 0.
+const TETRAHEDRON_OFF = 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n';
+
+// ------------------------------------------------------------------ tests
+
+const tests = [];
+const test = (name, fn) => tests.push({ name, fn });
+
+test('server redirects / to the page, serves WASM MIME types and refuses path traversal', async ({ port }) => {
+  const root = await rawGet(port, '/');
+  assert(root.status === 302 && root.headers.location === '/web/index.html',
+    `GET / gave ${root.status} -> ${root.headers.location}`);
+  const page = await rawGet(port, '/web/index.html');
+  assert(page.status === 200 && page.headers['content-type'].startsWith('text/html'),
+    `index.html: ${page.status} ${page.headers['content-type']}`);
+  const wasm = await rawGet(port, '/wasm/dist/straightest-core.wasm');
+  assert(wasm.status === 200 && wasm.headers['content-type'] === 'application/wasm',
+    `straightest-core.wasm: ${wasm.status} ${wasm.headers['content-type']}`);
+  const js = await rawGet(port, '/wasm/index.js');
+  assert(js.status === 200 && js.headers['content-type'].startsWith('text/javascript'),
+    `wasm/index.js: ${js.status} ${js.headers['content-type']}`);
+  for (const path of ['/../etc/passwd', '/web/../../etc/passwd', '/%2e%2e/etc/passwd', '/web/%2E%2E%2F..%2Fetc/passwd']) {
+    const res = await rawGet(port, path);
+    assert(res.status === 403 || res.status === 404, `${path} gave ${res.status}`);
+  }
+  const missing = await rawGet(port, '/web/no-such-file.js');
+  assert(missing.status === 404, `missing file gave ${missing.status}`);
+});
+
+test('page loads the mountain sample without console errors', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    const { lastInfo } = await expectReady(page);
+    assert(lastInfo.vertices === 2500, `lastInfo.vertices is ${lastInfo.vertices}, expected 2500`);
+    const vertices = await page.textContent('#info-vertices');
+    assert(vertices.trim() === '2500', `info panel shows '${vertices}' vertices, expected 2500`);
+    const selected = await page.inputValue('#sample-select');
+    assert(selected === 'mountain', `sample select shows '${selected}'`);
+    const options = await page.$$eval('#sample-select option', (els) => els.map((e) => e.value));
+    for (const name of ['mountain', 'cap', 'saddle', 'face']) {
+      assert(options.includes(name), `sample select lacks '${name}' (has ${options.join(', ')})`);
+    }
+    assert(await page.isHidden('#error-panel'), 'error panel is visible');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('mountain sample renders visible geometry on the canvas', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page);
+    await page.waitForFunction(() => window.__straightest.renders > 0);
+    const background = await page.evaluate(() => window.__straightest.background);
+    const image = decodePng(await page.locator('#view-canvas').screenshot());
+    assert(image.width > 100 && image.height > 100, `canvas is only ${image.width}×${image.height}`);
+    const fraction = fractionDiffering(image, background);
+    assert(fraction > 0.05,
+      `only ${(fraction * 100).toFixed(1)}% of pixels differ from the background (need > 5%)`);
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('a malformed OBJ shows its error message in the error panel', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page);
+    await page.setInputFiles('#file-input', {
+      name: 'bad.obj',
+      mimeType: 'text/plain',
+      buffer: Buffer.from('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n'),
+    });
+    const { state, lastError } = await settled(page, `document.body.dataset.state === 'error'`);
+    assert(state === 'error', `page state is '${state}'`);
+    assert(await page.isVisible('#error-panel'), 'error panel is not visible');
+    const text = await page.textContent('#error-panel');
+    assert(/out of range|\b9\b/.test(text), `error panel text does not mention vertex 9: '${text.trim()}'`);
+    assert(lastError && lastError.message.length > 0, 'window.__straightest.lastError is empty');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('a valid quad-grid OBJ updates the info panel (9 vertices, 8 faces)', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page);
+    await page.setInputFiles('#file-input', {
+      name: 'grid.obj',
+      mimeType: 'text/plain',
+      buffer: Buffer.from(QUAD_GRID_OBJ),
+    });
+    await expectReady(page, 'window.__straightest.lastInfo && window.__straightest.lastInfo.vertices !== 2500');
+    const vertices = (await page.textContent('#info-vertices')).trim();
+    const faces = (await page.textContent('#info-faces')).trim();
+    assert(vertices === '9' && faces === '8', `info panel shows ${vertices} vertices, ${faces} faces`);
+    const boundary = (await page.textContent('#info-boundary')).trim();
+    assert(boundary.startsWith('1'), `a grid (disk) has one boundary loop, panel shows '${boundary}'`);
+    const euler = (await page.textContent('#info-euler')).trim();
+    assert(euler === '1', `a disk has Euler characteristic 1, panel shows '${euler}'`);
+    assert(await page.isHidden('#error-panel'), 'error panel is visible');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('dropping an OFF file onto the view loads it (closed tetrahedron: χ = 2, no boundary)', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page);
+    const dataTransfer = await page.evaluateHandle((text) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([text], 'tetrahedron.off', { type: 'text/plain' }));
+      return transfer;
+    }, TETRAHEDRON_OFF);
+    await page.dispatchEvent('#viewport', 'dragover', { dataTransfer });
+    await page.dispatchEvent('#viewport', 'drop', { dataTransfer });
+    const { lastInfo } = await expectReady(page, 'window.__straightest.lastInfo.vertices === 4');
+    assert(lastInfo.faces === 4, `lastInfo.faces is ${lastInfo.faces}, expected 4`);
+    const euler = (await page.textContent('#info-euler')).trim();
+    const boundary = (await page.textContent('#info-boundary')).trim();
+    assert(euler === '2', `a closed sphere-like mesh has χ = 2, panel shows '${euler}'`);
+    assert(boundary.startsWith('0'), `a closed mesh has no boundary loop, panel shows '${boundary}'`);
+    assert(await page.isHidden('#drop-overlay'), 'drop overlay still visible after the drop');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+// ------------------------------------------------------------------ runner
+
+async function main() {
+  let server;
+  let browser;
+  let passed = 0;
+  let failed = 0;
+  const watchdog = setTimeout(async () => {
+    console.log(`not ok - whole run: exceeded ${RUN_TIMEOUT_MS} ms`);
+    console.log(`${passed} passed, ${failed + 1} failed`);
+    server?.closeAllConnections();
+    await withTimeout(browser?.close() ?? Promise.resolve(), 3000, 'browser close').catch(() => {});
+    process.exit(1);
+  }, RUN_TIMEOUT_MS);
+  watchdog.unref();
+  try {
+    server = await startServer({ port: 0 });
+    const { port } = server.address();
+    browser = await chromium.launch({
+      executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, timeout: 20_000,
+    });
+    const env = { browser, port, baseUrl: `http://127.0.0.1:${port}` };
+    for (const { name, fn } of tests) {
+      try {
+        await withTimeout(fn(env), TEST_TIMEOUT_MS, 'test');
+        passed++;
+        console.log(`ok - ${name}`);
+      } catch (err) {
+        failed++;
+        console.log(`not ok - ${name}: ${String(err.message).split('\n')[0]}`);
+      }
+    }
+  } catch (err) {
+    failed++;
+    console.log(`not ok - setup: ${String(err.message).split('\n')[0]}`);
+  } finally {
+    await browser?.close().catch(() => {});
+    if (server) {
+      server.closeAllConnections();
+      await new Promise((resolve) => server.close(resolve));
+    }
+    clearTimeout(watchdog);
+  }
+  console.log(`${passed} passed, ${failed} failed`);
+  process.exit(failed > 0 ? 1 : 0);
+}
+
+await main();
