@@ -1,0 +1,41 @@
+// base_plane.hpp — the base plane at a source and the cutting plane toward a destination
+// (Lee, Han, Lee: "Straightest Paths on Meshes By Cutting Planes").
+//
+// Base normal at S (mesh with boundary): the normalized mean of the unit normals of the virtual
+// triangles (S, b_i, b_i+1) fanned from S over consecutive vertices of the longest boundary loop
+// (closing the loop), oriented to agree with the mesh's area-weighted normal sum. If that mean nearly
+// cancels (|mean| < kBaseNormalCancel, e.g. a slit-like boundary) the area-weighted normal at S is used
+// and `fallback` says so. Closed meshes: the area-weighted normal at S.
+//
+// Cutting plane for D: through S with normal m = normalize(n × (D − S)); undefined (nullopt) when
+// D − S is parallel to n (|n × (D − S)| <= 1e-12 · |D − S|) or D == S.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "straightest/surface_point.hpp"
+
+namespace straightest {
+
+inline constexpr double kBaseNormalCancel = 0.05;
+
+struct BasePlane {
+  Vec3 origin;      // S
+  Vec3 normal;      // unit
+  bool fallback = false;  // true when the area-weighted normal at S was used instead of virtual faces
+  std::string note;       // why, when fallback (or "closed mesh")
+};
+
+/// Area-weighted normal at a surface point (unit; zero only if every incident face is degenerate).
+Vec3 areaWeightedNormal(const TriMesh& mesh, const SurfacePoint& p);
+
+BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source);
+
+struct CuttingPlane {
+  Vec3 origin;  // S
+  Vec3 normal;  // m, unit, perpendicular to the base normal
+};
+
+std::optional<CuttingPlane> cuttingPlane(const BasePlane& base, const Vec3& destination);
+
+}  // namespace straightest

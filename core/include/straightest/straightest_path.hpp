@@ -1,0 +1,91 @@
+// straightest_path.hpp — the straightest path from a source to destinations by cutting planes.
+//
+// The path to D is the section of the mesh by the cutting plane (through S, perpendicular to the
+// base plane, containing D), walked face by face from S toward D (DESIGN §3):
+//  - start into the face around S whose section leaves on D's side (t = D − S without its base-normal
+//    component); at a saddle, the one best aligned with t;
+//  - cross edges; where the plane passes through a vertex (|signed distance| <= kOnPlaneRel · mean
+//    edge length, decided once per vertex so neighbouring faces agree), continue from the vertex
+//    into the exit best aligned with the incoming direction (excluding the face just left); an edge
+//    lying in the plane is walked along;
+//  - stop at D. If the walk hits the boundary, returns to S, revisits a crossing (loop) or exceeds the
+//    step bound, walk the other way along the same section from S (leaving on the −t side); if neither
+//    reaches D, return the first walk's status and partial path.
+// Cost is output-sensitive: O(faces crossed) per destination after an O(V + F) setup per tracer
+// (stamps for loop detection); no allocation per step (the point buffers are reused).
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "straightest/base_plane.hpp"
+
+namespace straightest {
+
+enum class TraceStatus : uint8_t {
+  Reached,           // the only success
+  HitBoundary,       // the section left the surface before D
+  ReturnedToSource,  // the section is a closed loop through S that misses D
+  Loop,              // the walk revisited a crossing without returning to S
+  StepLimit,         // more steps than the bound
+  NoExit,            // at a vertex no face continues the section (degenerate neighbourhood)
+  DegeneratePlane,   // D − S parallel to the base normal, or D == S
+};
+const char* traceStatusName(TraceStatus s);
+inline constexpr int kTraceStatusCount = 7;
+
+/// Relative tolerance for "the plane passes through this vertex" (times the mean edge length).
+inline constexpr double kOnPlaneRel = 1e-9;
+
+struct TraceOptions {
+  bool keepPoints = true;   // store the path's surface points and positions
+  int64_t maxSteps = 0;     // 0: 2·faces + vertices + 16 (more than any simple walk can take)
+};
+
+struct StraightestPath {
+  TraceStatus status = TraceStatus::NoExit;
+  double length = 0;          // sum of segment lengths (of the partial path when not reached)
+  int64_t facesCrossed = 0;   // segments walked (each lies in one face or along one edge)
+  bool reversed = false;      // reached by the second walk (leaving on the −t side)
+  std::vector<SurfacePoint> points;  // S, crossings..., D (when keepPoints)
+  std::vector<Vec3> positions;       // their 3D positions
+};
+
+/// Traces straightest paths from one source; reuse it for many destinations (shared setup).
+class StraightestPathTracer {
+ public:
+  /// The source must be a valid surface point (see validateSurfacePoint).
+  StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options = {});
+
+  const BasePlane& base() const { return base_; }
+  const SurfacePoint& source() const { return source_; }
+
+  /// Traces to one destination (a valid surface point). The returned reference stays valid until
+  /// the next call (its buffers are reused).
+  const StraightestPath& trace(const SurfacePoint& destination);
+
+ private:
+  struct Walk;
+  void walk(const SurfacePoint& destination, const CuttingPlane& plane, const Vec3& direction, bool forwardSide,
+            StraightestPath& out);
+  double signedDistance(int32_t v) const;
+
+  const TriMesh& mesh_;
+  SurfacePoint source_;
+  Vec3 sourcePosition_;
+  TraceOptions options_;
+  BasePlane base_;
+  double onPlaneTolerance_ = 0;
+  double meanEdge_ = 1;
+  int64_t maxSteps_ = 0;
+  std::vector<int32_t> sourceFaces_;
+  std::vector<int32_t> targetFaces_;
+  std::vector<int32_t> fan_;  // scratch: faces around the current vertex
+  std::vector<uint32_t> edgeStamp_, vertexStamp_;
+  uint32_t epoch_ = 0;
+  CuttingPlane plane_{};
+  StraightestPath result_, second_;
+};
+
+}  // namespace straightest

@@ -1,0 +1,53 @@
+#include "straightest/base_plane.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace straightest {
+
+Vec3 areaWeightedNormal(const TriMesh& mesh, const SurfacePoint& p) {
+  std::vector<int32_t> faces;
+  incidentFaces(mesh, p, faces);
+  Vec3 sum;
+  for (int32_t f : faces) sum += mesh.faceNormal(f) * mesh.faceArea(f);
+  return normalized(sum);
+}
+
+BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
+  BasePlane base;
+  base.origin = position(mesh, source);
+  if (mesh.boundaryLoops().empty()) {
+    base.normal = areaWeightedNormal(mesh, source);
+    base.note = "closed mesh: area-weighted normal at the source";
+    return base;
+  }
+  const auto& loop = mesh.boundaryLoops()[0];
+  Vec3 sum;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Vec3 a = mesh.position(loop[i]) - base.origin;
+    const Vec3 b = mesh.position(loop[(i + 1) % loop.size()]) - base.origin;
+    sum += normalized(cross(a, b));  // unit normal of the virtual face (S, b_i, b_i+1); zero if degenerate
+  }
+  const Vec3 mean = sum / static_cast<double>(loop.size());
+  if (norm(mean) < kBaseNormalCancel) {
+    base.normal = areaWeightedNormal(mesh, source);
+    base.fallback = true;
+    base.note = "the virtual-face normals cancel (|mean| = " + std::to_string(norm(mean)) +
+                "): area-weighted normal at the source used";
+    return base;
+  }
+  Vec3 meshNormal;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) meshNormal += mesh.faceNormal(f) * mesh.faceArea(f);
+  base.normal = normalized(dot(mean, meshNormal) < 0 ? -mean : mean);
+  return base;
+}
+
+std::optional<CuttingPlane> cuttingPlane(const BasePlane& base, const Vec3& destination) {
+  const Vec3 d = destination - base.origin;
+  const Vec3 m = cross(base.normal, d);
+  const double len = norm(d);
+  if (!(len > 0) || !(norm(m) > 1e-12 * len)) return std::nullopt;
+  return CuttingPlane{base.origin, normalized(m)};
+}
+
+}  // namespace straightest

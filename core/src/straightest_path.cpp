@@ -1,0 +1,322 @@
+// The cutting-plane walk (see straightest_path.hpp for the contract).
+//
+// Robustness rests on one rule: every vertex gets one signed distance to the cutting plane, snapped to
+// exactly 0 when |d| <= kOnPlaneRel · mean edge length, and all decisions use those values. An edge
+// is crossed only where its endpoints have strictly opposite signs, so two faces sharing an edge
+// always agree on whether and where it is crossed, and a walk can never slip between faces.
+#include "straightest/straightest_path.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace straightest {
+
+const char* traceStatusName(TraceStatus s) {
+  switch (s) {
+    case TraceStatus::Reached: return "reached";
+    case TraceStatus::HitBoundary: return "hit_boundary";
+    case TraceStatus::ReturnedToSource: return "returned_to_source";
+    case TraceStatus::Loop: return "loop";
+    case TraceStatus::StepLimit: return "step_limit";
+    case TraceStatus::NoExit: return "no_exit";
+    case TraceStatus::DegeneratePlane: return "degenerate_plane";
+  }
+  return "unknown";
+}
+
+namespace {
+
+/// Where the walk goes next: a vertex on the plane, or the crossing of a halfedge.
+struct Exit {
+  bool valid = false;
+  bool isVertex = false;
+  int32_t vertex = -1;
+  int32_t halfedge = -1;  // crossed halfedge (in `face`) when !isVertex
+  double t = 0;           // crossing parameter on halfedge
+  Vec3 position;
+  int32_t face = -1;      // face holding the segment to the exit
+  int32_t face2 = -1;     // second face when the segment runs along an edge
+};
+
+bool contains(const std::vector<int32_t>& faces, int32_t f) {
+  return f >= 0 && std::find(faces.begin(), faces.end(), f) != faces.end();
+}
+
+}  // namespace
+
+struct StraightestPathTracer::Walk {
+  StraightestPathTracer& tr;
+  const TriMesh& mesh;
+  const SurfacePoint& dest;
+  Vec3 D;
+  StraightestPath& out;
+  double meanEdge;
+
+  void emit(const SurfacePoint& p, const Vec3& x) {
+    if (!tr.options_.keepPoints) return;
+    out.points.push_back(p);
+    out.positions.push_back(x);
+  }
+
+  /// X lies on segment PQ (within rounding; see onSegment tolerances in the file comment).
+  bool onSegment(const Vec3& X, const Vec3& P, const Vec3& Q) const {
+    const Vec3 v = Q - P;
+    const double l2 = squaredNorm(v);
+    const double tol = 1e-6 * meanEdge;
+    if (l2 == 0) return norm(X - P) <= tol;
+    const double s = dot(X - P, v) / l2;
+    if (s < -1e-9 || s > 1 + 1e-9) return false;
+    return norm(X - (P + v * s)) <= tol;
+  }
+
+  /// Accounts for the segment P→Q in face f1 (and f2 along an edge). Returns true when the walk ends
+  /// inside it: at D (reached) or back at S (returned to source).
+  bool segment(const Vec3& P, const Vec3& Q, int32_t f1, int32_t f2, bool first) {
+    ++out.facesCrossed;
+    if ((contains(tr.targetFaces_, f1) || contains(tr.targetFaces_, f2)) && onSegment(D, P, Q)) {
+      out.length += norm(D - P);
+      emit(dest, D);
+      out.status = TraceStatus::Reached;
+      return true;
+    }
+    if (!first && (contains(tr.sourceFaces_, f1) || contains(tr.sourceFaces_, f2)) &&
+        onSegment(tr.sourcePosition_, P, Q)) {
+      out.length += norm(tr.sourcePosition_ - P);
+      emit(tr.source_, tr.sourcePosition_);
+      out.status = TraceStatus::ReturnedToSource;
+      return true;
+    }
+    out.length += norm(Q - P);
+    return false;
+  }
+
+  Exit crossing(int32_t h, int32_t face) const {
+    const double da = tr.signedDistance(mesh.tail(h)), db = tr.signedDistance(mesh.head(h));
+    Exit e;
+    e.valid = true;
+    e.halfedge = h;
+    e.t = da / (da - db);
+    e.position = mesh.position(mesh.tail(h)) * (1 - e.t) + mesh.position(mesh.head(h)) * e.t;
+    e.face = face;
+    return e;
+  }
+
+  /// The exit from point P (at vertex atVertex, or -1) through the given faces, best aligned with
+  /// dir (unit) and with cosine > minCos; faces ex1/ex2 are skipped (the way we came).
+  Exit bestExit(const Vec3& P, int32_t atVertex, const std::vector<int32_t>& faces, int32_t ex1, int32_t ex2,
+                const Vec3& dir, double minCos) const {
+    Exit best;
+    double bestCos = minCos;
+    auto consider = [&](Exit e) {
+      const Vec3 v = e.position - P;
+      const double len = norm(v);
+      if (!(len > tr.onPlaneTolerance_)) return;
+      const double c = dot(v, dir) / len;
+      if (c > bestCos) {
+        bestCos = c;
+        best = e;
+      }
+    };
+    for (int32_t f : faces) {
+      if (f == ex1 || f == ex2) continue;
+      const Triangle& tri = mesh.triangle(f);
+      const double d[3] = {tr.signedDistance(tri[0]), tr.signedDistance(tri[1]), tr.signedDistance(tri[2])};
+      for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0 && tri[k] != atVertex) {
+          Exit e;
+          e.valid = true;
+          e.isVertex = true;
+          e.vertex = tri[k];
+          e.position = mesh.position(tri[k]);
+          e.face = f;
+          if (atVertex >= 0) {  // the segment runs along edge (atVertex, tri[k]): note its other face
+            for (int j = 0; j < 3; ++j) {
+              const int32_t h = 3 * f + j;
+              const bool alongEdge = (mesh.tail(h) == atVertex && mesh.head(h) == tri[k]) ||
+                                     (mesh.head(h) == atVertex && mesh.tail(h) == tri[k]);
+              if (alongEdge && mesh.twin(h) >= 0) e.face2 = TriMesh::face(mesh.twin(h));
+            }
+          }
+          consider(e);
+        }
+        const int k1 = (k + 1) % 3;
+        if ((d[k] < 0 && d[k1] > 0) || (d[k] > 0 && d[k1] < 0)) consider(crossing(3 * f + k, f));
+      }
+    }
+    return best;
+  }
+
+  void run(const Vec3& startDir, bool forward) {
+    (void)forward;
+    emit(tr.source_, tr.sourcePosition_);
+    Vec3 P = tr.sourcePosition_;
+    const int32_t sourceVertex = tr.source_.kind == SurfacePoint::Kind::Vertex ? tr.source_.index : -1;
+    // Leave S on D's side (strictly positive cosine with the direction).
+    Exit e = bestExit(P, sourceVertex, tr.sourceFaces_, -1, -1, startDir, 0.0);
+    if (!e.valid) {
+      out.status = sourceOnBoundary() ? TraceStatus::HitBoundary : TraceStatus::NoExit;
+      return;
+    }
+    bool first = true;
+    for (int64_t step = 0;; ++step) {
+      if (step > tr.maxSteps_) {
+        out.status = TraceStatus::StepLimit;
+        return;
+      }
+      if (e.isVertex) {
+        const Vec3 Q = e.position;
+        if (segment(P, Q, e.face, e.face2, first)) return;
+        first = false;
+        emit(SurfacePoint::vertex(e.vertex), Q);
+        if (tr.vertexStamp_[e.vertex] == tr.epoch_) {
+          out.status = TraceStatus::Loop;
+          return;
+        }
+        tr.vertexStamp_[e.vertex] = tr.epoch_;
+        const Vec3 dirIn = normalized(Q - P);
+        P = Q;
+        incidentFaces(mesh, SurfacePoint::vertex(e.vertex), tr.fan_);
+        const int32_t v = e.vertex;
+        e = bestExit(P, v, tr.fan_, e.face, e.face2, dirIn, -std::numeric_limits<double>::infinity());
+        if (!e.valid) {
+          out.status = mesh.isBoundaryVertex(v) ? TraceStatus::HitBoundary : TraceStatus::NoExit;
+          return;
+        }
+        continue;
+      }
+      // A crossing of halfedge e.halfedge inside e.face.
+      if (segment(P, e.position, e.face, -1, first)) return;
+      first = false;
+      emit(SurfacePoint::edge(e.halfedge, e.t), e.position);
+      const int32_t k = mesh.twin(e.halfedge);
+      if (k < 0) {
+        out.status = TraceStatus::HitBoundary;
+        return;
+      }
+      if (tr.edgeStamp_[e.halfedge] == tr.epoch_) {
+        out.status = TraceStatus::Loop;
+        return;
+      }
+      tr.edgeStamp_[e.halfedge] = tr.edgeStamp_[k] = tr.epoch_;
+      P = e.position;
+      // Enter face g through k (u → w, signs strictly opposite); leave through the vertex o on the
+      // plane or through the other edge with opposite signs.
+      const int32_t g = TriMesh::face(k);
+      const int32_t u = mesh.tail(k), o = mesh.head(TriMesh::next(k));
+      const double du = tr.signedDistance(u), dO = tr.signedDistance(o);
+      if (dO == 0) {
+        Exit ev;
+        ev.valid = true;
+        ev.isVertex = true;
+        ev.vertex = o;
+        ev.position = mesh.position(o);
+        ev.face = g;
+        e = ev;
+      } else {
+        e = crossing((dO > 0) != (du > 0) ? TriMesh::prev(k) : TriMesh::next(k), g);
+      }
+    }
+  }
+
+  bool sourceOnBoundary() const {
+    switch (tr.source_.kind) {
+      case SurfacePoint::Kind::Vertex: return mesh.isBoundaryVertex(tr.source_.index);
+      case SurfacePoint::Kind::Edge: return mesh.twin(tr.source_.index) < 0;
+      case SurfacePoint::Kind::Face: return false;
+    }
+    return false;
+  }
+};
+
+StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source,
+                                             const TraceOptions& options)
+    : mesh_(mesh), source_(source), options_(options) {
+  sourcePosition_ = position(mesh, source);
+  base_ = basePlane(mesh, source);
+  double total = 0;
+  int64_t edges = 0;
+  for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h)
+    if (mesh.twin(h) < 0 || h < mesh.twin(h)) {
+      total += norm(mesh.position(mesh.head(h)) - mesh.position(mesh.tail(h)));
+      ++edges;
+    }
+  const double meanEdge = edges > 0 ? total / edges : 1.0;
+  onPlaneTolerance_ = kOnPlaneRel * meanEdge;
+  maxSteps_ = options.maxSteps > 0 ? options.maxSteps
+                                   : 2 * static_cast<int64_t>(mesh.numFaces()) + mesh.numVertices() + 16;
+  incidentFaces(mesh, source, sourceFaces_);
+  edgeStamp_.assign(3 * static_cast<size_t>(mesh.numFaces()), 0);
+  vertexStamp_.assign(mesh.numVertices(), 0);
+  meanEdge_ = meanEdge;
+}
+
+double StraightestPathTracer::signedDistance(int32_t v) const {
+  const double d = dot(plane_.normal, mesh_.position(v) - plane_.origin);
+  return std::abs(d) <= onPlaneTolerance_ ? 0.0 : d;
+}
+
+void StraightestPathTracer::walk(const SurfacePoint& destination, const CuttingPlane& plane, const Vec3& direction,
+                                 bool forwardSide, StraightestPath& out) {
+  (void)plane;
+  out.status = TraceStatus::NoExit;
+  out.length = 0;
+  out.facesCrossed = 0;
+  out.reversed = !forwardSide;
+  out.points.clear();
+  out.positions.clear();
+  if (++epoch_ == 0) {  // wrapped around: clear the stamps once every 2^32 walks
+    std::fill(edgeStamp_.begin(), edgeStamp_.end(), 0);
+    std::fill(vertexStamp_.begin(), vertexStamp_.end(), 0);
+    epoch_ = 1;
+  }
+  Walk w{*this, mesh_, destination, position(mesh_, destination), out, meanEdge_};
+  w.run(direction, forwardSide);
+}
+
+const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destination) {
+  StraightestPath& r = result_;
+  const Vec3 D = position(mesh_, destination);
+  const Vec3 SD = D - sourcePosition_;
+  const bool samePoint = (destination.kind == SurfacePoint::Kind::Vertex &&
+                          source_.kind == SurfacePoint::Kind::Vertex && destination.index == source_.index) ||
+                         norm(SD) <= onPlaneTolerance_;
+  if (samePoint) {
+    r.status = TraceStatus::Reached;
+    r.length = 0;
+    r.facesCrossed = 0;
+    r.reversed = false;
+    r.points.clear();
+    r.positions.clear();
+    if (options_.keepPoints) {
+      r.points.push_back(source_);
+      r.positions.push_back(sourcePosition_);
+    }
+    return r;
+  }
+  const auto plane = cuttingPlane(base_, D);
+  if (!plane) {
+    r.status = TraceStatus::DegeneratePlane;
+    r.length = 0;
+    r.facesCrossed = 0;
+    r.reversed = false;
+    r.points.clear();
+    r.positions.clear();
+    if (options_.keepPoints) {
+      r.points.push_back(source_);
+      r.positions.push_back(sourcePosition_);
+    }
+    return r;
+  }
+  plane_ = *plane;
+  incidentFaces(mesh_, destination, targetFaces_);
+  const Vec3 t = normalized(SD - base_.normal * dot(base_.normal, SD));
+  walk(destination, plane_, t, true, r);
+  if (r.status != TraceStatus::Reached) {
+    walk(destination, plane_, -t, false, second_);
+    if (second_.status == TraceStatus::Reached) std::swap(result_, second_);
+  }
+  return result_;
+}
+
+}  // namespace straightest

@@ -1,0 +1,96 @@
+#include "straightest/surface_point.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace straightest {
+
+namespace {
+constexpr double kSnap = 1e-12;  // coordinates closer than this to 0 snap to a simpler kind
+}
+
+Vec3 position(const TriMesh& mesh, const SurfacePoint& p) {
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: return mesh.position(p.index);
+    case SurfacePoint::Kind::Edge:
+      return mesh.position(mesh.tail(p.index)) * (1 - p.t) + mesh.position(mesh.head(p.index)) * p.t;
+    case SurfacePoint::Kind::Face: {
+      const Triangle& t = mesh.triangle(p.index);
+      return mesh.position(t[0]) * p.bary[0] + mesh.position(t[1]) * p.bary[1] + mesh.position(t[2]) * p.bary[2];
+    }
+  }
+  return {};
+}
+
+Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePoint& p) {
+  auto invalid = [](const std::string& m) { return Error{ErrorCode::InvalidArgument, m}; };
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex:
+      if (p.index < 0 || p.index >= mesh.numVertices())
+        return invalid("vertex " + std::to_string(p.index) + " is out of range (the mesh has " +
+                       std::to_string(mesh.numVertices()) + " vertices)");
+      if (mesh.vertexHalfedge(p.index) < 0)
+        return invalid("vertex " + std::to_string(p.index) + " is not used by any face");
+      return p;
+    case SurfacePoint::Kind::Edge: {
+      if (p.index < 0 || p.index >= 3 * mesh.numFaces())
+        return invalid("halfedge " + std::to_string(p.index) + " is out of range");
+      if (!std::isfinite(p.t) || p.t < -kSnap || p.t > 1 + kSnap)
+        return invalid("edge parameter " + std::to_string(p.t) + " is outside [0, 1]");
+      if (p.t <= kSnap) return SurfacePoint::vertex(mesh.tail(p.index));
+      if (p.t >= 1 - kSnap) return SurfacePoint::vertex(mesh.head(p.index));
+      return p;
+    }
+    case SurfacePoint::Kind::Face: {
+      if (p.index < 0 || p.index >= mesh.numFaces())
+        return invalid("face " + std::to_string(p.index) + " is out of range (the mesh has " +
+                       std::to_string(mesh.numFaces()) + " faces)");
+      double sum = 0;
+      for (double b : p.bary) {
+        if (!std::isfinite(b) || b < -kSnap)
+          return invalid("barycentric coordinates must be finite and non-negative");
+        sum += b;
+      }
+      if (std::abs(sum - 1) > 1e-9) return invalid("barycentric coordinates must sum to 1");
+      std::array<double, 3> b{};
+      int zeros = 0, nonzero = 0;
+      for (int k = 0; k < 3; ++k) {
+        b[k] = p.bary[k] <= kSnap ? 0.0 : p.bary[k] / sum;
+        if (b[k] == 0) ++zeros; else nonzero = k;
+      }
+      if (zeros == 2) return SurfacePoint::vertex(mesh.triangle(p.index)[nonzero]);
+      if (zeros == 1) {
+        for (int k = 0; k < 3; ++k)
+          if (b[k] == 0) {  // on the edge opposite corner k: halfedge from corner k+1 to corner k+2
+            const int a = (k + 1) % 3, c = (k + 2) % 3;
+            return SurfacePoint::edge(3 * p.index + a, b[c] / (b[a] + b[c]));
+          }
+      }
+      return SurfacePoint::face(p.index, b);
+    }
+  }
+  return invalid("unknown surface point kind");
+}
+
+void incidentFaces(const TriMesh& mesh, const SurfacePoint& p, std::vector<int32_t>& out) {
+  out.clear();
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: {
+      const int32_t start = mesh.vertexHalfedge(p.index);
+      int32_t h = start;
+      while (h >= 0) {
+        out.push_back(TriMesh::face(h));
+        h = mesh.twin(TriMesh::prev(h));
+        if (h == start) break;
+      }
+      break;
+    }
+    case SurfacePoint::Kind::Edge:
+      out.push_back(TriMesh::face(p.index));
+      if (mesh.twin(p.index) >= 0) out.push_back(TriMesh::face(mesh.twin(p.index)));
+      break;
+    case SurfacePoint::Kind::Face: out.push_back(p.index); break;
+  }
+}
+
+}  // namespace straightest

@@ -1,0 +1,110 @@
+// Meshes with known geometry, built for the path tests (flat grids in several triangulations, an
+// L-shaped domain, a cylinder patch, a saddle, an icosphere).
+#pragma once
+#include <array>
+#include <cmath>
+#include <map>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "straightest/samples.hpp"
+#include "straightest/trimesh.hpp"
+
+namespace straightest::testing {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+inline TriMesh buildOrFail(std::vector<Vec3> p, std::vector<Triangle> t) {
+  auto mesh = TriMesh::build(std::move(p), std::move(t));
+  if (!mesh) throw std::runtime_error("test mesh invalid: " + mesh.error().message);
+  return std::move(mesh).value();
+}
+
+enum class GridPattern { Regular, UnionJack, Jittered };
+
+/// An n × n vertex grid over [0, n−1]² mapped through lift(x, y) (default: the plane z = 0).
+/// Regular: every square split along the same diagonal. UnionJack: alternating diagonals.
+/// Jittered: interior vertices moved randomly by up to 0.25 (triangulation stays valid).
+template <class Lift>
+TriMesh grid(int n, GridPattern pattern, Lift lift, unsigned seed = 7) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+  std::vector<Vec3> p;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      double x = i, y = j;
+      if (pattern == GridPattern::Jittered && i > 0 && j > 0 && i < n - 1 && j < n - 1) {
+        x += jitter(rng);
+        y += jitter(rng);
+      }
+      p.push_back(lift(x, y));
+    }
+  std::vector<Triangle> t;
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      if (pattern == GridPattern::UnionJack && (i + j) % 2 == 1) {
+        t.push_back({a, b, c});
+        t.push_back({b, d, c});
+      } else {
+        t.push_back({a, b, d});
+        t.push_back({a, d, c});
+      }
+    }
+  return buildOrFail(std::move(p), std::move(t));
+}
+
+inline TriMesh flatGrid(int n, GridPattern pattern) {
+  return grid(n, pattern, [](double x, double y) { return Vec3{x, y, 0}; });
+}
+
+/// An L-shaped flat domain: the grid [0, 2m]² without the square (m, 2m]² (m cells a side).
+inline TriMesh lShape(int m) {
+  const int n = 2 * m + 1;
+  std::vector<Vec3> p;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) p.push_back({double(i), double(j), 0});
+  std::vector<Triangle> t;
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      if (i >= m && j >= m) continue;  // the cut-out quadrant
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      t.push_back({a, b, d});
+      t.push_back({a, d, c});
+    }
+  return buildOrFail(std::move(p), std::move(t));
+}
+
+/// An icosphere of radius 1 (subdivisions: 0 → 12 vertices, 3 → 642).
+inline TriMesh icosphere(int subdivisions) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3> p{{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  for (auto& v : p) v = normalized(v);
+  std::vector<Triangle> t{{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                          {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (int s = 0; s < subdivisions; ++s) {
+    std::map<std::pair<int, int>, int> mid;
+    auto midpoint = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      p.push_back(normalized(p[a] + p[b]));
+      return mid[key] = static_cast<int>(p.size()) - 1;
+    };
+    std::vector<Triangle> next;
+    for (const auto& f : t) {
+      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+      next.push_back({f[0], ab, ca});
+      next.push_back({f[1], bc, ab});
+      next.push_back({f[2], ca, bc});
+      next.push_back({ab, bc, ca});
+    }
+    t = std::move(next);
+  }
+  return buildOrFail(std::move(p), std::move(t));
+}
+
+}  // namespace straightest::testing
