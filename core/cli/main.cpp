@@ -1,8 +1,12 @@
 // straightest — the native command-line tool. Thin: parse arguments, call core, print one JSON object.
 // Exit codes: 0 success, 2 bad input or usage (message on stderr, or {"error": ...} on stdout with
 // --json-errors), 1 internal failure. Never a signal for bad input.
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <exception>
+#include <map>
+#include <sstream>
 #include <iostream>
 #include <new>
 #include <string>
@@ -10,8 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "straightest/geodesic_distance.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/samples.hpp"
+#include "straightest/straightest_path.hpp"
 
 using json = nlohmann::ordered_json;
 using namespace straightest;
@@ -24,6 +30,10 @@ constexpr const char* kUsage =
     "commands:\n"
     "  info MESH        summary of the mesh as JSON (vertices, faces, boundary loops, Euler\n"
     "                   characteristic, components, degenerate and reoriented faces, bbox, problems)\n"
+    "  paths MESH       straightest paths by cutting planes from a source to destinations\n"
+    "      --source auto|N        source vertex (default auto: the interior vertex farthest from the boundary)\n"
+    "      --to boundary|N,N,...  destinations (default boundary: every vertex of the longest boundary loop)\n"
+    "      --points               include each path's points\n"
     "\n"
     "MESH is an .obj or .off file, or sample:NAME for a built-in sample (mountain, cap, saddle, face).\n"
     "\n"
@@ -37,7 +47,8 @@ constexpr const char* kUsage =
 
 struct Options {
   std::string command, mesh;
-  bool pretty = false, jsonErrors = false;
+  bool pretty = false, jsonErrors = false, points = false;
+  std::string source = "auto", to = "boundary";
   BuildLimits limits;
 };
 
@@ -74,6 +85,9 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--json-errors") o.jsonErrors = true;
     else if (a == "--max-vertices") o.limits.maxVertices = parseCount(a, value());
     else if (a == "--max-faces") o.limits.maxFaces = parseCount(a, value());
+    else if (a == "--source") o.source = value();
+    else if (a == "--to") o.to = value();
+    else if (a == "--points") o.points = true;
     else if (a == "-h" || a == "--help") o.command = "help";
     else if (a.size() > 1 && a[0] == '-') throw UsageError{"unknown option '" + a + "'"};
     else positional.push_back(a);
@@ -81,7 +95,7 @@ Options parseArgs(int argc, char** argv) {
   if (o.command == "help") return o;
   if (positional.empty()) throw UsageError{"missing COMMAND"};
   o.command = positional[0];
-  if (o.command != "info") throw UsageError{"unknown command '" + o.command + "'"};
+  if (o.command != "info" && o.command != "paths") throw UsageError{"unknown command '" + o.command + "'"};
   if (positional.size() < 2) throw UsageError{"missing MESH"};
   if (positional.size() > 2) throw UsageError{"unexpected argument '" + positional[2] + "'"};
   o.mesh = positional[1];
@@ -111,6 +125,90 @@ json infoJson(const TriMesh& mesh) {
               {"problems", s.problems}};
 }
 
+/// A vertex given on the command line: a non-negative integer that names a vertex used by a face.
+Expected<int32_t> parseVertex(const TriMesh& mesh, const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end || v < 0)
+    return Error{ErrorCode::InvalidArgument, what + " must be a vertex index, got '" + text + "'"};
+  if (v >= mesh.numVertices())
+    return Error{ErrorCode::InvalidArgument, what + " " + text + " is out of range (the mesh has " +
+                                                 std::to_string(mesh.numVertices()) + " vertices)"};
+  auto p = validateSurfacePoint(mesh, SurfacePoint::vertex(static_cast<int32_t>(v)));
+  if (!p) return Error{ErrorCode::InvalidArgument, what + ": " + p.error().message};
+  return static_cast<int32_t>(v);
+}
+
+Expected<int32_t> resolveSource(const TriMesh& mesh, const std::string& spec) {
+  if (spec == "auto") return defaultSource(mesh);
+  return parseVertex(mesh, spec, "--source");
+}
+
+Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::string& spec) {
+  if (spec == "boundary") {
+    auto targets = boundaryTargets(mesh);
+    if (targets.empty()) return Error{ErrorCode::Topology, "--to boundary: the mesh is closed (no boundary loop)"};
+    return targets;
+  }
+  std::vector<SurfacePoint> targets;
+  std::stringstream list(spec);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    auto v = parseVertex(mesh, item, "--to");
+    if (!v) return v.error();
+    targets.push_back(SurfacePoint::vertex(v.value()));
+  }
+  if (targets.empty()) return Error{ErrorCode::InvalidArgument, "--to needs 'boundary' or a list of vertices"};
+  return targets;
+}
+
+int runPaths(const Options& o, const TriMesh& mesh, double loadMs) {
+  auto source = resolveSource(mesh, o.source);
+  if (!source) return fail(o, 2, errorCodeName(source.error().code), source.error().message);
+  auto targets = resolveTargets(mesh, o.to);
+  if (!targets) return fail(o, 2, errorCodeName(targets.error().code), targets.error().message);
+  const PathBatch batch =
+      traceStraightestPaths(mesh, SurfacePoint::vertex(source.value()), std::move(targets).value(), o.points);
+  json paths = json::array();
+  std::map<std::string, int64_t> failures;
+  double sum = 0, maxLength = 0;
+  for (size_t i = 0; i < batch.status.size(); ++i) {
+    json p{{"target", batch.targets[i].index},
+           {"status", traceStatusName(batch.status[i])},
+           {"length", batch.length[i]},
+           {"faces_crossed", batch.facesCrossed[i]}};
+    if (batch.status[i] == TraceStatus::Reached) {
+      sum += batch.length[i];
+      maxLength = std::max(maxLength, batch.length[i]);
+    } else {
+      ++failures[traceStatusName(batch.status[i])];
+    }
+    if (o.points) {
+      json pts = json::array();
+      for (int64_t k = batch.offsets[i]; k < batch.offsets[i + 1]; ++k) pts.push_back(vec(batch.points[k]));
+      p["points"] = std::move(pts);
+    }
+    paths.push_back(std::move(p));
+  }
+  const int64_t reached = batch.reached();
+  int64_t crossed = 0;
+  for (int64_t c : batch.facesCrossed) crossed += c;
+  json out{{"source", source.value()},
+           {"normal", vec(batch.base.normal)},
+           {"base_fallback", batch.base.fallback},
+           {"paths", std::move(paths)},
+           {"summary", {{"paths", batch.status.size()},
+                        {"reached", reached},
+                        {"failures", failures},
+                        {"mean_length", reached > 0 ? sum / reached : 0.0},
+                        {"max_length", maxLength},
+                        {"faces_crossed", crossed}}},
+           {"timings_ms", {{"load", loadMs}, {"prepare", batch.prepareMs}, {"trace", batch.traceMs}}}};
+  if (batch.base.fallback) out["base_note"] = batch.base.note;
+  std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -126,8 +224,11 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
+    const auto t0 = std::chrono::steady_clock::now();
     auto mesh = openMesh(o);
+    const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!mesh) return fail(o, 2, errorCodeName(mesh.error().code), mesh.error().message);
+    if (o.command == "paths") return runPaths(o, mesh.value(), loadMs);
     std::cout << infoJson(mesh.value()).dump(o.pretty ? 2 : -1) << "\n";
     return 0;
   } catch (const std::bad_alloc&) {

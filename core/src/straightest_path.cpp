@@ -7,6 +7,7 @@
 #include "straightest/straightest_path.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -317,6 +318,52 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
     if (second_.status == TraceStatus::Reached) std::swap(result_, second_);
   }
   return result_;
+}
+
+int64_t PathBatch::reached() const {
+  return std::count(status.begin(), status.end(), TraceStatus::Reached);
+}
+
+std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
+  std::vector<SurfacePoint> targets;
+  if (mesh.boundaryLoops().empty()) return targets;
+  for (int32_t v : mesh.boundaryLoops()[0]) targets.push_back(SurfacePoint::vertex(v));
+  return targets;
+}
+
+PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source, std::vector<SurfacePoint> targets,
+                                bool keepPoints) {
+  using Clock = std::chrono::steady_clock;
+  auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+  PathBatch batch;
+  const auto t0 = Clock::now();
+  TraceOptions options;
+  options.keepPoints = keepPoints;
+  StraightestPathTracer tracer(mesh, source, options);
+  batch.source = source;
+  batch.base = tracer.base();
+  batch.targets = std::move(targets);
+  const size_t n = batch.targets.size();
+  batch.status.reserve(n);
+  batch.length.reserve(n);
+  batch.facesCrossed.reserve(n);
+  batch.reversed.reserve(n);
+  batch.offsets.reserve(n + 1);
+  batch.offsets.push_back(0);
+  const auto t1 = Clock::now();
+  for (const SurfacePoint& target : batch.targets) {
+    const StraightestPath& path = tracer.trace(target);
+    batch.status.push_back(path.status);
+    batch.length.push_back(path.length);
+    batch.facesCrossed.push_back(path.facesCrossed);
+    batch.reversed.push_back(path.reversed);
+    batch.points.insert(batch.points.end(), path.positions.begin(), path.positions.end());
+    batch.offsets.push_back(static_cast<int64_t>(batch.points.size()));
+  }
+  const auto t2 = Clock::now();
+  batch.prepareMs = ms(t1 - t0);
+  batch.traceMs = ms(t2 - t1);
+  return batch;
 }
 
 }  // namespace straightest

@@ -51,12 +51,6 @@ void expectEuclideanPaths(const TriMesh& mesh, const SurfacePoint& source, const
   }
 }
 
-std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
-  std::vector<SurfacePoint> targets;
-  for (int32_t v : mesh.boundaryLoops()[0]) targets.push_back(SurfacePoint::vertex(v));
-  return targets;
-}
-
 std::vector<SurfacePoint> randomFacePoints(const TriMesh& mesh, int count, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_int_distribution<int32_t> face(0, mesh.numFaces() - 1);
@@ -281,6 +275,27 @@ TEST(StraightestPathTracer, ThousandRandomPairsOnABumpyMeshAllTerminateWithAStat
   }
   EXPECT_EQ(total, 1000);
   EXPECT_GT(reached, 500);  // most pairs on a face-like disk are reachable
+}
+
+TEST(TraceStraightestPaths, PacksEveryPathWithItsOffsets) {
+  const TriMesh mesh = makeSample("mountain").value();
+  const SurfacePoint source = SurfacePoint::vertex(centerVertex(mesh));
+  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), true);
+  ASSERT_EQ(batch.status.size(), mesh.boundaryLoops()[0].size());
+  ASSERT_EQ(batch.offsets.size(), batch.status.size() + 1);
+  EXPECT_EQ(batch.offsets.back(), static_cast<int64_t>(batch.points.size()));
+  StraightestPathTracer tracer(mesh, source);
+  for (size_t i = 0; i < batch.status.size(); ++i) {
+    const StraightestPath& path = tracer.trace(batch.targets[i]);
+    EXPECT_EQ(batch.status[i], path.status);
+    EXPECT_EQ(batch.length[i], path.length);
+    EXPECT_EQ(batch.offsets[i + 1] - batch.offsets[i], static_cast<int64_t>(path.positions.size()));
+    if (batch.status[i] == TraceStatus::Reached) {
+      const Vec3& last = batch.points[batch.offsets[i + 1] - 1];
+      EXPECT_EQ(norm(last - position(mesh, batch.targets[i])), 0.0);  // ends exactly at the target
+    }
+  }
+  EXPECT_GT(batch.reached(), 0);
 }
 
 TEST(HeatMethod, NeverExceedsTheStraightestDistanceBeyondItsError) {

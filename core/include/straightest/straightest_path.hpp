@@ -88,4 +88,27 @@ class StraightestPathTracer {
   StraightestPath result_, second_;
 };
 
+/// Many destinations from one source in one call (shared setup), results packed for transport:
+/// path i's points are points[offsets[i] .. offsets[i+1]) (when keepPoints).
+struct PathBatch {
+  SurfacePoint source;
+  BasePlane base;
+  std::vector<SurfacePoint> targets;
+  std::vector<TraceStatus> status;
+  std::vector<double> length;
+  std::vector<int64_t> facesCrossed;
+  std::vector<uint8_t> reversed;
+  std::vector<Vec3> points;
+  std::vector<int64_t> offsets;
+  double prepareMs = 0, traceMs = 0;  // setup (base plane, tables) and all traces
+  int64_t reached() const;
+};
+
+/// The vertices of the longest boundary loop, in order (empty for a closed mesh).
+std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh);
+
+/// Traces every target (each a valid surface point; see validateSurfacePoint).
+PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
+                                std::vector<SurfacePoint> targets, bool keepPoints);
+
 }  // namespace straightest
