@@ -1,3 +1,4 @@
+cmake_minimum_required(VERSION 3.20)  # modern policies (quoted arguments are never dereferenced)
 # CLI contract: JSON on stdout and exit 0 for a good mesh; exit 2 with the message on stderr (or JSON
 # with --json-errors) for bad input; never a signal. Run by ctest as `cli_smoke`.
 function(expect_run expected_code)
