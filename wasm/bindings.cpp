@@ -8,8 +8,10 @@
 #include <new>
 #include <string>
 
+#include "straightest/geodesic_distance.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/samples.hpp"
+#include "straightest/straightest_path.hpp"
 
 using emscripten::val;
 using namespace straightest;
@@ -55,6 +57,52 @@ BuildLimits limitsFrom(const val& options) {
   return limits;
 }
 
+/// Copies a contiguous array into a new JS typed array of the given type (one copy).
+template <class T>
+val copyToJs(const char* type, const T* data, size_t n) {
+  return val::global(type).new_(emscripten::typed_memory_view(n, data));
+}
+
+/// A surface point marshalled as 5 numbers: [kind, index, a, b, c]; kind 0 vertex, 1 edge (halfedge
+/// index, t = a), 2 face (face index, barycentric a b c). Kind -1 means "auto" (the default source).
+Expected<SurfacePoint> pointFrom(const TriMesh& mesh, const double* s) {
+  const int kind = static_cast<int>(s[0]);
+  const double index = s[1];
+  if (!(index >= 0 && index <= 2147483647.0 && index == static_cast<int32_t>(index)))
+    return Error{ErrorCode::InvalidArgument, "surface point index " + std::to_string(index) + " is not valid"};
+  const auto i = static_cast<int32_t>(index);
+  switch (kind) {
+    case -1: {
+      auto v = defaultSource(mesh);
+      if (!v) return v.error();
+      return SurfacePoint::vertex(v.value());
+    }
+    case 0: return validateSurfacePoint(mesh, SurfacePoint::vertex(i));
+    case 1: return validateSurfacePoint(mesh, SurfacePoint::edge(i, s[2]));
+    case 2: return validateSurfacePoint(mesh, SurfacePoint::face(i, {s[2], s[3], s[4]}));
+    default: return Error{ErrorCode::InvalidArgument, "unknown surface point kind"};
+  }
+}
+
+val pointToJs(const SurfacePoint& p) {
+  val o = val::object();
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: o.set("vertex", p.index); break;
+    case SurfacePoint::Kind::Edge:
+      o.set("halfedge", p.index);
+      o.set("t", p.t);
+      break;
+    case SurfacePoint::Kind::Face: {
+      o.set("face", p.index);
+      val b = val::array();
+      b.call<void>("push", p.bary[0], p.bary[1], p.bary[2]);
+      o.set("bary", b);
+      break;
+    }
+  }
+  return o;
+}
+
 /// The JS-facing mesh: owns an immutable TriMesh.
 class MeshHandle {
  public:
@@ -84,6 +132,104 @@ class MeshHandle {
     return o;
   }
 
+  val defaultSourceVertex() const {
+    return guarded([&] {
+      auto v = defaultSource(*mesh_);
+      if (!v) return errorObject(v.error());
+      val o = val::object();
+      o.set("vertex", v.value());
+      return o;
+    });
+  }
+
+  val basePlaneAt(const val& sourceSpec) const {
+    return guarded([&] {
+      const auto spec = emscripten::convertJSArrayToNumberVector<double>(sourceSpec);
+      auto source = pointFrom(*mesh_, spec.data());
+      if (!source) return errorObject(source.error());
+      const BasePlane base = basePlane(*mesh_, source.value());
+      val o = val::object();
+      o.set("source", pointToJs(source.value()));
+      o.set("origin", vec3(base.origin));
+      o.set("normal", vec3(base.normal));
+      o.set("fallback", base.fallback);
+      o.set("note", base.note);
+      return o;
+    });
+  }
+
+  /// targetSpecs: 5 numbers per target (see pointFrom); an empty array means the boundary.
+  val straightestPaths(const val& sourceSpec, const val& targetSpecs, bool boundary, bool keepPoints) const {
+    return guarded([&] {
+      const auto spec = emscripten::convertJSArrayToNumberVector<double>(sourceSpec);
+      auto source = pointFrom(*mesh_, spec.data());
+      if (!source) return errorObject(source.error());
+      std::vector<SurfacePoint> targets;
+      if (boundary) {
+        targets = boundaryTargets(*mesh_);
+        if (targets.empty()) return errorObject("topology", "targets 'boundary': the mesh is closed (no boundary loop)");
+      } else {
+        const auto flat = emscripten::convertJSArrayToNumberVector<double>(targetSpecs);
+        for (size_t i = 0; i + 5 <= flat.size(); i += 5) {
+          auto t = pointFrom(*mesh_, flat.data() + i);
+          if (!t) return errorObject(errorCodeName(t.error().code), "target " + std::to_string(i / 5) + ": " + t.error().message);
+          targets.push_back(t.value());
+        }
+      }
+      const PathBatch batch = traceStraightestPaths(*mesh_, source.value(), std::move(targets), keepPoints);
+      const size_t n = batch.status.size();
+      std::vector<uint8_t> status(n);
+      std::vector<uint32_t> crossed(n), offsets(batch.offsets.size());
+      for (size_t i = 0; i < n; ++i) {
+        status[i] = static_cast<uint8_t>(batch.status[i]);
+        crossed[i] = static_cast<uint32_t>(batch.facesCrossed[i]);
+      }
+      for (size_t i = 0; i < offsets.size(); ++i) offsets[i] = static_cast<uint32_t>(batch.offsets[i]);
+      std::vector<float> points(3 * batch.points.size());
+      for (size_t i = 0; i < batch.points.size(); ++i) {
+        points[3 * i] = static_cast<float>(batch.points[i].x);
+        points[3 * i + 1] = static_cast<float>(batch.points[i].y);
+        points[3 * i + 2] = static_cast<float>(batch.points[i].z);
+      }
+      val targetsJs = val::array();
+      for (const SurfacePoint& t : batch.targets) targetsJs.call<void>("push", pointToJs(t));
+      val o = val::object();
+      o.set("source", pointToJs(batch.source));
+      o.set("normal", vec3(batch.base.normal));
+      o.set("baseFallback", batch.base.fallback);
+      o.set("baseNote", batch.base.note);
+      o.set("targets", targetsJs);
+      o.set("statusCodes", copyToJs("Uint8Array", status.data(), n));
+      o.set("lengths", copyToJs("Float64Array", batch.length.data(), n));
+      o.set("facesCrossed", copyToJs("Uint32Array", crossed.data(), n));
+      o.set("points", copyToJs("Float32Array", points.data(), points.size()));
+      o.set("offsets", copyToJs("Uint32Array", offsets.data(), offsets.size()));
+      o.set("prepareMs", batch.prepareMs);
+      o.set("traceMs", batch.traceMs);
+      return o;
+    });
+  }
+
+  val geodesicDistances(const val& sourceSpec, const std::string& method) const {
+    return guarded([&] {
+      const auto spec = emscripten::convertJSArrayToNumberVector<double>(sourceSpec);
+      auto source = pointFrom(*mesh_, spec.data());
+      if (!source) return errorObject(source.error());
+      std::vector<double> d;
+      if (method == "heat") {
+        if (!heat_) heat_ = std::make_shared<HeatMethod>(*mesh_);  // factored once, reused per source
+        d = heat_->distances(source.value());
+      } else if (method == "dijkstra") {
+        d = dijkstraDistances(*mesh_, source.value());
+      } else {
+        return errorObject("invalid_argument", "unknown distance method '" + method + "' (use heat or dijkstra)");
+      }
+      val o = val::object();
+      o.set("distances", copyToJs("Float64Array", d.data(), d.size()));
+      return o;
+    });
+  }
+
   /// Views into WASM memory; the JS wrapper copies them at once (.slice()).
   val positionsView() const {
     return val(emscripten::typed_memory_view(3 * mesh_->positions().size(),
@@ -96,6 +242,7 @@ class MeshHandle {
 
  private:
   std::shared_ptr<const TriMesh> mesh_;
+  mutable std::shared_ptr<HeatMethod> heat_;
 };
 
 val meshResult(Expected<TriMesh>&& mesh) {
@@ -131,15 +278,26 @@ val sampleNameList() {
   return a;
 }
 
+val traceStatusNameList() {
+  val a = val::array();
+  for (int i = 0; i < kTraceStatusCount; ++i) a.call<void>("push", std::string(traceStatusName(static_cast<TraceStatus>(i))));
+  return a;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(straightest) {
   emscripten::class_<MeshHandle>("MeshHandle")
       .function("info", &MeshHandle::info)
+      .function("defaultSource", &MeshHandle::defaultSourceVertex)
+      .function("basePlane", &MeshHandle::basePlaneAt)
+      .function("straightestPaths", &MeshHandle::straightestPaths)
+      .function("geodesicDistances", &MeshHandle::geodesicDistances)
       .function("positionsView", &MeshHandle::positionsView)
       .function("indicesView", &MeshHandle::indicesView);
   emscripten::function("loadMeshBytes", &loadMeshBytes);
   emscripten::function("meshFromArrays", &meshFromArrays);
   emscripten::function("sample", &sample);
   emscripten::function("sampleNames", &sampleNameList);
+  emscripten::function("traceStatusNames", &traceStatusNameList);
 }

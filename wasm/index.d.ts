@@ -34,8 +34,60 @@ export class StraightestError extends Error {
   readonly category: ErrorCategory;
 }
 
+/** A point on the surface: a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}. */
+export type SurfacePoint =
+  | number
+  | { vertex: number }
+  | { face: number; bary: [number, number, number] }
+  | { halfedge: number; t: number };
+
+export type TraceStatus =
+  | 'reached' | 'hit_boundary' | 'returned_to_source' | 'loop' | 'step_limit' | 'no_exit' | 'degenerate_plane';
+
+export interface BasePlane {
+  source: SurfacePoint;
+  origin: [number, number, number];
+  /** Unit normal: mean of the virtual faces' normals (or the area-weighted normal when fallback). */
+  normal: [number, number, number];
+  fallback: boolean;
+  note: string;
+}
+
+export interface StraightestPaths {
+  source: SurfacePoint;
+  normal: [number, number, number];
+  baseFallback: boolean;
+  baseNote: string;
+  targets: SurfacePoint[];
+  count: number;
+  reached: number;
+  statuses: TraceStatus[];
+  /** Straightest distances (of the partial path when not reached). */
+  lengths: Float64Array;
+  facesCrossed: Uint32Array;
+  /** Packed x, y, z of every path's points; path i is points [3·offsets[i], 3·offsets[i+1]). */
+  points: Float32Array;
+  offsets: Uint32Array;
+  timings: { prepare: number; trace: number };
+}
+
+export interface StraightestPathsOptions {
+  /** Default 'auto': the interior vertex farthest from the boundary. */
+  source?: SurfacePoint | 'auto';
+  /** Default 'boundary': every vertex of the longest boundary loop. */
+  targets?: 'boundary' | SurfacePoint[];
+  /** Return the points of each path (default true). */
+  points?: boolean;
+}
+
 export class Mesh {
   info(): MeshInfo;
+  /** The interior vertex farthest from the boundary ("center of the mesh"). */
+  defaultSource(): number;
+  basePlane(source?: SurfacePoint | 'auto'): BasePlane;
+  straightestPaths(options?: StraightestPathsOptions): StraightestPaths;
+  /** Distances from the source to every vertex; 'heat' factors once per mesh and reuses it. */
+  geodesicDistances(source?: SurfacePoint | 'auto', method?: 'heat' | 'dijkstra'): Float64Array;
   /** x, y, z per vertex (a copy). */
   positions(): Float64Array;
   /** 3 vertex indices per triangle (a copy). */
@@ -51,6 +103,7 @@ export class Straightest {
   sampleNames(): string[];
   sample(name: 'mountain' | 'cap' | 'saddle' | 'face' | string): Mesh;
   readonly memoryBytes: number;
+  readonly traceStatuses: TraceStatus[];
 }
 
 export interface CreateOptions {

@@ -29,6 +29,21 @@ function toBytes(data) {
   throw new TypeError('loadMesh expects a Uint8Array, an ArrayBuffer or a string with the file contents');
 }
 
+/**
+ * A surface point as JS gives it: a vertex number, {vertex}, {face, bary: [a, b, c]} or
+ * {halfedge, t}; 'auto' (sources only) is the default source. Marshalled as [kind, index, a, b, c].
+ */
+function pointSpec(p, what, allowAuto) {
+  if (p === 'auto' && allowAuto) return [-1, 0, 0, 0, 0];
+  if (typeof p === 'number') return [0, p, 0, 0, 0];
+  if (p && typeof p === 'object') {
+    if (typeof p.vertex === 'number') return [0, p.vertex, 0, 0, 0];
+    if (typeof p.face === 'number' && p.bary && p.bary.length === 3) return [2, p.face, +p.bary[0], +p.bary[1], +p.bary[2]];
+    if (typeof p.halfedge === 'number' && typeof p.t === 'number') return [1, p.halfedge, p.t, 0, 0];
+  }
+  throw new StraightestError(`${what} must be ${allowAuto ? "'auto', " : ''}a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}; got ${JSON.stringify(p)}`, 'invalid_argument');
+}
+
 const finalizer = typeof FinalizationRegistry === 'function'
   ? new FinalizationRegistry((handle) => { try { handle.delete(); } catch { /* already gone */ } })
   : null;
@@ -37,8 +52,11 @@ const finalizer = typeof FinalizationRegistry === 'function'
 export class Mesh {
   #handle;
 
-  constructor(handle) {
+  #statusNames;
+
+  constructor(handle, statusNames) {
     this.#handle = handle;
+    this.#statusNames = statusNames;
     finalizer?.register(this, handle, this);
   }
 
@@ -56,6 +74,49 @@ export class Mesh {
   /** Triangle vertex indices, 3 per face (a copy; faces may have been reoriented for consistency). */
   indices() { return this.#live().indicesView().slice(); }
 
+  /** The default source: the interior vertex farthest from the boundary ("center of the mesh"). */
+  defaultSource() { return unwrap(this.#live().defaultSource()).vertex; }
+
+  /** The base plane at a source: { source, origin, normal, fallback, note }. */
+  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(pointSpec(source, 'source', true))); }
+
+  /**
+   * Straightest paths from one source to many targets (shared setup). targets: 'boundary' (every
+   * vertex of the longest boundary loop) or an array of surface points. Returns per-path lengths,
+   * statuses, faces crossed, and one packed Float32Array of points with offsets (path i is points
+   * offsets[i]..offsets[i+1], 3 floats each).
+   */
+  straightestPaths({ source = 'auto', targets = 'boundary', points = true } = {}) {
+    const src = pointSpec(source, 'source', true);
+    const boundary = targets === 'boundary';
+    if (!boundary && !Array.isArray(targets)) throw new StraightestError("targets must be 'boundary' or an array of surface points", 'invalid_argument');
+    const flat = boundary ? [] : targets.flatMap((t, i) => pointSpec(t, `targets[${i}]`, false));
+    const r = unwrap(this.#live().straightestPaths(src, flat, boundary, !!points));
+    const names = this.#statusNames;
+    const statuses = Array.from(r.statusCodes, (c) => names[c]);
+    const reached = statuses.filter((s) => s === 'reached').length;
+    return {
+      source: r.source,
+      normal: r.normal,
+      baseFallback: r.baseFallback,
+      baseNote: r.baseNote,
+      targets: r.targets,
+      count: statuses.length,
+      reached,
+      statuses,
+      lengths: r.lengths,
+      facesCrossed: r.facesCrossed,
+      points: r.points,
+      offsets: r.offsets,
+      timings: { prepare: r.prepareMs, trace: r.traceMs },
+    };
+  }
+
+  /** Shortest distances from a source to every vertex: 'heat' (factored once per mesh) or 'dijkstra'. */
+  geodesicDistances(source = 'auto', method = 'heat') {
+    return unwrap(this.#live().geodesicDistances(pointSpec(source, 'source', true), String(method))).distances;
+  }
+
   get deleted() { return !this.#handle; }
 
   /** Frees the WASM memory of this mesh. Idempotent. */
@@ -70,26 +131,33 @@ export class Mesh {
 /** The loaded library. Create with `await createStraightest()`. */
 export class Straightest {
   #module;
+  #statusNames;
 
-  constructor(module) { this.#module = module; }
+  constructor(module) {
+    this.#module = module;
+    this.#statusNames = module.traceStatusNames();
+  }
+
+  /** The trace statuses, in the core's order: 'reached' is the only success. */
+  get traceStatuses() { return [...this.#statusNames]; }
 
   /** Parses an OBJ or OFF file given as bytes (Uint8Array/ArrayBuffer) or text. */
   loadMesh(data, format = 'auto', limits = {}) {
     const fmt = String(format).toLowerCase();
     if (!FORMATS.has(fmt)) throw new StraightestError(`unknown mesh format '${format}' (use obj, off or auto)`, 'unsupported_format');
-    return new Mesh(unwrap(this.#module.loadMeshBytes(toBytes(data), fmt, limits)).mesh);
+    return new Mesh(unwrap(this.#module.loadMeshBytes(toBytes(data), fmt, limits)).mesh, this.#statusNames);
   }
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
   meshFromArrays(positions, indices, limits = {}) {
-    return new Mesh(unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh);
+    return new Mesh(unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh, this.#statusNames);
   }
 
   /** Names of the built-in sample meshes. */
   sampleNames() { return this.#module.sampleNames(); }
 
   /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face'). */
-  sample(name) { return new Mesh(unwrap(this.#module.sample(String(name))).mesh); }
+  sample(name) { return new Mesh(unwrap(this.#module.sample(String(name))).mesh, this.#statusNames); }
 
   /** Bytes of WASM memory currently reserved (grows, never shrinks). */
   get memoryBytes() { return this.#module.HEAPU8.length; }
