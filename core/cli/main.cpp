@@ -35,7 +35,8 @@ constexpr const char* kUsage =
     "      --to boundary|N,N,...  destinations (default boundary: every vertex of the longest boundary loop)\n"
     "      --points               include each path's points\n"
     "\n"
-    "MESH is an .obj or .off file, or sample:NAME for a built-in sample (mountain, cap, saddle, face).\n"
+    "MESH is an .obj or .off file, sample:NAME for a built-in sample (mountain, cap, saddle, face), or\n"
+    "heightfield:N for the mountain relief on an N × N grid (heightfield:1000 has 1M vertices).\n"
     "\n"
     "options:\n"
     "  --pretty         indent the JSON output\n"
@@ -103,8 +104,16 @@ Options parseArgs(int argc, char** argv) {
 }
 
 Expected<TriMesh> openMesh(const Options& o) {
-  const std::string prefix = "sample:";
+  const std::string prefix = "sample:", field = "heightfield:";
   if (o.mesh.compare(0, prefix.size(), prefix) == 0) return makeSample(o.mesh.substr(prefix.size()));
+  if (o.mesh.compare(0, field.size(), field) == 0) {
+    const std::string n = o.mesh.substr(field.size());
+    char* end = nullptr;
+    const long size = std::strtol(n.c_str(), &end, 10);
+    if (n.empty() || *end || size < 2 || size > 10000)
+      return Error{ErrorCode::InvalidArgument, "heightfield:N needs 2 <= N <= 10000 (N × N vertices), got '" + n + "'"};
+    return makeHeightField(static_cast<int>(size));
+  }
   return loadMeshFile(o.mesh, o.limits);
 }
 
