@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <cmath>
 #include <exception>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <iostream>
@@ -16,6 +18,7 @@
 
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/mesh_io.hpp"
+#include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
 
@@ -34,6 +37,12 @@ constexpr const char* kUsage =
     "      --source auto|N        source vertex (default auto: the interior vertex farthest from the boundary)\n"
     "      --to boundary|N,N,...  destinations (default boundary: every vertex of the longest boundary loop)\n"
     "      --points               include each path's points\n"
+    "  param MESH       flatten a disk: boundary map + convex-combination interior, with texture stretch\n"
+    "      --source auto|N        center for the measured boundary (default auto)\n"
+    "      --boundary measured|circle|square|auto   (default measured; auto keeps the least stretched)\n"
+    "      --weights shape-preserving|mean-value|cotan|uniform   (default shape-preserving)\n"
+    "      --solver lu|bicgstab   sparse solver (default lu)\n"
+    "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order\n"
     "\n"
     "MESH is an .obj or .off file, sample:NAME for a built-in sample (mountain, cap, saddle, face), or\n"
     "heightfield:N for the mountain relief on an N × N grid (heightfield:1000 has 1M vertices).\n"
@@ -50,6 +59,7 @@ struct Options {
   std::string command, mesh;
   bool pretty = false, jsonErrors = false, points = false;
   std::string source = "auto", to = "boundary";
+  std::string boundary = "measured", weights = "shape-preserving", solver = "lu", output;
   BuildLimits limits;
 };
 
@@ -89,6 +99,10 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--source") o.source = value();
     else if (a == "--to") o.to = value();
     else if (a == "--points") o.points = true;
+    else if (a == "--boundary") o.boundary = value();
+    else if (a == "--weights") o.weights = value();
+    else if (a == "--solver") o.solver = value();
+    else if (a == "-o" || a == "--output") o.output = value();
     else if (a == "-h" || a == "--help") o.command = "help";
     else if (a.size() > 1 && a[0] == '-') throw UsageError{"unknown option '" + a + "'"};
     else positional.push_back(a);
@@ -96,7 +110,7 @@ Options parseArgs(int argc, char** argv) {
   if (o.command == "help") return o;
   if (positional.empty()) throw UsageError{"missing COMMAND"};
   o.command = positional[0];
-  if (o.command != "info" && o.command != "paths") throw UsageError{"unknown command '" + o.command + "'"};
+  if (o.command != "info" && o.command != "paths" && o.command != "param") throw UsageError{"unknown command '" + o.command + "'"};
   if (positional.size() < 2) throw UsageError{"missing MESH"};
   if (positional.size() > 2) throw UsageError{"unexpected argument '" + positional[2] + "'"};
   o.mesh = positional[1];
@@ -218,6 +232,58 @@ int runPaths(const Options& o, const TriMesh& mesh, double loadMs) {
   return 0;
 }
 
+json finiteOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
+  ParamOptions options;
+  auto boundary = parseBoundaryChoice(o.boundary);
+  if (!boundary) return fail(o, 2, "usage", boundary.error().message);
+  auto weights = parseWeightKind(o.weights);
+  if (!weights) return fail(o, 2, "usage", weights.error().message);
+  if (o.solver != "lu" && o.solver != "bicgstab") return fail(o, 2, "usage", "unknown solver '" + o.solver + "' (use lu or bicgstab)");
+  options.boundary = boundary.value();
+  options.weights = weights.value();
+  options.solver = o.solver == "lu" ? LinearSolver::SparseLU : LinearSolver::BiCGSTAB;
+  if (o.source != "auto") {
+    auto v = parseVertex(mesh, o.source, "--source");
+    if (!v) return fail(o, 2, errorCodeName(v.error().code), v.error().message);
+    options.autoSource = false;
+    options.source = SurfacePoint::vertex(v.value());
+  }
+  auto result = parameterize(mesh, options);
+  if (!result) return fail(o, 2, errorCodeName(result.error().code), result.error().message);
+  const Parameterization& p = result.value();
+  if (!o.output.empty()) {
+    std::ofstream out(o.output, std::ios::binary);
+    out << writeObj(mesh, &p.uv);
+    if (!out) return fail(o, 2, "io", "cannot write '" + o.output + "'");
+  }
+  const StretchMetrics& m = p.metrics;
+  json candidates = json::array();
+  for (const BoundaryCandidate& c : p.candidates)
+    candidates.push_back({{"boundary", boundaryKindName(c.kind)}, {"l2", finiteOrNull(c.l2)},
+                          {"linf", finiteOrNull(c.linf)}, {"flipped", c.flipped}, {"degenerate", c.degenerate}});
+  const ParamTimings& t = p.timingsMs;
+  json out{{"source", p.source.index},
+           {"boundary", boundaryKindName(p.boundary)},
+           {"weights", weightKindName(p.weights)},
+           {"stretch", {{"l2", finiteOrNull(m.l2)}, {"linf", finiteOrNull(m.linf)}}},
+           {"bijective", m.bijective},
+           {"flipped", m.flipped},
+           {"degenerate", m.degenerate},
+           {"fallbacks", p.fallbacks},
+           {"weight_fallbacks", p.weightFallbacks},
+           {"angle_distortion", {{"mean", finiteOrNull(m.angleDistortionMean)}, {"max", finiteOrNull(m.angleDistortionMax)}}},
+           {"area_distortion", {{"mean", finiteOrNull(m.areaDistortionMean)}, {"max", finiteOrNull(m.areaDistortionMax)}}},
+           {"residual", p.residual},
+           {"candidates", candidates},
+           {"timings_ms", {{"load", loadMs}, {"source", t.source}, {"trace", t.trace}, {"boundary", t.boundary},
+                           {"weights", t.weights}, {"solve", t.solve}, {"metrics", t.metrics}, {"total", t.total}}}};
+  if (!o.output.empty()) out["output"] = o.output;
+  std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -238,6 +304,7 @@ int main(int argc, char** argv) {
     const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!mesh) return fail(o, 2, errorCodeName(mesh.error().code), mesh.error().message);
     if (o.command == "paths") return runPaths(o, mesh.value(), loadMs);
+    if (o.command == "param") return runParam(o, mesh.value(), loadMs);
     std::cout << infoJson(mesh.value()).dump(o.pretty ? 2 : -1) << "\n";
     return 0;
   } catch (const std::bad_alloc&) {

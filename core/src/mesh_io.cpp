@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -451,6 +452,28 @@ Expected<TriMesh> loadMeshFile(const std::string& path, const BuildLimits& limit
   const std::string ext = lower(path.size() >= 4 ? std::string_view(path).substr(path.size() - 4) : "");
   const MeshFormat format = ext == ".obj" ? MeshFormat::Obj : ext == ".off" ? MeshFormat::Off : MeshFormat::Auto;
   return loadMesh(content.str(), format, limits);
+}
+
+std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv) {
+  std::string out = "# written by straightest\n";
+  char line[160];
+  for (const Vec3& p : mesh.positions()) {
+    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
+    out += line;
+  }
+  if (uv)
+    for (const Vec2& t : *uv) {
+      std::snprintf(line, sizeof line, "vt %.17g %.17g\n", t[0], t[1]);
+      out += line;
+    }
+  for (const Triangle& t : mesh.triangles()) {
+    if (uv)
+      std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1);
+    else
+      std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    out += line;
+  }
+  return out;
 }
 
 void triangulatePolygon(const std::vector<Vec3>& positions, const std::vector<int32_t>& polygon,

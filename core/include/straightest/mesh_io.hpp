@@ -39,6 +39,10 @@ Expected<TriMesh> loadMesh(std::string_view bytes, MeshFormat format = MeshForma
 /// Reads a file; the format comes from the extension (.obj/.off), or from the content when unknown.
 Expected<TriMesh> loadMeshFile(const std::string& path, const BuildLimits& limits = {});
 
+/// OBJ text of the mesh, vertices in the mesh's order; with uv (one per vertex), a `vt` per vertex and
+/// faces written as v/vt.
+std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv = nullptr);
+
 /// Splits one polygon (indices into positions) into triangles by ear clipping in its Newell plane;
 /// falls back to a fan when the polygon is too degenerate to clip. Appends to `out`.
 void triangulatePolygon(const std::vector<Vec3>& positions, const std::vector<int32_t>& polygon,

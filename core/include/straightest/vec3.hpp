@@ -2,9 +2,13 @@
 // A plain value type (no alignment requirements) so positions can live in flat std::vector<Vec3>
 // and be copied to JS as one contiguous block of doubles.
 #pragma once
+#include <array>
 #include <cmath>
 
 namespace straightest {
+
+/// A point in the parameter plane (u, v).
+using Vec2 = std::array<double, 2>;
 
 struct Vec3 {
   double x = 0, y = 0, z = 0;

@@ -1,0 +1,54 @@
+// boundary_map.hpp — where the boundary loop of a disk goes in the parameter plane (DESIGN §3).
+//
+//  - measured: boundary vertex b_i goes to r_i (cos θ_i, sin θ_i), θ_i = 2π · (cumulative 3D angle
+//    ∠(b_j − S, b_j+1 − S), j < i) / (sum over the loop), r_i = straightest distance S → b_i. A failed
+//    trace gets the edge-graph (Dijkstra) distance from S instead and is counted as a fallback.
+//    Then the polygon is made convex: a point strictly inside the convex hull moves radially outward
+//    onto the hull. Where a triangle with all three vertices on the boundary would then lie on one
+//    straight hull edge (zero area: the map could not be bijective), the points on that edge are lifted
+//    onto a shallow parabola over it (sagitta ≤ kBulge · edge length / 4, limited by the hull's turning
+//    angles at both ends), which keeps the polygon convex and makes it strictly convex there. Edges
+//    without such a triangle stay straight, so a flat convex patch reproduces itself exactly.
+//  - circle: the unit circle, by cumulative 3D boundary edge length.
+//  - square: the perimeter of the unit square by the same arc length, the loop's first vertex at a
+//    corner; a side is bulged like above only where an all-boundary triangle would collapse.
+// The polygon is counter-clockwise (the loop keeps the surface on its left). The source maps to (0, 0)
+// for the measured boundary.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "straightest/surface_point.hpp"
+
+namespace straightest {
+
+inline constexpr double kBulge = 0.05;  // end slope of the parabola (sagitta = kBulge · L / 4)
+
+enum class BoundaryKind { Measured, Circle, Square };
+const char* boundaryKindName(BoundaryKind k);
+
+struct BoundaryMap {
+  BoundaryKind kind = BoundaryKind::Circle;
+  std::vector<int32_t> loop;      // boundary vertices in order
+  std::vector<Vec2> polygon;      // their positions in the plane
+  int64_t fallbacks = 0;          // measured: traces that failed and used the Dijkstra radius
+  int64_t movedToHull = 0;        // measured: points moved outward by the convexification
+  double traceMs = 0;             // measured: time spent tracing
+};
+
+/// Requires a disk (checked by the caller). `source` must be an interior surface point for measured.
+Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source);
+BoundaryMap circleBoundary(const TriMesh& mesh);
+BoundaryMap squareBoundary(const TriMesh& mesh);
+
+/// Triangles of the mesh whose three vertices are all on the loop, as indices into the loop.
+std::vector<std::array<int32_t, 3>> allBoundaryTriangles(const TriMesh& mesh, const std::vector<int32_t>& loop);
+
+/// Moves points strictly inside the convex hull of `points` radially (from the origin) onto the hull,
+/// then bulges the hull edges on which one of `triangles` (indices into points) would collapse (see
+/// the file comment). The origin must be strictly inside the hull; returns the number of points moved
+/// onto the hull, or -1 when the origin is not inside.
+int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 3>>& triangles);
+
+}  // namespace straightest

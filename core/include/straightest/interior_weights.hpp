@@ -1,0 +1,37 @@
+// interior_weights.hpp — linear convex-combination weights for the interior of a disk map.
+// Each interior vertex i gets weights λ_ij over its one-ring neighbours j with Σ_j λ_ij = 1; the
+// parameterization solves u_i = Σ_j λ_ij u_j (Tutte/Floater). Kinds:
+//  - uniform: λ_ij = 1/deg(i) (Tutte).
+//  - shape-preserving (Floater 1997): the one ring is flattened by the geodesic polar map (angles at i
+//    scaled to sum 2π, edge lengths kept); for every neighbour k, the ray from q_k through the centre
+//    hits the opposite segment [q_l, q_l+1]; the barycentric coordinates of the centre in
+//    (q_k, q_l, q_l+1) are averaged over k.
+//  - mean-value (Floater 2003): w_ij = (tan(α_ij⁻/2) + tan(α_ij⁺/2)) / |p_j − p_i|, normalized.
+//  - cotan (harmonic): w_ij = cot β_ij + cot γ_ij, normalized; can be negative (not a convex
+//    combination: obtuse meshes may flip).
+// Degenerate one rings (zero-length edges, zero angle sums) fall back to uniform for that vertex; the
+// count is reported.
+#pragma once
+#include <vector>
+
+#include "straightest/trimesh.hpp"
+
+namespace straightest {
+
+enum class WeightKind { ShapePreserving, MeanValue, Cotan, Uniform };
+const char* weightKindName(WeightKind k);
+
+struct InteriorWeights {
+  // CSR rows for the interior vertices in `rows` order: neighbours and weights of row r are
+  // [start[r], start[r+1]).
+  std::vector<int32_t> rows;
+  std::vector<int64_t> start;
+  std::vector<int32_t> neighbour;
+  std::vector<double> weight;
+  int64_t uniformFallbacks = 0;
+};
+
+/// Weights for every interior (non-boundary, referenced) vertex of a mesh with boundary.
+InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind);
+
+}  // namespace straightest

@@ -1,0 +1,210 @@
+#include "straightest/boundary_map.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "straightest/geodesic_distance.hpp"
+#include "straightest/straightest_path.hpp"
+
+namespace straightest {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
+Vec2 sub(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
+double len(const Vec2& a) { return std::hypot(a[0], a[1]); }
+
+/// Cumulative 3D edge length along the loop, normalized to [0, 1) (first vertex at 0).
+std::vector<double> arcLengthParameter(const TriMesh& mesh, const std::vector<int32_t>& loop) {
+  std::vector<double> s(loop.size(), 0.0);
+  double total = 0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    s[i] = total;
+    total += norm(mesh.position(loop[(i + 1) % loop.size()]) - mesh.position(loop[i]));
+  }
+  if (total > 0)
+    for (double& x : s) x /= total;
+  return s;
+}
+
+/// Indices of the convex hull of pts, counter-clockwise, without collinear points (monotone chain).
+std::vector<size_t> convexHull(const std::vector<Vec2>& pts) {
+  std::vector<size_t> order(pts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pts[a] < pts[b]; });
+  std::vector<size_t> hull(2 * pts.size() + 1);
+  size_t k = 0;
+  auto turn = [&](size_t o, size_t a, size_t b) { return cross2(sub(pts[a], pts[o]), sub(pts[b], pts[o])); };
+  for (size_t i : order) {
+    while (k >= 2 && turn(hull[k - 2], hull[k - 1], i) <= 0) --k;
+    hull[k++] = i;
+  }
+  for (size_t t = k + 1, j = order.size(); j-- > 0;) {
+    const size_t i = order[j];
+    while (k >= t && turn(hull[k - 2], hull[k - 1], i) <= 0) --k;
+    hull[k++] = i;
+  }
+  hull.resize(k > 1 ? k - 1 : k);
+  return hull;
+}
+
+}  // namespace
+
+const char* boundaryKindName(BoundaryKind k) {
+  switch (k) {
+    case BoundaryKind::Measured: return "measured";
+    case BoundaryKind::Circle: return "circle";
+    case BoundaryKind::Square: return "square";
+  }
+  return "unknown";
+}
+
+std::vector<std::array<int32_t, 3>> allBoundaryTriangles(const TriMesh& mesh, const std::vector<int32_t>& loop) {
+  std::vector<int32_t> position(mesh.numVertices(), -1);
+  for (size_t i = 0; i < loop.size(); ++i) position[loop[i]] = static_cast<int32_t>(i);
+  std::vector<std::array<int32_t, 3>> out;
+  for (const Triangle& t : mesh.triangles())
+    if (position[t[0]] >= 0 && position[t[1]] >= 0 && position[t[2]] >= 0)
+      out.push_back({position[t[0]], position[t[1]], position[t[2]]});
+  return out;
+}
+
+int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 3>>& triangles) {
+  const size_t n = points.size();
+  if (n < 3) return -1;
+  const std::vector<size_t> hullIdx = convexHull(points);
+  const size_t h = hullIdx.size();
+  if (h < 3) return -1;
+  std::vector<Vec2> hull(h);
+  for (size_t j = 0; j < h; ++j) hull[j] = points[hullIdx[j]];
+  for (size_t j = 0; j < h; ++j) {  // the origin must be strictly inside (left of every CCW edge)
+    const Vec2 e = sub(hull[(j + 1) % h], hull[j]);
+    if (!(cross2(e, sub({0, 0}, hull[j])) > 1e-14 * len(e) * len(e))) return -1;
+  }
+  // Hull vertices in angular order around the origin, starting at the smallest angle.
+  std::vector<double> angle(h);
+  for (size_t j = 0; j < h; ++j) angle[j] = std::atan2(hull[j][1], hull[j][0]);
+  const auto first = std::min_element(angle.begin(), angle.end()) - angle.begin();
+  std::rotate(hull.begin(), hull.begin() + first, hull.end());
+  std::rotate(angle.begin(), angle.begin() + first, angle.end());
+
+  // 1. Radial projection onto the hull; remember each point's hull edge and parameter along it.
+  int64_t moved = 0;
+  std::vector<int64_t> edgeOf(n, -1);
+  std::vector<double> along(n, 0.0);
+  for (size_t i = 0; i < n; ++i) {
+    Vec2& p = points[i];
+    const double r = len(p);
+    if (!(r > 0)) continue;
+    const double a = std::atan2(p[1], p[0]);
+    size_t j = static_cast<size_t>(std::upper_bound(angle.begin(), angle.end(), a) - angle.begin());
+    j = (j + h - 1) % h;
+    const Vec2& A = hull[j];
+    const Vec2 E = sub(hull[(j + 1) % h], A);
+    const Vec2 d{p[0] / r, p[1] / r};
+    const double rHull = cross2(A, E) / cross2(d, E);  // distance along the ray to the edge's line
+    if (r < rHull * (1 - 1e-12)) {
+      p = {d[0] * rHull, d[1] * rHull};
+      ++moved;
+    }
+    const double L2 = E[0] * E[0] + E[1] * E[1];
+    const double t = ((p[0] - A[0]) * E[0] + (p[1] - A[1]) * E[1]) / L2;
+    const double off = std::abs(cross2(E, sub(p, A))) / std::sqrt(L2);
+    if (t > 1e-9 && t < 1 - 1e-9 && off <= 1e-9 * std::sqrt(L2)) {
+      edgeOf[i] = static_cast<int64_t>(j);
+      along[i] = t;
+    }
+  }
+  // 2. Hull edges on which an all-boundary triangle collapses.
+  std::vector<uint8_t> bulgeEdge(h, 0);
+  for (const auto& t : triangles) {
+    const Vec2 e1 = sub(points[t[1]], points[t[0]]), e2 = sub(points[t[2]], points[t[0]]);
+    if (std::abs(cross2(e1, e2)) > 1e-9 * len(e1) * len(e2)) continue;
+    for (int32_t k : t)
+      if (edgeOf[k] >= 0) bulgeEdge[edgeOf[k]] = 1;
+  }
+  // 3. Lift the points of those edges onto a parabola; its end slopes stay below a third of the
+  //    hull's turning angle at each end, so the polygon stays convex.
+  auto turnAngle = [&](size_t j) {
+    const Vec2 a = sub(hull[j], hull[(j + h - 1) % h]), b = sub(hull[(j + 1) % h], hull[j]);
+    return std::atan2(cross2(a, b), a[0] * b[0] + a[1] * b[1]);
+  };
+  for (size_t i = 0; i < n; ++i) {
+    const int64_t j = edgeOf[i];
+    if (j < 0 || !bulgeEdge[j]) continue;
+    const double slope = std::min({kBulge, std::tan(turnAngle(j) / 3), std::tan(turnAngle((j + 1) % h) / 3)});
+    const Vec2 E = sub(hull[(j + 1) % h], hull[j]);
+    const double L = len(E), t = along[i];
+    const double lift = slope * L * t * (1 - t);
+    points[i] = {points[i][0] + E[1] / L * lift, points[i][1] - E[0] / L * lift};
+  }
+  return moved;
+}
+
+Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source) {
+  BoundaryMap map;
+  map.kind = BoundaryKind::Measured;
+  map.loop = mesh.boundaryLoops().at(0);
+  const size_t n = map.loop.size();
+  const Vec3 S = position(mesh, source);
+  std::vector<double> cumulative(n, 0.0);
+  double total = 0;
+  for (size_t i = 0; i < n; ++i) {
+    cumulative[i] = total;
+    const Vec3 a = mesh.position(map.loop[i]) - S, b = mesh.position(map.loop[(i + 1) % n]) - S;
+    total += std::atan2(norm(cross(a, b)), dot(a, b));
+  }
+  if (!(total > 0)) return Error{ErrorCode::Topology, "the boundary subtends no angle at the source"};
+  const auto t0 = std::chrono::steady_clock::now();
+  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), false);
+  map.traceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<double> fallback;
+  map.polygon.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    double r = batch.length[i];
+    if (batch.status[i] != TraceStatus::Reached) {
+      if (fallback.empty()) fallback = dijkstraDistances(mesh, source);
+      r = fallback[map.loop[i]];
+      ++map.fallbacks;
+    }
+    const double theta = kTwoPi * cumulative[i] / total;
+    map.polygon[i] = {r * std::cos(theta), r * std::sin(theta)};
+  }
+  map.movedToHull = convexify(map.polygon, allBoundaryTriangles(mesh, map.loop));
+  if (map.movedToHull < 0)
+    return Error{ErrorCode::Topology, "the measured boundary does not surround the source (a boundary edge "
+                                      "subtends half of the total angle or more)"};
+  return map;
+}
+
+BoundaryMap circleBoundary(const TriMesh& mesh) {
+  BoundaryMap map;
+  map.kind = BoundaryKind::Circle;
+  map.loop = mesh.boundaryLoops().at(0);
+  const std::vector<double> s = arcLengthParameter(mesh, map.loop);
+  for (double x : s) map.polygon.push_back({std::cos(kTwoPi * x), std::sin(kTwoPi * x)});
+  return map;
+}
+
+BoundaryMap squareBoundary(const TriMesh& mesh) {
+  BoundaryMap map;
+  map.kind = BoundaryKind::Square;
+  map.loop = mesh.boundaryLoops().at(0);
+  const std::vector<double> s = arcLengthParameter(mesh, map.loop);
+  for (double x : s) {
+    const double p = 4 * x;
+    const int side = std::min(3, static_cast<int>(p));
+    const double f = p - side;
+    // Centred at the origin for convexify(); shifted back to [0, 1]² afterwards.
+    const Vec2 q = side == 0 ? Vec2{f, 0} : side == 1 ? Vec2{1, f} : side == 2 ? Vec2{1 - f, 1} : Vec2{0, 1 - f};
+    map.polygon.push_back({q[0] - 0.5, q[1] - 0.5});
+  }
+  convexify(map.polygon, allBoundaryTriangles(mesh, map.loop));  // lifts sides only where triangles collapse
+  for (Vec2& q : map.polygon) q = {q[0] + 0.5, q[1] + 0.5};
+  return map;
+}
+
+}  // namespace straightest

@@ -1,0 +1,138 @@
+#include "straightest/interior_weights.hpp"
+
+#include <cmath>
+
+namespace straightest {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
+
+double cotAngle(const Vec3& a, const Vec3& b) {
+  const double s = norm(cross(a, b));
+  return s > 0 ? dot(a, b) / s : 0.0;
+}
+
+/// Barycentric coordinates of the origin in the 2D triangle (a, b, c); false if degenerate.
+bool originBarycentric(const double a[2], const double b[2], const double c[2], double out[3]) {
+  const double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  if (!(std::abs(det) > 0)) return false;
+  out[1] = ((0 - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (0 - a[1])) / det;
+  out[2] = ((b[0] - a[0]) * (0 - a[1]) - (0 - a[0]) * (b[1] - a[1])) / det;
+  out[0] = 1 - out[1] - out[2];
+  return true;
+}
+
+}  // namespace
+
+const char* weightKindName(WeightKind k) {
+  switch (k) {
+    case WeightKind::ShapePreserving: return "shape-preserving";
+    case WeightKind::MeanValue: return "mean-value";
+    case WeightKind::Cotan: return "cotan";
+    case WeightKind::Uniform: return "uniform";
+  }
+  return "unknown";
+}
+
+InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
+  InteriorWeights W;
+  W.start.push_back(0);
+  std::vector<int32_t> ring;
+  std::vector<Vec3> e;
+  std::vector<double> l, theta, w;
+  std::vector<std::array<double, 2>> q;
+  for (int32_t v = 0; v < mesh.numVertices(); ++v) {
+    if (mesh.vertexHalfedge(v) < 0 || mesh.isBoundaryVertex(v)) continue;
+    // One ring in counter-clockwise order: neighbours k and k+1 span face(h_k).
+    ring.clear();
+    const int32_t start = mesh.vertexHalfedge(v);
+    int32_t h = start;
+    do {
+      ring.push_back(mesh.head(h));
+      h = mesh.twin(TriMesh::prev(h));
+    } while (h >= 0 && h != start && ring.size() <= static_cast<size_t>(mesh.numFaces()));
+    const size_t d = ring.size();
+    const Vec3 p = mesh.position(v);
+    e.resize(d);
+    l.resize(d);
+    theta.resize(d);
+    w.assign(d, 0.0);
+    bool ok = d >= 3;
+    double thetaSum = 0;
+    for (size_t k = 0; k < d && ok; ++k) {
+      e[k] = mesh.position(ring[k]) - p;
+      l[k] = norm(e[k]);
+      ok = l[k] > 0 && std::isfinite(l[k]);
+    }
+    for (size_t k = 0; k < d && ok; ++k) {
+      theta[k] = angleBetween(e[k], e[(k + 1) % d]);  // angle at v in face (v, k, k+1)
+      thetaSum += theta[k];
+    }
+    ok = ok && thetaSum > 0;
+    if (ok) {
+      switch (kind) {
+        case WeightKind::Uniform:
+          for (size_t k = 0; k < d; ++k) w[k] = 1;
+          break;
+        case WeightKind::MeanValue:
+          for (size_t k = 0; k < d; ++k)
+            w[k] = (std::tan(theta[(k + d - 1) % d] / 2) + std::tan(theta[k] / 2)) / l[k];
+          break;
+        case WeightKind::Cotan:
+          for (size_t k = 0; k < d; ++k) {
+            const Vec3& pk = mesh.position(ring[k]);
+            const Vec3& pn = mesh.position(ring[(k + 1) % d]);      // third vertex of face (v, k, k+1)
+            const Vec3& pp = mesh.position(ring[(k + d - 1) % d]);  // third vertex of face (v, k-1, k)
+            w[k] = cotAngle(p - pn, pk - pn) + cotAngle(p - pp, pk - pp);
+          }
+          break;
+        case WeightKind::ShapePreserving: {
+          // Geodesic polar map of the ring, then Floater's averaged barycentric coordinates.
+          q.resize(d);
+          double psi = 0;
+          for (size_t k = 0; k < d; ++k) {
+            q[k] = {l[k] * std::cos(psi), l[k] * std::sin(psi)};
+            psi += theta[k] * kTwoPi / thetaSum;
+          }
+          for (size_t k = 0; k < d && ok; ++k) {
+            bool found = false;
+            for (size_t s = 1; s + 1 < d && !found; ++s) {
+              const size_t a = (k + s) % d, b = (k + s + 1) % d;
+              double mu[3];
+              if (!originBarycentric(q[k].data(), q[a].data(), q[b].data(), mu)) continue;
+              if (mu[0] >= -1e-12 && mu[1] >= -1e-12 && mu[2] >= -1e-12) {
+                w[k] += mu[0];
+                w[a] += mu[1];
+                w[b] += mu[2];
+                found = true;
+              }
+            }
+            ok = found;
+          }
+          break;
+        }
+      }
+    }
+    double sum = 0;
+    for (size_t k = 0; k < d && ok; ++k) {
+      ok = std::isfinite(w[k]);
+      sum += w[k];
+    }
+    if (!ok || !(sum > 0)) {
+      ++W.uniformFallbacks;
+      w.assign(d, 1.0);
+      sum = static_cast<double>(d);
+    }
+    W.rows.push_back(v);
+    for (size_t k = 0; k < d; ++k) {
+      W.neighbour.push_back(ring[k]);
+      W.weight.push_back(w[k] / sum);
+    }
+    W.start.push_back(static_cast<int64_t>(W.neighbour.size()));
+  }
+  return W;
+}
+
+}  // namespace straightest

@@ -1,0 +1,208 @@
+#include "straightest/parameterize.hpp"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "straightest/geodesic_distance.hpp"
+
+namespace straightest {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+/// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; one factorization, two right-hand
+/// sides. Returns the relative residual.
+double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const BoundaryMap& boundary, LinearSolver solver,
+                     std::vector<Vec2>& uv) {
+  const int32_t nv = mesh.numVertices();
+  uv.assign(nv, Vec2{0, 0});
+  for (size_t i = 0; i < boundary.loop.size(); ++i) uv[boundary.loop[i]] = boundary.polygon[i];
+  const auto n = static_cast<Eigen::Index>(W.rows.size());
+  if (n == 0) return 0;
+  std::vector<int32_t> index(nv, -1);
+  for (Eigen::Index r = 0; r < n; ++r) index[W.rows[r]] = static_cast<int32_t>(r);
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(W.neighbour.size() + n);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    triplets.emplace_back(r, r, 1.0);
+    for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
+      const int32_t j = W.neighbour[k];
+      if (index[j] >= 0) {
+        triplets.emplace_back(r, index[j], -W.weight[k]);
+      } else {
+        rhs(r, 0) += W.weight[k] * uv[j][0];
+        rhs(r, 1) += W.weight[k] * uv[j][1];
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  A.makeCompressed();
+  Eigen::MatrixXd x(n, 2);
+  bool solved = false;
+  if (solver == LinearSolver::BiCGSTAB) {
+    Eigen::BiCGSTAB<Eigen::SparseMatrix<double>, Eigen::IncompleteLUT<double>> it;
+    it.preconditioner().setFillfactor(4);
+    it.setTolerance(1e-12);
+    it.compute(A);
+    if (it.info() == Eigen::Success) {
+      // Initial guess: the boundary's centroid (inside the convex polygon).
+      Eigen::MatrixXd guess(n, 2);
+      double cx = 0, cy = 0;
+      for (const Vec2& q : boundary.polygon) { cx += q[0]; cy += q[1]; }
+      guess.col(0).setConstant(cx / boundary.polygon.size());
+      guess.col(1).setConstant(cy / boundary.polygon.size());
+      x = it.solveWithGuess(rhs, guess);
+      solved = it.info() == Eigen::Success;
+    }
+  }
+  if (!solved) {
+    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+    lu.compute(A);
+    if (lu.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+    x = lu.solve(rhs);
+  }
+  for (Eigen::Index r = 0; r < n; ++r) uv[W.rows[r]] = {x(r, 0), x(r, 1)};
+  const double bnorm = rhs.norm();
+  return bnorm > 0 ? (A * x - rhs).norm() / bnorm : (A * x - rhs).norm();
+}
+
+/// Scales uv (and the polygon) into [0, 1]² keeping the aspect ratio, over referenced vertices.
+void normalizeIntoUnitSquare(const TriMesh& mesh, std::vector<Vec2>& uv, std::vector<Vec2>& polygon) {
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for (int32_t v = 0; v < mesh.numVertices(); ++v) {
+    if (mesh.vertexHalfedge(v) < 0) continue;
+    for (int c = 0; c < 2; ++c) {
+      lo[c] = std::min(lo[c], uv[v][c]);
+      hi[c] = std::max(hi[c], uv[v][c]);
+    }
+  }
+  const double scale = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  if (!(scale > 0)) return;
+  auto map = [&](Vec2& q) { q = {(q[0] - lo[0]) / scale, (q[1] - lo[1]) / scale}; };
+  for (int32_t v = 0; v < mesh.numVertices(); ++v) {
+    if (mesh.vertexHalfedge(v) < 0) uv[v] = {0, 0};
+    else map(uv[v]);
+  }
+  for (Vec2& q : polygon) map(q);
+}
+
+}  // namespace
+
+Expected<BoundaryChoice> parseBoundaryChoice(const std::string& name) {
+  if (name == "measured") return BoundaryChoice::Measured;
+  if (name == "circle") return BoundaryChoice::Circle;
+  if (name == "square") return BoundaryChoice::Square;
+  if (name == "auto") return BoundaryChoice::Auto;
+  return Error{ErrorCode::InvalidArgument, "unknown boundary '" + name + "' (use measured, circle, square or auto)"};
+}
+
+Expected<WeightKind> parseWeightKind(const std::string& name) {
+  if (name == "shape-preserving") return WeightKind::ShapePreserving;
+  if (name == "mean-value") return WeightKind::MeanValue;
+  if (name == "cotan") return WeightKind::Cotan;
+  if (name == "uniform") return WeightKind::Uniform;
+  return Error{ErrorCode::InvalidArgument,
+               "unknown weights '" + name + "' (use shape-preserving, mean-value, cotan or uniform)"};
+}
+
+Expected<bool> requireDisk(const TriMesh& mesh) {
+  const MeshSummary& s = mesh.summary();
+  if (s.boundaryLoopSizes.size() == 1 && s.eulerCharacteristic == 1 && s.components == 1) return true;
+  std::string found = std::to_string(s.boundaryLoopSizes.size()) + " boundary loop" +
+                      (s.boundaryLoopSizes.size() == 1 ? "" : "s") + ", Euler characteristic " +
+                      std::to_string(s.eulerCharacteristic) + ", " + std::to_string(s.components) + " component" +
+                      (s.components == 1 ? "" : "s");
+  if (s.boundaryLoopSizes.empty()) found = "a closed surface (" + found + ")";
+  return Error{ErrorCode::Topology, "parameterization needs a disk (one boundary loop, Euler characteristic 1, "
+                                    "one component); found " + found};
+}
+
+Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options) {
+  const auto start = Clock::now();
+  auto disk = requireDisk(mesh);
+  if (!disk) return disk.error();
+  Parameterization result;
+  result.weights = options.weights;
+
+  auto t = Clock::now();
+  const bool needsSource = options.boundary == BoundaryChoice::Measured || options.boundary == BoundaryChoice::Auto;
+  if (options.autoSource) {
+    auto v = defaultSource(mesh);
+    if (!v) return v.error();
+    result.source = SurfacePoint::vertex(v.value());
+  } else {
+    auto p = validateSurfacePoint(mesh, options.source);
+    if (!p) return p.error();
+    result.source = p.value();
+    const bool onBoundary =
+        (p.value().kind == SurfacePoint::Kind::Vertex && mesh.isBoundaryVertex(p.value().index)) ||
+        (p.value().kind == SurfacePoint::Kind::Edge && mesh.twin(p.value().index) < 0);
+    if (onBoundary && needsSource)
+      return Error{ErrorCode::InvalidArgument, "the source must be an interior point: vertex " +
+                                                   std::to_string(p.value().index) + " is on the boundary"};
+  }
+  result.timingsMs.source = msSince(t);
+
+  t = Clock::now();
+  std::vector<BoundaryMap> boundaries;
+  std::string measuredError;
+  if (needsSource) {
+    auto m = measuredBoundary(mesh, result.source);
+    if (m) {
+      boundaries.push_back(std::move(m).value());
+      result.timingsMs.trace = boundaries.back().traceMs;
+    } else if (options.boundary == BoundaryChoice::Measured) {
+      return m.error();
+    }
+  }
+  if (options.boundary == BoundaryChoice::Circle || options.boundary == BoundaryChoice::Auto)
+    boundaries.push_back(circleBoundary(mesh));
+  if (options.boundary == BoundaryChoice::Square || options.boundary == BoundaryChoice::Auto)
+    boundaries.push_back(squareBoundary(mesh));
+  result.timingsMs.boundary = msSince(t) - result.timingsMs.trace;
+
+  t = Clock::now();
+  const InteriorWeights W = interiorWeights(mesh, options.weights);
+  result.weightFallbacks = W.uniformFallbacks;
+  result.timingsMs.weights = msSince(t);
+
+  bool haveBest = false;
+  for (BoundaryMap& boundary : boundaries) {
+    t = Clock::now();
+    std::vector<Vec2> uv;
+    const double residual = solveInterior(mesh, W, boundary, options.solver, uv);
+    result.timingsMs.solve += msSince(t);
+    t = Clock::now();
+    StretchMetrics metrics = textureStretch(mesh, uv);
+    result.timingsMs.metrics += msSince(t);
+    result.candidates.push_back({boundary.kind, metrics.l2, metrics.linf, metrics.flipped, metrics.degenerate});
+    const bool better = !haveBest || metrics.l2 < result.metrics.l2 ||
+                        (std::isinf(result.metrics.l2) && std::isinf(metrics.l2) &&
+                         metrics.flipped + metrics.degenerate < result.metrics.flipped + result.metrics.degenerate);
+    if (better) {
+      haveBest = true;
+      result.boundary = boundary.kind;
+      result.uv = std::move(uv);
+      result.boundaryPolygon = boundary.polygon;
+      result.boundaryLoop = boundary.loop;
+      result.metrics = std::move(metrics);
+      result.fallbacks = boundary.fallbacks;
+      result.residual = residual;
+    }
+  }
+  if (!haveBest) return Error{ErrorCode::Topology, "no boundary map could be built"};
+  normalizeIntoUnitSquare(mesh, result.uv, result.boundaryPolygon);
+  result.timingsMs.total = msSince(start);
+  return result;
+}
+
+}  // namespace straightest
