@@ -10,6 +10,7 @@
 
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/mesh_io.hpp"
+#include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
 
@@ -230,6 +231,109 @@ class MeshHandle {
     });
   }
 
+  val parameterizeMesh(const val& sourceSpec, const std::string& boundary, const std::string& weights,
+                       const std::string& solver) const {
+    return guarded([&] {
+      ParamOptions options;
+      auto b = parseBoundaryChoice(boundary);
+      if (!b) return errorObject(b.error());
+      auto w = parseWeightKind(weights);
+      if (!w) return errorObject(w.error());
+      if (solver != "lu" && solver != "bicgstab")
+        return errorObject("invalid_argument", "unknown solver '" + solver + "' (use lu or bicgstab)");
+      options.boundary = b.value();
+      options.weights = w.value();
+      options.solver = solver == "lu" ? LinearSolver::SparseLU : LinearSolver::BiCGSTAB;
+      const auto spec = emscripten::convertJSArrayToNumberVector<double>(sourceSpec);
+      if (spec.at(0) >= 0) {
+        auto source = pointFrom(*mesh_, spec.data());
+        if (!source) return errorObject(source.error());
+        options.autoSource = false;
+        options.source = source.value();
+      }
+      auto result = parameterize(*mesh_, options);
+      if (!result) return errorObject(result.error());
+      const Parameterization& p = result.value();
+      const StretchMetrics& m = p.metrics;
+      auto flat = [](const std::vector<Vec2>& v) {
+        std::vector<float> out(2 * v.size());
+        for (size_t i = 0; i < v.size(); ++i) {
+          out[2 * i] = static_cast<float>(v[i][0]);
+          out[2 * i + 1] = static_cast<float>(v[i][1]);
+        }
+        return out;
+      };
+      const std::vector<float> uv = flat(p.uv), polygon = flat(p.boundaryPolygon);
+      val o = val::object();
+      o.set("source", pointToJs(p.source));
+      o.set("boundary", std::string(boundaryKindName(p.boundary)));
+      o.set("weights", std::string(weightKindName(p.weights)));
+      o.set("uv", copyToJs("Float32Array", uv.data(), uv.size()));
+      o.set("faceStretch", copyToJs("Float32Array", m.faceStretch.data(), m.faceStretch.size()));
+      o.set("boundaryPolygon", copyToJs("Float32Array", polygon.data(), polygon.size()));
+      o.set("boundaryLoop", copyToJs("Int32Array", p.boundaryLoop.data(), p.boundaryLoop.size()));
+      val stretch = val::object();
+      stretch.set("l2", m.l2);
+      stretch.set("linf", m.linf);
+      o.set("stretch", stretch);
+      o.set("bijective", m.bijective);
+      o.set("flipped", static_cast<double>(m.flipped));
+      o.set("degenerate", static_cast<double>(m.degenerate));
+      o.set("fallbacks", static_cast<double>(p.fallbacks));
+      o.set("weightFallbacks", static_cast<double>(p.weightFallbacks));
+      val angle = val::object();
+      angle.set("mean", m.angleDistortionMean);
+      angle.set("max", m.angleDistortionMax);
+      o.set("angleDistortion", angle);
+      val area = val::object();
+      area.set("mean", m.areaDistortionMean);
+      area.set("max", m.areaDistortionMax);
+      o.set("areaDistortion", area);
+      o.set("residual", p.residual);
+      val candidates = val::array();
+      for (const BoundaryCandidate& c : p.candidates) {
+        val cand = val::object();
+        cand.set("boundary", std::string(boundaryKindName(c.kind)));
+        cand.set("l2", c.l2);
+        cand.set("linf", c.linf);
+        cand.set("flipped", static_cast<double>(c.flipped));
+        cand.set("degenerate", static_cast<double>(c.degenerate));
+        candidates.call<void>("push", cand);
+      }
+      o.set("candidates", candidates);
+      const ParamTimings& t = p.timingsMs;
+      val timings = val::object();
+      timings.set("source", t.source);
+      timings.set("trace", t.trace);
+      timings.set("boundary", t.boundary);
+      timings.set("weights", t.weights);
+      timings.set("solve", t.solve);
+      timings.set("metrics", t.metrics);
+      timings.set("total", t.total);
+      o.set("timings", timings);
+      return o;
+    });
+  }
+
+  /// OBJ text of the mesh; with uv (2 floats per vertex) also vt lines and v/vt faces.
+  val toObj(const val& uv) const {
+    return guarded([&] {
+      val o = val::object();
+      if (uv.isUndefined() || uv.isNull()) {
+        o.set("text", writeObj(*mesh_));
+        return o;
+      }
+      const auto flat = emscripten::convertJSArrayToNumberVector<double>(uv);
+      if (flat.size() != 2 * static_cast<size_t>(mesh_->numVertices()))
+        return errorObject("invalid_argument", "uv has " + std::to_string(flat.size()) + " numbers, expected 2 per vertex (" +
+                                                   std::to_string(2 * mesh_->numVertices()) + ")");
+      std::vector<Vec2> coords(mesh_->numVertices());
+      for (size_t i = 0; i < coords.size(); ++i) coords[i] = {flat[2 * i], flat[2 * i + 1]};
+      o.set("text", writeObj(*mesh_, &coords));
+      return o;
+    });
+  }
+
   /// Views into WASM memory; the JS wrapper copies them at once (.slice()).
   val positionsView() const {
     return val(emscripten::typed_memory_view(3 * mesh_->positions().size(),
@@ -293,6 +397,8 @@ EMSCRIPTEN_BINDINGS(straightest) {
       .function("basePlane", &MeshHandle::basePlaneAt)
       .function("straightestPaths", &MeshHandle::straightestPaths)
       .function("geodesicDistances", &MeshHandle::geodesicDistances)
+      .function("parameterize", &MeshHandle::parameterizeMesh)
+      .function("toObj", &MeshHandle::toObj)
       .function("positionsView", &MeshHandle::positionsView)
       .function("indicesView", &MeshHandle::indicesView);
   emscripten::function("loadMeshBytes", &loadMeshBytes);

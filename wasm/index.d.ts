@@ -80,6 +80,45 @@ export interface StraightestPathsOptions {
   points?: boolean;
 }
 
+export type BoundaryKind = 'measured' | 'circle' | 'square';
+export type WeightKind = 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform';
+
+export interface ParameterizeOptions {
+  /** Center of the measured boundary (default 'auto'); must be interior. */
+  source?: SurfacePoint | 'auto';
+  /** Default 'measured'; 'auto' tries all three and keeps the lowest L2 stretch. */
+  boundary?: BoundaryKind | 'auto';
+  weights?: WeightKind;
+  solver?: 'lu' | 'bicgstab';
+}
+
+export interface Parameterization {
+  source: SurfacePoint;
+  boundary: BoundaryKind;
+  weights: WeightKind;
+  /** u, v per vertex in [0, 1]² (aspect ratio kept). */
+  uv: Float32Array;
+  /** L2 texture stretch per face (Infinity for flipped or degenerate faces). */
+  faceStretch: Float32Array;
+  /** The boundary polygon (u, v per boundary vertex) in the uv frame, and its vertices. */
+  boundaryPolygon: Float32Array;
+  boundaryLoop: Int32Array;
+  /** Sander et al.'s stretch, 1 for an isometry; Infinity when the map is not bijective. */
+  stretch: { l2: number; linf: number };
+  bijective: boolean;
+  flipped: number;
+  degenerate: number;
+  /** Measured boundary: traces that failed and used the edge-graph distance instead. */
+  fallbacks: number;
+  weightFallbacks: number;
+  angleDistortion: { mean: number; max: number };
+  areaDistortion: { mean: number; max: number };
+  /** Relative residual of the linear solve. */
+  residual: number;
+  candidates: { boundary: BoundaryKind; l2: number; linf: number; flipped: number; degenerate: number }[];
+  timings: { source: number; trace: number; boundary: number; weights: number; solve: number; metrics: number; total: number };
+}
+
 export class Mesh {
   info(): MeshInfo;
   /** The interior vertex farthest from the boundary ("center of the mesh"). */
@@ -88,6 +127,9 @@ export class Mesh {
   straightestPaths(options?: StraightestPathsOptions): StraightestPaths;
   /** Distances from the source to every vertex; 'heat' factors once per mesh and reuses it. */
   geodesicDistances(source?: SurfacePoint | 'auto', method?: 'heat' | 'dijkstra'): Float64Array;
+  parameterize(options?: ParameterizeOptions): Parameterization;
+  /** OBJ text in the input's vertex order; with uv also `vt` lines (faces as v/vt). */
+  toOBJ(uv?: ArrayLike<number>): string;
   /** x, y, z per vertex (a copy). */
   positions(): Float64Array;
   /** 3 vertex indices per triangle (a copy). */

@@ -117,6 +117,18 @@ export class Mesh {
     return unwrap(this.#live().geodesicDistances(pointSpec(source, 'source', true), String(method))).distances;
   }
 
+  /**
+   * Flattens a disk: boundary 'measured' (default), 'circle', 'square' or 'auto' (least L2 stretch of
+   * the three); weights 'shape-preserving' (default), 'mean-value', 'cotan' or 'uniform'.
+   * Returns uv (2 floats per vertex, in [0, 1]²), per-face stretch and the metrics.
+   */
+  parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'lu' } = {}) {
+    return unwrap(this.#live().parameterize(pointSpec(source, 'source', true), String(boundary), String(weights), String(solver)));
+  }
+
+  /** The mesh as OBJ text (input vertex order); with uv (2 per vertex) also `vt` lines. */
+  toOBJ(uv) { return unwrap(this.#live().toObj(uv ?? null)).text; }
+
   get deleted() { return !this.#handle; }
 
   /** Frees the WASM memory of this mesh. Idempotent. */

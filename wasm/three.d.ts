@@ -5,3 +5,5 @@ import type { Mesh, Straightest } from './index.js';
 export function meshFromBufferGeometry(st: Straightest, geometry: BufferGeometry): Mesh;
 /** A BufferGeometry (Float32 positions, Uint32 index) of a straightest Mesh. */
 export function toBufferGeometry(mesh: Mesh): BufferGeometry;
+/** Sets geometry's 'uv' attribute from straightest's uv (2 floats per vertex); returns the geometry. */
+export function applyUV(geometry: BufferGeometry, uv: ArrayLike<number>): BufferGeometry;

@@ -23,3 +23,13 @@ export function toBufferGeometry(mesh) {
   geometry.setIndex(new BufferAttribute(mesh.indices(), 1));
   return geometry;
 }
+
+/** Sets a geometry's 'uv' attribute from straightest's per-vertex uv (2 floats per vertex). */
+export function applyUV(geometry, uv) {
+  const count = geometry.getAttribute('position')?.count;
+  if (count !== undefined && uv.length !== 2 * count) {
+    throw new RangeError(`applyUV: ${uv.length} numbers for ${count} vertices (expected ${2 * count})`);
+  }
+  geometry.setAttribute('uv', new BufferAttribute(uv instanceof Float32Array ? uv : new Float32Array(uv), 2));
+  return geometry;
+}

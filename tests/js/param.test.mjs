@@ -1,0 +1,70 @@
+// Parameterization through the npm API, and the three.js helper.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { BufferGeometry } from 'three';
+import { createStraightest } from '../../wasm/index.js';
+import { applyUV, toBufferGeometry } from '../../wasm/three.js';
+
+const st = await createStraightest();
+
+test('parameterize returns uv in [0, 1]², per-face stretch and finite metrics for a sample', () => {
+  const mesh = st.sample('mountain');
+  const p = mesh.parameterize();
+  assert.equal(p.boundary, 'measured');
+  assert.equal(p.weights, 'shape-preserving');
+  assert.ok(p.uv instanceof Float32Array);
+  assert.equal(p.uv.length, 2 * 2500);
+  assert.ok(p.uv.every((x) => x >= -1e-6 && x <= 1 + 1e-6));
+  assert.equal(p.faceStretch.length, mesh.info().faces);
+  assert.equal(p.bijective, true);
+  assert.equal(p.flipped, 0);
+  assert.ok(p.stretch.l2 >= 1 && Number.isFinite(p.stretch.l2));
+  assert.ok(p.stretch.linf >= p.stretch.l2);
+  assert.equal(p.boundaryPolygon.length, 2 * p.boundaryLoop.length);
+  assert.ok(p.residual < 1e-9);
+  assert.ok(p.timings.total > 0);
+  mesh.delete();
+});
+
+test('auto reports every candidate and keeps the least stretched', () => {
+  const mesh = st.sample('face');
+  const p = mesh.parameterize({ boundary: 'auto', weights: 'mean-value' });
+  assert.equal(p.candidates.length, 3);
+  for (const c of p.candidates) assert.ok(p.stretch.l2 <= c.l2);
+  mesh.delete();
+});
+
+test('refusals are Errors with messages', () => {
+  const closed = st.loadMesh('OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n');
+  assert.throws(() => closed.parameterize(), (e) => e instanceof Error && e.category === 'topology' && /disk/.test(e.message));
+  closed.delete();
+  const mesh = st.sample('cap');
+  assert.throws(() => mesh.parameterize({ boundary: 'ellipse' }), /unknown boundary 'ellipse'/);
+  assert.throws(() => mesh.parameterize({ weights: 'magic' }), /unknown weights/);
+  const boundaryVertex = mesh.straightestPaths({ points: false }).targets[0].vertex;
+  assert.throws(() => mesh.parameterize({ source: boundaryVertex }), /on the boundary/);
+  mesh.delete();
+});
+
+test('toOBJ writes vt lines that round-trip through loadMesh', () => {
+  const mesh = st.sample('saddle');
+  const p = mesh.parameterize({ boundary: 'circle' });
+  const text = mesh.toOBJ(p.uv);
+  assert.match(text, /\nvt /);
+  const again = st.loadMesh(text, 'obj');
+  assert.equal(again.info().vertices, mesh.info().vertices);
+  assert.throws(() => mesh.toOBJ(new Float32Array(3)), /expected 2 per vertex/);
+  again.delete();
+  mesh.delete();
+});
+
+test('straightest/three applyUV sets the uv attribute of a geometry', () => {
+  const mesh = st.sample('cap');
+  const geometry = toBufferGeometry(mesh);
+  assert.ok(geometry instanceof BufferGeometry);
+  const p = mesh.parameterize();
+  applyUV(geometry, p.uv);
+  assert.equal(geometry.getAttribute('uv').count, mesh.info().vertices);
+  assert.throws(() => applyUV(geometry, new Float32Array(4)), RangeError);
+  mesh.delete();
+});
