@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the system packages straightest needs (Debian 12), only those that are missing.
 # Idempotent: when everything is present it only checks and returns in about a second.
+# Extra package names given as arguments are installed too (e.g. `setup.sh libcgal-demo` for CGAL's
+# sample meshes, used by `npm run results`).
 set -euo pipefail
 
-packages=(cmake g++ make emscripten libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev googletest chromium nodejs)
+packages=(cmake g++ make emscripten libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev googletest chromium nodejs "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# npm run results: installs CGAL's sample data (libcgal-demo) if missing, builds the native CLI and
+# regenerates docs/RESULTS.md.
+source "$(dirname "$0")/common.sh"
+bash scripts/setup.sh libcgal-demo
+bash scripts/build.sh native >/dev/null
+node scripts/results.mjs
