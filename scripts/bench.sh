@@ -8,3 +8,8 @@ echo "## Straightest paths: all boundary vertices from the default source (heigh
 echo
 build/native/bench_paths native "${REPEATS:-5}"
 node --no-experimental-fetch build/wasm/bench_paths.js wasm "${REPEATS:-5}" | tail -n +3
+echo
+echo "## Measured-boundary parameterization (shape-preserving), per stage and solver"
+echo
+build/native/bench_param native "${MAX_N:-1000}"
+node --no-experimental-fetch build/wasm/bench_param.js wasm "${MAX_N:-1000}" | tail -n +3

@@ -2,6 +2,7 @@
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <chrono>
