@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
 # Builds the native library, CLI and tests (build/native) and/or the WASM module and tests
-# (build/wasm), then copies the module into the npm package (wasm/dist). Usage: build.sh native|wasm|all
+# (build/wasm), then copies the module into the npm package (wasm/dist); `sanitize` builds the native
+# tests with ASan + UBSan (build/sanitize). Usage: build.sh native|wasm|sanitize|all
 source "$(dirname "$0")/common.sh"
 target="${1:-all}"
 if [ "$target" = native ] || [ "$target" = all ]; then
   cmake --preset native >/dev/null
   cmake --build --preset native
+fi
+if [ "$target" = sanitize ]; then
+  cmake --preset sanitize >/dev/null
+  cmake --build --preset sanitize --target core_tests straightest
 fi
 if [ "$target" = wasm ] || [ "$target" = all ]; then
   cmake --preset wasm >/dev/null

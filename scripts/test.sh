@@ -2,11 +2,12 @@
 # npm test: installs what is missing, then runs every layer and prints each layer's totals:
 #   native   — native build + ctest (GoogleTest suite + CLI contract)
 #   wasm     — WASM build + ctest running the same GoogleTest sources under Node
+#   sanitize — the native suite again under AddressSanitizer + UndefinedBehaviorSanitizer
 #   js       — node --test on the npm API (tests/js), including installing the packed package
 #   browser  — the page in headless Chromium (tests/e2e)
 # Exits non-zero if any layer fails. Set LAYERS="native wasm" to run a subset.
 source "$(dirname "$0")/common.sh"
-LAYERS="${LAYERS:-native wasm js browser}"
+LAYERS="${LAYERS:-native wasm sanitize js browser}"
 LOG_DIR="$ROOT/build/test-logs"
 mkdir -p "$LOG_DIR"
 
@@ -47,7 +48,7 @@ run_layer() {  # name command... ; output to console and log; sets LAST_RC
 for layer in $LAYERS; do
   t=$(now_ms)
   case "$layer" in
-    native|wasm)
+    native|wasm|sanitize)
       run_layer "$layer-build" bash scripts/build.sh "$layer"
       if [ "$LAST_RC" -ne 0 ]; then record "$layer" 0 1 "$(elapsed "$t")"; continue; fi
       echo "$layer build: $(elapsed "$t") s"

@@ -2,15 +2,33 @@
 // (worker.js), which owns the straightest WASM module; this file only turns its arrays into
 // three.js buffers.
 //
-// Test hooks: document.body.dataset.state is 'loading' | 'ready' | 'error', and window.__straightest
-// holds { state, samples, lastInfo, lastError, renders, background }.
+// After a mesh loads, the page asks the worker for the straightest paths from the default source to
+// every boundary vertex and draws them (the paper's Figure 1 view); clicking the mesh moves the
+// source, shift-clicking adds a destination. The page computes no distances or paths itself: it
+// only draws the worker's arrays, picks points on the mesh and orchestrates the requests.
+//
+// Test hooks: document.body.dataset.state is 'loading' | 'ready' | 'error' ('ready' once the mesh
+// and its paths are drawn), and window.__straightest holds { state, samples, lastInfo, lastError,
+// renders, background, traces, paths: { count, reached, source, traceMs } }.
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
+import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
+import { Line2 } from 'three/addons/lines/Line2.js';
+import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
+import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 
 const BACKGROUND = 0x14171c;
 const MESH_COLOR = 0xd9b982;
 const WIRE_COLOR = 0x1d2430;
+const PATH_COLOR = 0x1f4fb8; // reached paths
+const FAILED_COLOR = 0xe5484d; // partial paths of failed traces (dashed)
+const HIGHLIGHT_COLOR = 0x19d3f0; // the hovered path and its cutting plane
+const FAILED_HIGHLIGHT_COLOR = 0xff9a8f; // the hovered path when its trace failed
+const SOURCE_COLOR = 0xffffff;
+const ADDED_COLOR = 0xc15cff; // destinations added with shift+click
+const BASE_PLANE_COLOR = 0x9cc2ff;
 
 const $ = (id) => document.getElementById(id);
 
@@ -21,6 +39,8 @@ const hooks = {
   lastError: null,
   renders: 0,
   background: [(BACKGROUND >> 16) & 255, (BACKGROUND >> 8) & 255, BACKGROUND & 255],
+  traces: 0, // completed path traces
+  paths: null, // { count, reached, source, traceMs } of the paths on display
 };
 window.__straightest = hooks;
 
@@ -100,9 +120,9 @@ const surfaceMaterial = new THREE.MeshStandardMaterial({
   roughness: 0.75,
   metalness: 0.0,
   side: THREE.DoubleSide,
-  polygonOffset: true, // keeps the wireframe overlay on top of the faces
-  polygonOffsetFactor: 1,
-  polygonOffsetUnits: 1,
+  polygonOffset: true, // keeps the wireframe overlay and the paths (which lie on the faces) on top
+  polygonOffsetFactor: 1.5,
+  polygonOffsetUnits: 2,
 });
 const wireMaterial = new THREE.MeshBasicMaterial({
   color: WIRE_COLOR,
@@ -113,17 +133,18 @@ const wireMaterial = new THREE.MeshBasicMaterial({
 
 let surface = null; // THREE.Mesh of the current geometry
 let wireframe = null; // overlay sharing the same geometry
+let meshGeneration = 0; // incremented per displayed mesh; replies for an older mesh are dropped
+let sceneScale = 1; // bounding-box diagonal of the current mesh: sizes markers and planes
 
-let renderScheduled = false;
+let scheduledFrame = 0; // requestAnimationFrame id of a pending render, 0 if none
 function render() {
-  renderScheduled = false;
+  cancelAnimationFrame(scheduledFrame); // rendering now makes a pending frame redundant
+  scheduledFrame = 0;
   renderer.render(scene, camera);
   hooks.renders += 1;
 }
 function requestRender() {
-  if (renderScheduled) return;
-  renderScheduled = true;
-  requestAnimationFrame(render);
+  if (!scheduledFrame) scheduledFrame = requestAnimationFrame(render);
 }
 
 function resize() {
@@ -148,10 +169,13 @@ function showMesh(positions, indices) {
   geometry.setIndex(new THREE.BufferAttribute(indices, 1));
   geometry.computeVertexNormals();
   geometry.computeBoundingSphere();
+  if (surfaceMaterial.vertexColors) resetSurfaceColor(); // the next trace recolours if asked
+  clearPaths(); // they belong to the previous mesh
   surface = new THREE.Mesh(geometry, surfaceMaterial);
   wireframe = new THREE.Mesh(geometry, wireMaterial);
   wireframe.visible = $('wireframe-toggle').checked;
   scene.add(surface, wireframe);
+  meshGeneration += 1;
 }
 
 /** Points the camera at the bounding box, from the front-right and above, so it fills the view. */
@@ -162,6 +186,7 @@ function frameBox(bbox) {
   const radius = Math.max(max.distanceTo(min) / 2, 1e-6);
   const halfFov = THREE.MathUtils.degToRad(camera.fov / 2);
   const fit = Math.min(halfFov, Math.atan(Math.tan(halfFov) * camera.aspect));
+  sceneScale = 2 * radius;
   const distance = (radius / Math.sin(fit)) * 0.95;
   const direction = new THREE.Vector3(0.55, -1.0, 0.75).normalize();
   camera.position.copy(center).addScaledVector(direction, distance);
@@ -206,9 +231,9 @@ function showInfo(info, label) {
   }
 }
 
-function showError(err, what) {
+function showError(err, title) {
   hooks.lastError = { message: err.message, category: err.category ?? 'error' };
-  $('error-title').textContent = `Could not load ${what}`;
+  $('error-title').textContent = title;
   $('error-message').textContent = err.message;
   $('error-category').textContent = err.category ?? 'error';
   $('error-panel').hidden = false;
@@ -224,6 +249,7 @@ function clearError() {
 
 let latestLoad = 0; // only the most recent load may update the view
 let shownSample = ''; // the sample on display ('' for a file), restored in the select after an error
+let meshStatus = ''; // the status line of the mesh on display
 
 async function load(what, send, sample = '') {
   const ticket = ++latestLoad;
@@ -239,15 +265,17 @@ async function load(what, send, sample = '') {
     hooks.lastInfo = reply.info;
     hooks.lastError = null;
     shownSample = sample;
-    render();
-    $('status').textContent =
+    meshStatus =
       `${reply.label}: ${reply.info.vertices} vertices, ${reply.info.faces} faces ` +
       `(${reply.timeMs.toFixed(0)} ms in the worker)`;
-    setState('ready');
+    $('status').textContent = meshStatus;
+    requestRender(); // shows the mesh if tracing takes longer than a frame
+    resetPathRequest();
+    await tracePaths(); // sets the state ('ready' once the paths are drawn)
   } catch (err) {
     if (ticket !== latestLoad) return;
     $('sample-select').value = shownSample;
-    showError(err, what);
+    showError(err, `Could not load ${what}`);
   }
 }
 
@@ -273,6 +301,507 @@ async function loadFile(file) {
   });
 }
 
+// ------------------------------------------------------------------ straightest paths
+
+// What the next trace asks for: the source ('auto' = the default source) and the destinations
+// (the boundary vertices if the toggle is on, plus the points added with shift+click).
+const pathRequest = {
+  source: 'auto',
+  added: [], // [{ point: {face, bary}, position: THREE.Vector3 }]
+};
+let shown = null; // the 'paths' reply on display and the objects drawn for it (see showPaths)
+let latestTrace = 0; // only the most recent trace may update the view
+let latestHeat = 0; // likewise for the heat-distance colours
+
+const pathGroup = new THREE.Group(); // everything drawn for the current paths; rebuilt per trace
+scene.add(pathGroup);
+
+// Thin, slightly transparent lines: up to a few hundred paths meet at the source.
+const reachedMaterial = new LineMaterial({
+  color: PATH_COLOR, linewidth: 1, transparent: true, opacity: 0.75,
+});
+const failedMaterial = new LineMaterial({ color: FAILED_COLOR, linewidth: 1.8, dashed: true });
+const highlightMaterial = new LineMaterial({ color: HIGHLIGHT_COLOR, linewidth: 4.5 });
+const sourceMaterial = new THREE.MeshStandardMaterial({
+  color: SOURCE_COLOR, emissive: 0x555555, roughness: 0.4,
+});
+const addedMaterial = new THREE.MeshStandardMaterial({
+  color: ADDED_COLOR, emissive: 0x3a1050, roughness: 0.4,
+});
+const basePlaneMaterial = new THREE.MeshBasicMaterial({
+  color: BASE_PLANE_COLOR, transparent: true, opacity: 0.1, side: THREE.DoubleSide, depthWrite: false,
+});
+const basePlaneRimMaterial = new THREE.LineBasicMaterial({
+  color: BASE_PLANE_COLOR, transparent: true, opacity: 0.45, depthWrite: false,
+});
+const cutPlaneMaterial = new THREE.MeshBasicMaterial({
+  color: HIGHLIGHT_COLOR, transparent: true, opacity: 0.16, side: THREE.DoubleSide, depthWrite: false,
+});
+const cutPlaneRimMaterial = new THREE.LineBasicMaterial({
+  color: HIGHLIGHT_COLOR, transparent: true, opacity: 0.6, depthWrite: false,
+});
+const markerGeometry = new THREE.SphereGeometry(1, 24, 16); // scaled per marker
+
+/** Removes and frees everything in `group` (shared materials and the marker geometry stay). */
+function clearGroup(group) {
+  for (const child of [...group.children]) {
+    group.remove(child);
+    child.traverse((node) => {
+      if (node.geometry && node.geometry !== markerGeometry) node.geometry.dispose();
+    });
+  }
+}
+
+function marker(position, material, radius) {
+  const sphere = new THREE.Mesh(markerGeometry, material);
+  sphere.position.copy(position);
+  sphere.scale.setScalar(radius);
+  sphere.renderOrder = 2;
+  return sphere;
+}
+
+/**
+ * One LineSegments2 holding every segment of the listed paths, and for each segment the path it
+ * belongs to (to name the path under the cursor).
+ */
+function pathLines(reply, paths, material) {
+  const { points, offsets } = reply;
+  let count = 0;
+  for (const i of paths) count += Math.max(0, offsets[i + 1] - offsets[i] - 1);
+  if (count === 0) return null;
+  const segments = new Float32Array(6 * count);
+  const owner = new Uint32Array(count);
+  let s = 0;
+  for (const i of paths) {
+    for (let j = offsets[i]; j + 1 < offsets[i + 1]; j++, s++) {
+      segments.set(points.subarray(3 * j, 3 * j + 6), 6 * s);
+      owner[s] = i;
+    }
+  }
+  const geometry = new LineSegmentsGeometry().setPositions(segments);
+  const lines = new LineSegments2(geometry, material);
+  if (material.dashed) lines.computeLineDistances();
+  lines.userData.owner = owner;
+  lines.renderOrder = 1;
+  return lines;
+}
+
+/** A translucent quad at `origin` with edges along unit vectors u, v over [u0,u1]×[v0,v1], plus its rim. */
+function planeQuad(origin, u, v, [u0, u1], [v0, v1], fill, rim) {
+  const corners = [[u0, v0], [u1, v0], [u1, v1], [u0, v1]].map(([a, b]) =>
+    origin.clone().addScaledVector(u, a).addScaledVector(v, b));
+  const geometry = new THREE.BufferGeometry().setFromPoints(corners);
+  geometry.setIndex([0, 1, 2, 0, 2, 3]);
+  const group = new THREE.Group();
+  const quad = new THREE.Mesh(geometry, fill);
+  const outline = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(corners), rim);
+  quad.renderOrder = outline.renderOrder = 3;
+  group.add(quad, outline);
+  return group;
+}
+
+/** The base plane at the source: a translucent disc perpendicular to the base normal. */
+function basePlaneDisc(origin, normal) {
+  const radius = 0.42 * sceneScale;
+  const group = new THREE.Group();
+  const disc = new THREE.Mesh(new THREE.CircleGeometry(radius, 96), basePlaneMaterial);
+  const rimPoints = new THREE.EllipseCurve(0, 0, radius, radius).getPoints(96)
+    .map((p) => new THREE.Vector3(p.x, p.y, 0));
+  const rim = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(rimPoints), basePlaneRimMaterial);
+  disc.renderOrder = rim.renderOrder = 3;
+  group.add(disc, rim);
+  group.position.copy(origin);
+  group.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), normal);
+  group.visible = $('base-toggle').checked;
+  return group;
+}
+
+function clearPaths() {
+  hideTooltip();
+  clearGroup(pathGroup);
+  shown = null;
+}
+
+/** Replaces the drawn paths, markers and base plane by the worker's 'paths' reply. */
+function showPaths(reply) {
+  const source = new THREE.Vector3(...reply.sourcePosition);
+  const normal = new THREE.Vector3(...reply.normal).normalize();
+  const reached = [];
+  const failed = [];
+  reply.statuses.forEach((status, i) => (status === 'reached' ? reached : failed).push(i));
+
+  failedMaterial.dashSize = 0.012 * sceneScale;
+  failedMaterial.gapSize = 0.008 * sceneScale;
+  const lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)]
+    .filter(Boolean);
+  const basePlane = basePlaneDisc(source, normal);
+  const highlight = new Line2(new LineGeometry(), highlightMaterial);
+  highlight.visible = false;
+  highlight.renderOrder = 2;
+  const cutPlane = new THREE.Group();
+  pathGroup.add(...lines, basePlane, highlight, cutPlane, marker(source, sourceMaterial, 0.011 * sceneScale));
+  for (const { position } of pathRequest.added) {
+    pathGroup.add(marker(position, addedMaterial, 0.008 * sceneScale));
+  }
+  shown = { reply, source, normal, lines, basePlane, highlight, cutPlane, hovered: -1 };
+}
+
+/**
+ * Highlights path i (or nothing for -1) and draws its cutting plane: the plane through the source S
+ * spanned by the base normal n and the direction to the destination D, as a quad covering the path.
+ */
+function highlightPath(i) {
+  if (!shown || shown.hovered === i) return;
+  const { reply, source, normal, highlight, cutPlane } = shown;
+  shown.hovered = i;
+  clearGroup(cutPlane);
+  highlight.visible = false;
+  requestRender();
+  if (i < 0) return;
+
+  const path = reply.points.subarray(3 * reply.offsets[i], 3 * reply.offsets[i + 1]);
+  if (path.length >= 6) {
+    highlight.geometry.dispose();
+    highlight.geometry = new LineGeometry().setPositions(path);
+    highlightMaterial.color.set(reply.statuses[i] === 'reached' ? HIGHLIGHT_COLOR : FAILED_HIGHLIGHT_COLOR);
+    highlight.visible = true;
+  }
+  // D: the target's position, or the end of the path when the worker could not place it.
+  const target = reply.targetPositions.subarray(3 * i, 3 * i + 3);
+  const destination = Number.isFinite(target[0])
+    ? new THREE.Vector3(...target)
+    : new THREE.Vector3(...path.subarray(path.length - 3));
+  const along = destination.clone().sub(source);
+  along.addScaledVector(normal, -along.dot(normal)); // in-plane direction, perpendicular to n
+  if (along.length() < 1e-9 * sceneScale) return; // D − S parallel to n: no plane to draw
+  along.normalize();
+  // Extent of the quad: the path and D in the (along, n) coordinates of the plane, plus a margin.
+  const uRange = [0, 0];
+  const vRange = [0, 0];
+  const extend = (p) => {
+    const d = p.clone().sub(source);
+    const [a, b] = [d.dot(along), d.dot(normal)];
+    uRange[0] = Math.min(uRange[0], a); uRange[1] = Math.max(uRange[1], a);
+    vRange[0] = Math.min(vRange[0], b); vRange[1] = Math.max(vRange[1], b);
+  };
+  extend(destination);
+  const p = new THREE.Vector3();
+  for (let j = 0; j < path.length; j += 3) extend(p.set(path[j], path[j + 1], path[j + 2]));
+  const margin = 0.04 * sceneScale;
+  uRange[0] -= margin; uRange[1] += margin;
+  vRange[0] -= margin; vRange[1] += margin;
+  cutPlane.add(planeQuad(source, along, normal, uRange, vRange, cutPlaneMaterial, cutPlaneRimMaterial));
+}
+
+/** 'vertex 12', 'face 34 (0.20, 0.30, 0.50)' (or just 'face 34' without the coordinates), … */
+function describePoint(point, withCoordinates = true) {
+  if (typeof point === 'number') return `vertex ${point}`;
+  if (typeof point?.vertex === 'number') return `vertex ${point.vertex}`;
+  if (typeof point?.face === 'number') {
+    const bary = point.bary.map((b) => b.toFixed(2)).join(', ');
+    return withCoordinates ? `face ${point.face} (${bary})` : `face ${point.face}`;
+  }
+  if (typeof point?.halfedge === 'number') {
+    return withCoordinates ? `halfedge ${point.halfedge} (t = ${point.t.toFixed(2)})` : `halfedge ${point.halfedge}`;
+  }
+  return String(point);
+}
+
+/** Fills the stats panel from a 'paths' reply. */
+function showStats(reply) {
+  const { count, reached, statuses, lengths, facesCrossed, timings } = reply;
+  const isDefault = pathRequest.source === 'auto';
+  const source = $('stats-source');
+  source.textContent = describePoint(reply.source, false) + (isDefault ? ' (default)' : '');
+  source.title = describePoint(reply.source);
+  const useBoundary = $('boundary-toggle').checked && !closedMesh();
+  const boundaryCount = count - pathRequest.added.length;
+  const parts = [];
+  if (useBoundary) parts.push(`${boundaryCount} boundary`);
+  if (pathRequest.added.length) parts.push(`${pathRequest.added.length} added`);
+  $('stats-targets').textContent = parts.join(' + ') || 'none';
+  $('stats-paths').textContent = String(count);
+  $('stats-reached').textContent = count ? `${reached} (${((100 * reached) / count).toFixed(0)}%)` : '0';
+  $('stats-failed').textContent = String(count - reached);
+
+  const failures = new Map();
+  for (const status of statuses) if (status !== 'reached') failures.set(status, (failures.get(status) ?? 0) + 1);
+  const list = $('stats-failures');
+  list.replaceChildren(...[...failures].map(([status, n]) => {
+    const item = document.createElement('li');
+    item.innerHTML = `<code></code> <span></span>`;
+    item.firstChild.textContent = status;
+    item.lastChild.textContent = `${n}`;
+    return item;
+  }));
+  list.hidden = failures.size === 0;
+
+  let sum = 0;
+  let max = 0;
+  statuses.forEach((status, i) => {
+    if (status !== 'reached') return;
+    sum += lengths[i];
+    max = Math.max(max, lengths[i]);
+  });
+  $('stats-length').textContent = reached ? `${formatNumber(sum / reached)} / ${formatNumber(max)}` : '–';
+  const faces = facesCrossed.reduce((a, b) => a + b, 0);
+  const facesMax = facesCrossed.reduce((a, b) => Math.max(a, b), 0);
+  $('stats-faces').textContent = count ? `${faces} / ${facesMax}` : '–';
+  const time = $('stats-time');
+  time.textContent = `${timings.trace.toFixed(1)} ms`;
+  time.title = `tracing ${timings.trace.toFixed(2)} ms, setup ${timings.prepare.toFixed(2)} ms ` +
+    `(${reply.timeMs.toFixed(1)} ms in the worker in all)`;
+  $('stats-traces').textContent = String(hooks.traces);
+
+  const notes = [];
+  if (closedMesh()) {
+    notes.push('Closed mesh: no boundary, so no paths by default. Shift+click the mesh to add destinations.');
+  } else if (count === 0) {
+    notes.push('No destinations: tick “Boundary destinations” or shift+click the mesh to add some.');
+  }
+  if (reply.baseNote) notes.push(`Base plane: ${reply.baseNote}.`);
+  $('stats-note').textContent = notes.join(' ');
+  $('stats-note').hidden = notes.length === 0;
+  $('clear-targets-button').disabled = pathRequest.added.length === 0;
+}
+
+function closedMesh() {
+  return (hooks.lastInfo?.boundaryLoops ?? []).length === 0;
+}
+
+/** The 'targets' of the next 'paths' request (see the protocol in worker.js). */
+function currentTargets() {
+  const added = pathRequest.added.map(({ point }) => point);
+  if (!$('boundary-toggle').checked) return added;
+  return added.length ? ['boundary', ...added] : 'boundary';
+}
+
+/** Back to the default source and the boundary destinations. */
+function resetPathRequest() {
+  pathRequest.source = 'auto';
+  pathRequest.added = [];
+  hideTooltip();
+}
+
+/** Asks the worker for the paths of `pathRequest` and draws them; the page is 'ready' afterwards. */
+async function tracePaths() {
+  if (!surface) return;
+  const ticket = ++latestTrace;
+  const generation = meshGeneration;
+  const stale = () => ticket !== latestTrace || generation !== meshGeneration;
+  setState('loading');
+  $('status').textContent = 'Tracing straightest paths…';
+  let stage = 'trace the straightest paths';
+  try {
+    const reply = await request('paths', { source: pathRequest.source, targets: currentTargets() });
+    if (stale()) return;
+    hooks.traces += 1;
+    hooks.paths = {
+      count: reply.count,
+      reached: reply.reached,
+      source: reply.source,
+      traceMs: reply.timings.trace,
+    };
+    clearPaths();
+    showPaths(reply);
+    showStats(reply);
+    stage = 'compute the heat distances';
+    if ($('heat-toggle').checked) await showHeat();
+    if (stale()) return;
+    clearError();
+    render();
+    $('status').textContent = reply.count
+      ? `${meshStatus} · ${reply.count} paths in ${reply.timeMs.toFixed(0)} ms`
+      : meshStatus;
+    setState('ready');
+  } catch (err) {
+    if (stale()) return;
+    showError(err, `Could not ${stage}`);
+  }
+}
+
+// ------------------------------------------------------------------ heat-distance colours
+
+// A sequential colormap (light → dark) with darker bands every 1/12 of the range, so the level
+// sets of the distance show; the paths (blue) stay readable on top.
+const HEAT_STOPS = [0xfff1c7, 0xf6c37a, 0xe98b57, 0xc9574f, 0x8f3558, 0x4f2456].map((c) => new THREE.Color(c));
+const HEAT_BANDS = 12;
+const UNREACHABLE_COLOR = new THREE.Color(0x555a63);
+
+function heatColor(t, target) {
+  const x = Math.min(Math.max(t, 0), 1) * (HEAT_STOPS.length - 1);
+  const k = Math.min(Math.floor(x), HEAT_STOPS.length - 2);
+  target.lerpColors(HEAT_STOPS[k], HEAT_STOPS[k + 1], x - k);
+  const band = (t * HEAT_BANDS) % 1;
+  if (band < 0.12) target.multiplyScalar(0.82); // a thin darker stripe at each band start
+  return target;
+}
+
+/** Colours the surface by heat-method distance from the shown source (computed by the worker). */
+async function showHeat() {
+  if (!surface || !shown) return;
+  const ticket = ++latestHeat;
+  const generation = meshGeneration;
+  const reply = await request('distances', { source: shown.reply.source });
+  if (ticket !== latestHeat || generation !== meshGeneration || !$('heat-toggle').checked) return;
+  const { distances, max } = reply;
+  const colors = new Float32Array(3 * distances.length);
+  const color = new THREE.Color();
+  distances.forEach((d, v) => {
+    (Number.isFinite(d) ? heatColor(max > 0 ? d / max : 0, color) : UNREACHABLE_COLOR)
+      .toArray(colors, 3 * v);
+  });
+  surface.geometry.setAttribute('color', new THREE.BufferAttribute(colors, 3));
+  surfaceMaterial.vertexColors = true;
+  surfaceMaterial.color.set(0xffffff);
+  surfaceMaterial.needsUpdate = true;
+  $('heat-max').textContent = formatNumber(max);
+  $('heat-legend').hidden = false;
+  requestRender();
+}
+
+/** Back to the plain mesh colour (the distances of the current mesh are dropped). */
+function resetSurfaceColor() {
+  latestHeat += 1;
+  surface?.geometry.deleteAttribute('color');
+  surfaceMaterial.vertexColors = false;
+  surfaceMaterial.color.set(MESH_COLOR);
+  surfaceMaterial.needsUpdate = true;
+  $('heat-legend').hidden = true;
+  requestRender();
+}
+
+// ------------------------------------------------------------------ picking and hovering
+
+const raycaster = new THREE.Raycaster();
+raycaster.params.Line2 = { threshold: 6 }; // pixels around a path that count as "on" it
+const pointer = new THREE.Vector2();
+
+/** Sets the raycaster from a pointer event on the canvas. */
+function aimAt(event) {
+  const rect = canvas.getBoundingClientRect();
+  pointer.set(
+    ((event.clientX - rect.left) / rect.width) * 2 - 1,
+    -((event.clientY - rect.top) / rect.height) * 2 + 1,
+  );
+  raycaster.setFromCamera(pointer, camera);
+  raycaster.camera = camera;
+}
+
+/** The surface under the pointer as { hit, point: {face, bary} }, or null. */
+function pickSurface() {
+  if (!surface) return null;
+  const [hit] = raycaster.intersectObject(surface, false);
+  if (!hit || hit.faceIndex == null) return null;
+  const { index, attributes } = surface.geometry;
+  const corner = (k) => new THREE.Vector3().fromBufferAttribute(attributes.position, index.getX(3 * hit.faceIndex + k));
+  const bary = THREE.Triangle.getBarycoord(hit.point, corner(0), corner(1), corner(2), new THREE.Vector3());
+  if (!bary) return null; // a degenerate triangle
+  // Clamp the rounding noise so the point is inside the face, then renormalize.
+  const b = bary.toArray().map((x) => Math.max(x, 0));
+  const total = b[0] + b[1] + b[2];
+  return { hit, point: { face: hit.faceIndex, bary: b.map((x) => x / total) } };
+}
+
+/** The path under the pointer (not hidden behind the surface), or -1. */
+function pickPath() {
+  if (!shown || shown.lines.length === 0) return -1;
+  const surfaceHit = surface ? raycaster.intersectObject(surface, false)[0] : null;
+  const limit = surfaceHit ? surfaceHit.distance + 0.01 * sceneScale : Infinity;
+  let best = -1;
+  let bestAngle = Infinity;
+  for (const hit of raycaster.intersectObjects(shown.lines, false)) {
+    const depth = raycaster.ray.origin.distanceTo(hit.pointOnLine);
+    if (depth > limit) continue;
+    const angle = raycaster.ray.distanceToPoint(hit.pointOnLine) / depth; // off the ray, as seen
+    if (angle < bestAngle) {
+      bestAngle = angle;
+      best = hit.object.userData.owner[hit.faceIndex];
+    }
+  }
+  return best;
+}
+
+const tooltip = $('path-tooltip');
+
+function showTooltip(i, event) {
+  const { reply } = shown;
+  const status = reply.statuses[i];
+  tooltip.replaceChildren();
+  const title = document.createElement('strong');
+  title.textContent = `Path ${i + 1} of ${reply.count} → ${describePoint(reply.targets[i])}`;
+  const state = document.createElement('span');
+  state.className = status === 'reached' ? 'reached' : 'failed';
+  state.textContent = status === 'reached' ? 'reached' : `${status} (partial path)`;
+  const details = document.createElement('span');
+  details.textContent =
+    `length ${formatNumber(reply.lengths[i])} · ${reply.facesCrossed[i]} faces crossed`;
+  tooltip.append(title, state, details);
+  const rect = viewport.getBoundingClientRect();
+  const x = event.clientX - rect.left;
+  const y = event.clientY - rect.top;
+  tooltip.hidden = false;
+  // Keep the tooltip inside the view: flip to the left/top near the right/bottom edge.
+  const left = x + 14 + tooltip.offsetWidth > rect.width ? x - 14 - tooltip.offsetWidth : x + 14;
+  const top = y + 14 + tooltip.offsetHeight > rect.height ? y - 14 - tooltip.offsetHeight : y + 14;
+  tooltip.style.left = `${Math.max(0, left)}px`;
+  tooltip.style.top = `${Math.max(0, top)}px`;
+}
+
+function hideTooltip() {
+  tooltip.hidden = true;
+  canvas.classList.remove('over-path');
+  if (shown) highlightPath(-1);
+}
+
+let hoverEvent = null; // the latest pointer move, handled once per frame
+canvas.addEventListener('pointermove', (event) => {
+  if (event.buttons !== 0) return; // orbiting
+  if (!hoverEvent) requestAnimationFrame(handleHover);
+  hoverEvent = event;
+});
+canvas.addEventListener('pointerleave', () => {
+  hoverEvent = null;
+  hideTooltip();
+});
+
+function handleHover() {
+  const event = hoverEvent;
+  hoverEvent = null;
+  if (!event || !shown) return;
+  aimAt(event);
+  const i = pickPath();
+  if (i < 0) {
+    hideTooltip();
+    return;
+  }
+  highlightPath(i);
+  showTooltip(i, event);
+  canvas.classList.add('over-path');
+}
+
+// A click (press and release without dragging) on the mesh moves the source; shift+click adds a
+// destination. Drags belong to the orbit controls.
+let pressed = null;
+canvas.addEventListener('pointerdown', (event) => {
+  pressed = event.button === 0 ? { x: event.clientX, y: event.clientY } : null;
+});
+canvas.addEventListener('pointerup', (event) => {
+  if (!pressed || event.button !== 0) return;
+  const moved = Math.hypot(event.clientX - pressed.x, event.clientY - pressed.y);
+  pressed = null;
+  if (moved > 4) return;
+  aimAt(event);
+  const picked = pickSurface();
+  if (!picked) return;
+  if (event.shiftKey) {
+    pathRequest.added.push({ point: picked.point, position: picked.hit.point.clone() });
+  } else {
+    pathRequest.source = picked.point;
+  }
+  tracePaths();
+});
+
 // ------------------------------------------------------------------ UI wiring
 
 $('sample-select').addEventListener('change', (event) => {
@@ -294,6 +823,32 @@ $('flat-toggle').addEventListener('change', (event) => {
   surfaceMaterial.flatShading = event.target.checked;
   surfaceMaterial.needsUpdate = true;
   requestRender();
+});
+
+$('boundary-toggle').addEventListener('change', () => tracePaths());
+
+$('base-toggle').addEventListener('change', (event) => {
+  if (shown) shown.basePlane.visible = event.target.checked;
+  requestRender();
+});
+
+$('heat-toggle').addEventListener('change', (event) => {
+  if (event.target.checked) {
+    showHeat().catch((err) => showError(err, 'Could not compute the heat distances'));
+  } else {
+    resetSurfaceColor();
+  }
+});
+
+$('reset-button').addEventListener('click', () => {
+  resetPathRequest();
+  $('boundary-toggle').checked = true;
+  tracePaths();
+});
+
+$('clear-targets-button').addEventListener('click', () => {
+  pathRequest.added = [];
+  tracePaths();
 });
 
 const overlay = $('drop-overlay');
@@ -325,7 +880,7 @@ async function start() {
     select.disabled = false;
     await loadSample(select.value);
   } catch (err) {
-    showError(err, 'the straightest module');
+    showError(err, 'Could not load the straightest module');
   }
 }
 

@@ -10,12 +10,26 @@
 //   → { id, type: 'file', name, format, bytes: ArrayBuffer } ← { id, type: 'mesh', ... }
 //        'mesh' replies: { id, type: 'mesh', label, positions: Float32Array, indices: Uint32Array,
 //                          info, timeMs }  (buffers transferred)
+//   → { id, type: 'paths', source, targets }                 ← { id, type: 'paths', ... } (below)
+//        source: a SurfacePoint or 'auto' (the default source);
+//        targets: 'boundary' | Array<SurfacePoint | 'boundary'> — a 'boundary' entry stands for every
+//        vertex of the longest boundary loop (nothing on a closed mesh), so the page can combine the
+//        boundary with points the user picked.
+//        'paths' replies: { source, sourcePosition: [x,y,z], normal, baseFallback, baseNote,
+//                           targets, targetPositions: Float32Array (xyz per target, NaN if unknown),
+//                           count, reached, statuses, lengths: Float64Array,
+//                           facesCrossed: Uint32Array, points: Float32Array, offsets: Uint32Array,
+//                           timings: { prepare, trace }, timeMs }  (buffers transferred)
+//   → { id, type: 'distances', source }                      ← { id, type: 'distances', source,
+//        distances: Float32Array (heat method, one per vertex), max, timeMs }
 //   any failure                                              ← { id, type: 'error', message, category }
-// Later operations on the current mesh (straightest paths, parameterization) are new `type`s in
-// `handlers` below.
+// Later operations on the current mesh (parameterization) are new `type`s in `handlers` below.
 
 let modulePromise = null; // resolves to the object returned by createStraightest()
 let currentMesh = null; // the mesh later operations will work on; deleted when replaced
+// Per-mesh data the handlers reuse: vertex positions and triangles (to place the targets the
+// reply lists), whether the mesh has a boundary, and the boundary targets once known.
+let currentData = null; // { positions: Float64Array, indices: Uint32Array, closed, boundary }
 
 function straightest() {
   if (!modulePromise) throw new Error('the geometry worker was not initialized');
@@ -42,6 +56,12 @@ function meshReply(mesh, label, startTime) {
   }
   currentMesh?.delete();
   currentMesh = mesh;
+  currentData = {
+    positions: mesh.positions(),
+    indices: indices.slice(), // `indices` itself is transferred to the page
+    closed: (info.boundaryLoops ?? []).length === 0,
+    boundary: null,
+  };
   const reply = {
     type: 'mesh',
     label,
@@ -51,6 +71,55 @@ function meshReply(mesh, label, startTime) {
     timeMs: performance.now() - startTime,
   };
   return { reply, transfer: [positions.buffer, indices.buffer] };
+}
+
+function requireMesh() {
+  if (!currentMesh) throw new Error('no mesh is loaded');
+  return currentMesh;
+}
+
+/** A typed array that owns its whole buffer, so transferring it detaches nothing else. */
+function owned(array) {
+  return array.byteOffset === 0 && array.byteLength === array.buffer.byteLength ? array : array.slice();
+}
+
+/** The vertices of the longest boundary loop as targets (computed once per mesh). */
+function boundaryTargets(mesh, source) {
+  if (currentData.closed) return [];
+  currentData.boundary ??= mesh.straightestPaths({ source, targets: 'boundary', points: false }).targets;
+  return currentData.boundary;
+}
+
+/** Expands the request's targets into what straightestPaths takes. */
+function resolveTargets(mesh, source, targets) {
+  if (targets === 'boundary') return currentData.closed ? [] : 'boundary';
+  if (!Array.isArray(targets)) throw new Error("targets must be 'boundary' or an array");
+  if (targets.length === 1 && targets[0] === 'boundary') return resolveTargets(mesh, source, 'boundary');
+  return targets.flatMap((t) => (t === 'boundary' ? boundaryTargets(mesh, source) : [t]));
+}
+
+/**
+ * Where a target sits in space, for drawing its cutting plane: a vertex's position or the
+ * barycentric combination of a face's corners (NaN for an edge point, which the page never sends).
+ */
+function targetPositions(targets) {
+  const { positions, indices } = currentData;
+  const out = new Float32Array(3 * targets.length).fill(NaN);
+  const vertex = (v, k) => positions[3 * v + k];
+  targets.forEach((t, i) => {
+    const v = typeof t === 'number' ? t : t.vertex;
+    for (let k = 0; k < 3; k++) {
+      if (typeof v === 'number') {
+        out[3 * i + k] = vertex(v, k);
+      } else if (typeof t.face === 'number') {
+        const [a, b, c] = t.bary;
+        const f = 3 * t.face;
+        out[3 * i + k] =
+          a * vertex(indices[f], k) + b * vertex(indices[f + 1], k) + c * vertex(indices[f + 2], k);
+      }
+    }
+  });
+  return out;
 }
 
 const handlers = {
@@ -71,6 +140,46 @@ const handlers = {
     const start = performance.now();
     const mesh = st.loadMesh(new Uint8Array(bytes), format ?? formatFromName(name));
     return meshReply(mesh, name, start);
+  },
+
+  async paths({ source = 'auto', targets = 'boundary' }) {
+    const mesh = requireMesh();
+    const start = performance.now();
+    const resolved = resolveTargets(mesh, source, targets);
+    const result = mesh.straightestPaths({ source, targets: resolved });
+    if (resolved === 'boundary') currentData.boundary ??= result.targets;
+    const plane = mesh.basePlane(result.source);
+    const reply = {
+      type: 'paths',
+      source: result.source,
+      sourcePosition: plane.origin,
+      normal: result.normal,
+      baseFallback: result.baseFallback,
+      baseNote: result.baseNote,
+      targets: result.targets,
+      targetPositions: targetPositions(result.targets),
+      count: result.count,
+      reached: result.reached,
+      statuses: result.statuses,
+      lengths: owned(result.lengths),
+      facesCrossed: owned(result.facesCrossed),
+      points: owned(result.points),
+      offsets: owned(result.offsets),
+      timings: result.timings,
+      timeMs: performance.now() - start,
+    };
+    const transfer = [reply.targetPositions, reply.lengths, reply.facesCrossed, reply.points, reply.offsets];
+    return { reply, transfer: transfer.map((a) => a.buffer) };
+  },
+
+  async distances({ source = 'auto' }) {
+    const mesh = requireMesh();
+    const start = performance.now();
+    const distances = Float32Array.from(mesh.geodesicDistances(source, 'heat'));
+    let max = 0;
+    for (const d of distances) if (Number.isFinite(d) && d > max) max = d;
+    const reply = { type: 'distances', source, distances, max, timeMs: performance.now() - start };
+    return { reply, transfer: [distances.buffer] };
   },
 };
 

@@ -306,6 +306,124 @@ test('dropping an OFF file onto the view loads it (closed tetrahedron: χ = 2, n
   }
 });
 
+test('mountain shows straightest paths from the default source to its 196 boundary vertices', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.paths');
+    const paths = await page.evaluate(() => window.__straightest.paths);
+    assert(paths.count === 196, `window.__straightest.paths.count is ${paths.count}, expected 196`);
+    assert(typeof paths.source?.vertex === 'number', `default source is ${JSON.stringify(paths.source)}, expected a vertex`);
+    assert(paths.traceMs >= 0, `traceMs is ${paths.traceMs}`);
+    const shown = (await page.textContent('#stats-paths')).trim();
+    assert(shown === '196', `stats panel shows '${shown}' paths, expected 196`);
+    const reachedText = (await page.textContent('#stats-reached')).trim();
+    const reached = Number(/^\d+/.exec(reachedText)?.[0]);
+    assert(reached === paths.reached && reached > 0 && reached <= 196,
+      `stats panel shows '${reachedText}' reached (hook says ${paths.reached})`);
+    assert((await page.textContent('#stats-source')).includes(`vertex ${paths.source.vertex}`),
+      'stats panel does not name the default source');
+    // The paths are drawn: some pixels have the (blue) path colour, which the mesh never has.
+    await page.waitForFunction(() => window.__straightest.renders > 0);
+    const image = decodePng(await page.locator('#view-canvas').screenshot());
+    let blue = 0;
+    for (let i = 0; i < image.width * image.height; i++) {
+      const [r, g, b] = image.data.subarray(i * image.channels, i * image.channels + 3);
+      if (b > r + 60 && b > g + 20) blue++;
+    }
+    const fraction = blue / (image.width * image.height);
+    assert(fraction > 0.005, `only ${(fraction * 100).toFixed(2)}% of the pixels show the path colour`);
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('clicking the mesh moves the source to a face point and retraces; Reset goes back', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.paths');
+    const before = await page.evaluate(() => ({ ...window.__straightest }));
+    const statsBefore = await page.textContent('#stats-panel');
+    const box = await page.locator('#view-canvas').boundingBox();
+    await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+    await expectReady(page, `window.__straightest.traces > ${before.traces}`);
+    const after = await page.evaluate(() => ({ ...window.__straightest }));
+    const { source } = after.paths;
+    assert(typeof source?.face === 'number' && source.bary?.length === 3,
+      `source after the click is ${JSON.stringify(source)}, expected {face, bary}`);
+    const sum = source.bary.reduce((a, b) => a + b, 0);
+    assert(Math.abs(sum - 1) < 1e-6 && source.bary.every((b) => b >= 0), `bad barycentric coordinates ${source.bary}`);
+    assert(JSON.stringify(source) !== JSON.stringify(before.paths.source), 'the source did not move');
+    assert(after.paths.count === 196, `${after.paths.count} paths after the click, expected 196`);
+    const statsAfter = await page.textContent('#stats-panel');
+    assert(statsAfter !== statsBefore, 'the stats panel did not change');
+    assert((await page.textContent('#stats-source')).includes(`face ${source.face}`), 'stats panel does not show the new source');
+    assert((await page.textContent('#stats-traces')).trim() === String(after.traces), 'trace count not updated');
+
+    await page.click('#reset-button');
+    await expectReady(page, `window.__straightest.traces > ${after.traces}`);
+    const reset = await page.evaluate(() => window.__straightest.paths.source);
+    assert(JSON.stringify(reset) === JSON.stringify(before.paths.source),
+      `Reset gave source ${JSON.stringify(reset)}, expected ${JSON.stringify(before.paths.source)}`);
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('shift+click adds a destination; hovering a path shows its length, status and faces crossed', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.paths');
+    const traces = await page.evaluate(() => window.__straightest.traces);
+    const box = await page.locator('#view-canvas').boundingBox();
+    await page.keyboard.down('Shift');
+    await page.mouse.click(box.x + box.width * 0.55, box.y + box.height * 0.6);
+    await page.keyboard.up('Shift');
+    await expectReady(page, `window.__straightest.traces > ${traces}`);
+    const paths = await page.evaluate(() => window.__straightest.paths);
+    assert(paths.count === 197, `${paths.count} paths after shift+click, expected 196 + 1`);
+    assert(typeof paths.source?.vertex === 'number', 'shift+click moved the source');
+    const targets = (await page.textContent('#stats-targets')).trim();
+    assert(/196 boundary \+ 1 added/.test(targets), `destinations shown as '${targets}'`);
+    assert(await page.isEnabled('#clear-targets-button'), 'the clear button stays disabled');
+
+    // The paths cover the mountain densely: one of a few spots on it lies on a path.
+    let tip = '';
+    for (const [fx, fy] of [[0.5, 0.75], [0.4, 0.7], [0.6, 0.8], [0.45, 0.65], [0.55, 0.85], [0.35, 0.6]]) {
+      await page.mouse.move(box.x + box.width * fx, box.y + box.height * fy);
+      tip = await page.waitForFunction(() => {
+        const el = document.getElementById('path-tooltip');
+        return el.hidden ? '' : el.textContent;
+      }, null, { timeout: 600 }).then((h) => h.jsonValue()).catch(() => '');
+      if (tip) break;
+    }
+    assert(/Path \d+ of 197/.test(tip) && /length [\d.]+/.test(tip) && /\d+ faces crossed/.test(tip) &&
+      /reached|hit_boundary|returned_to_source|loop|step_limit|no_exit|degenerate_plane/.test(tip),
+      `hover tooltip: '${tip}'`);
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('a closed mesh shows its info and a note instead of paths', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.paths');
+    await page.setInputFiles('#file-input', {
+      name: 'tetrahedron.off', mimeType: 'text/plain', buffer: Buffer.from(TETRAHEDRON_OFF),
+    });
+    await expectReady(page, 'window.__straightest.lastInfo.vertices === 4 && window.__straightest.paths.count === 0');
+    assert((await page.textContent('#stats-paths')).trim() === '0', 'stats panel does not show 0 paths');
+    assert(await page.isVisible('#stats-note'), 'no note for the closed mesh');
+    assert(/closed/i.test(await page.textContent('#stats-note')), 'the note does not say the mesh is closed');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
 // ------------------------------------------------------------------ runner
 
 async function main() {
