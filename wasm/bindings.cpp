@@ -193,9 +193,17 @@ class MeshHandle {
         points[3 * i + 2] = static_cast<float>(batch.points[i].z);
       }
       val targetsJs = val::array();
-      for (const SurfacePoint& t : batch.targets) targetsJs.call<void>("push", pointToJs(t));
+      std::vector<double> targetXyz;
+      targetXyz.reserve(3 * n);
+      for (const SurfacePoint& t : batch.targets) {
+        targetsJs.call<void>("push", pointToJs(t));
+        const Vec3 x = position(*mesh_, t);
+        targetXyz.insert(targetXyz.end(), {x.x, x.y, x.z});
+      }
       val o = val::object();
       o.set("source", pointToJs(batch.source));
+      o.set("sourcePosition", vec3(batch.base.origin));
+      o.set("targetPositions", copyToJs("Float64Array", targetXyz.data(), targetXyz.size()));
       o.set("normal", vec3(batch.base.normal));
       o.set("baseFallback", batch.base.fallback);
       o.set("baseNote", batch.base.note);

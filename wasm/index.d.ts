@@ -55,10 +55,14 @@ export interface BasePlane {
 
 export interface StraightestPaths {
   source: SurfacePoint;
+  /** 3D position of the source (the base plane's origin). */
+  sourcePosition: [number, number, number];
   normal: [number, number, number];
   baseFallback: boolean;
   baseNote: string;
   targets: SurfacePoint[];
+  /** 3D position of every target, x, y, z each. */
+  targetPositions: Float64Array;
   count: number;
   reached: number;
   statuses: TraceStatus[];

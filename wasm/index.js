@@ -97,10 +97,12 @@ export class Mesh {
     const reached = statuses.filter((s) => s === 'reached').length;
     return {
       source: r.source,
+      sourcePosition: r.sourcePosition,
       normal: r.normal,
       baseFallback: r.baseFallback,
       baseNote: r.baseNote,
       targets: r.targets,
+      targetPositions: r.targetPositions,
       count: statuses.length,
       reached,
       statuses,

@@ -16,7 +16,7 @@
 //        vertex of the longest boundary loop (nothing on a closed mesh), so the page can combine the
 //        boundary with points the user picked.
 //        'paths' replies: { source, sourcePosition: [x,y,z], normal, baseFallback, baseNote,
-//                           targets, targetPositions: Float32Array (xyz per target, NaN if unknown),
+//                           targets, targetPositions: Float32Array (xyz per target, from the core),
 //                           count, reached, statuses, lengths: Float64Array,
 //                           facesCrossed: Uint32Array, points: Float32Array, offsets: Uint32Array,
 //                           timings: { prepare, trace }, timeMs }  (buffers transferred)
@@ -98,30 +98,6 @@ function resolveTargets(mesh, source, targets) {
   return targets.flatMap((t) => (t === 'boundary' ? boundaryTargets(mesh, source) : [t]));
 }
 
-/**
- * Where a target sits in space, for drawing its cutting plane: a vertex's position or the
- * barycentric combination of a face's corners (NaN for an edge point, which the page never sends).
- */
-function targetPositions(targets) {
-  const { positions, indices } = currentData;
-  const out = new Float32Array(3 * targets.length).fill(NaN);
-  const vertex = (v, k) => positions[3 * v + k];
-  targets.forEach((t, i) => {
-    const v = typeof t === 'number' ? t : t.vertex;
-    for (let k = 0; k < 3; k++) {
-      if (typeof v === 'number') {
-        out[3 * i + k] = vertex(v, k);
-      } else if (typeof t.face === 'number') {
-        const [a, b, c] = t.bary;
-        const f = 3 * t.face;
-        out[3 * i + k] =
-          a * vertex(indices[f], k) + b * vertex(indices[f + 1], k) + c * vertex(indices[f + 2], k);
-      }
-    }
-  });
-  return out;
-}
-
 const handlers = {
   async init({ moduleUrl }) {
     modulePromise ??= import(moduleUrl).then(({ createStraightest }) => createStraightest());
@@ -148,16 +124,15 @@ const handlers = {
     const resolved = resolveTargets(mesh, source, targets);
     const result = mesh.straightestPaths({ source, targets: resolved });
     if (resolved === 'boundary') currentData.boundary ??= result.targets;
-    const plane = mesh.basePlane(result.source);
     const reply = {
       type: 'paths',
       source: result.source,
-      sourcePosition: plane.origin,
+      sourcePosition: result.sourcePosition,
       normal: result.normal,
       baseFallback: result.baseFallback,
       baseNote: result.baseNote,
       targets: result.targets,
-      targetPositions: targetPositions(result.targets),
+      targetPositions: Float32Array.from(result.targetPositions),
       count: result.count,
       reached: result.reached,
       statuses: result.statuses,

@@ -11,6 +11,7 @@ test('on a flat grid every boundary path is reached at its Euclidean length', ()
   const mesh = st.loadMesh(quadGrid, 'obj');
   const r = mesh.straightestPaths();  // defaults: source 'auto' (the center, vertex 4), targets 'boundary'
   assert.deepEqual(r.source, { vertex: 4 });
+  assert.deepEqual(r.sourcePosition, [1, 1, 0]);
   assert.equal(r.count, 8);
   assert.equal(r.reached, 8);
   const positions = mesh.positions();
@@ -18,6 +19,7 @@ test('on a flat grid every boundary path is reached at its Euclidean length', ()
     const v = r.targets[i].vertex;
     const euclid = Math.hypot(positions[3 * v] - 1, positions[3 * v + 1] - 1);
     assert.ok(Math.abs(r.lengths[i] - euclid) < 1e-12, `path ${i}: ${r.lengths[i]} vs ${euclid}`);
+    assert.deepEqual(Array.from(r.targetPositions.subarray(3 * i, 3 * i + 3)), Array.from(positions.subarray(3 * v, 3 * v + 3)));
     const last = 3 * (r.offsets[i + 1] - 1);
     assert.ok(Math.abs(r.points[last] - positions[3 * v]) < 1e-6, 'the path ends at its target');
   }
