@@ -81,29 +81,37 @@ double faceHeight(double x, double y) {
 
 std::vector<std::string> sampleNames() { return {"mountain", "cap", "saddle", "face"}; }
 
-TriMesh makeHeightField(int n) {
+TriMesh makeGrid(int n, const std::function<Vec3(int i, int j)>& vertex, GridDiagonals diagonals) {
   if (n < 2) n = 2;
   std::vector<Vec3> positions;
   positions.reserve(static_cast<size_t>(n) * n);
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
-      positions.push_back({x, y, mountainHeight(x, y)});
-    }
+    for (int i = 0; i < n; ++i) positions.push_back(vertex(i, j));
   std::vector<Triangle> triangles;
   triangles.reserve(2 * static_cast<size_t>(n - 1) * (n - 1));
   for (int j = 0; j + 1 < n; ++j)
     for (int i = 0; i + 1 < n; ++i) {
       const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-      if ((i + j) % 2 == 0) {
-        triangles.push_back({a, b, d});
-        triangles.push_back({a, d, c});
-      } else {
+      if (diagonals == GridDiagonals::Alternating && (i + j) % 2 == 1) {
         triangles.push_back({a, b, c});
         triangles.push_back({b, d, c});
+      } else {
+        triangles.push_back({a, b, d});
+        triangles.push_back({a, d, c});
       }
     }
   return buildOrDie(std::move(positions), std::move(triangles));
+}
+
+TriMesh makeHeightField(int n) {
+  if (n < 2) n = 2;
+  return makeGrid(
+      n,
+      [n](int i, int j) {
+        const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+        return Vec3{x, y, mountainHeight(x, y)};
+      },
+      GridDiagonals::Alternating);
 }
 
 TriMesh makeSphericalCap(double radius, double thetaMax, int rings) {

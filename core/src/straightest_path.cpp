@@ -282,8 +282,9 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
   const bool samePoint = (destination.kind == SurfacePoint::Kind::Vertex &&
                           source_.kind == SurfacePoint::Kind::Vertex && destination.index == source_.index) ||
                          norm(SD) <= onPlaneTolerance_;
-  if (samePoint) {
-    r.status = TraceStatus::Reached;
+  // A destination at the source is reached with length 0; one along the base normal has no plane.
+  auto singlePoint = [&](TraceStatus status) -> const StraightestPath& {
+    r.status = status;
     r.length = 0;
     r.facesCrossed = 0;
     r.reversed = false;
@@ -294,21 +295,10 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
       r.positions.push_back(sourcePosition_);
     }
     return r;
-  }
+  };
+  if (samePoint) return singlePoint(TraceStatus::Reached);
   const auto plane = cuttingPlane(base_, D);
-  if (!plane) {
-    r.status = TraceStatus::DegeneratePlane;
-    r.length = 0;
-    r.facesCrossed = 0;
-    r.reversed = false;
-    r.points.clear();
-    r.positions.clear();
-    if (options_.keepPoints) {
-      r.points.push_back(source_);
-      r.positions.push_back(sourcePosition_);
-    }
-    return r;
-  }
+  if (!plane) return singlePoint(TraceStatus::DegeneratePlane);
   plane_ = *plane;
   incidentFaces(mesh_, destination, targetFaces_);
   const Vec3 t = normalized(SD - base_.normal * dot(base_.normal, SD));

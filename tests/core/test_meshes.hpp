@@ -30,29 +30,17 @@ template <class Lift>
 TriMesh grid(int n, GridPattern pattern, Lift lift, unsigned seed = 7) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> jitter(-0.25, 0.25);
-  std::vector<Vec3> p;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      double x = i, y = j;
-      if (pattern == GridPattern::Jittered && i > 0 && j > 0 && i < n - 1 && j < n - 1) {
-        x += jitter(rng);
-        y += jitter(rng);
-      }
-      p.push_back(lift(x, y));
-    }
-  std::vector<Triangle> t;
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-      if (pattern == GridPattern::UnionJack && (i + j) % 2 == 1) {
-        t.push_back({a, b, c});
-        t.push_back({b, d, c});
-      } else {
-        t.push_back({a, b, d});
-        t.push_back({a, d, c});
-      }
-    }
-  return buildOrFail(std::move(p), std::move(t));
+  return makeGrid(
+      n,
+      [&](int i, int j) {
+        double x = i, y = j;
+        if (pattern == GridPattern::Jittered && i > 0 && j > 0 && i < n - 1 && j < n - 1) {
+          x += jitter(rng);
+          y += jitter(rng);
+        }
+        return lift(x, y);
+      },
+      pattern == GridPattern::UnionJack ? GridDiagonals::Alternating : GridDiagonals::Same);
 }
 
 inline TriMesh flatGrid(int n, GridPattern pattern) {

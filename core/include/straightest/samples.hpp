@@ -8,6 +8,7 @@
 //  - "face":     a bumpy, face-like relief (a nose, brows, cheeks) over an elliptical disk.
 // All are disks (one boundary loop, χ = 1).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,12 @@ std::vector<std::string> sampleNames();
 
 /// The named sample, or an InvalidArgument error listing the names.
 Expected<TriMesh> makeSample(const std::string& name);
+
+enum class GridDiagonals { Same, Alternating };
+
+/// An n × n vertex grid (n >= 2): vertex (i, j) is vertex(i, j), index j·n + i; each cell is split into
+/// two triangles along the same diagonal, or along alternating diagonals ("union jack").
+TriMesh makeGrid(int n, const std::function<Vec3(int i, int j)>& vertex, GridDiagonals diagonals);
 
 /// A regular n × n height field z = h(x, y) over [-1,1]², with the mountain's relief; n >= 2.
 /// Used for the "mountain" sample (n = 50) and for benchmarks at larger n.
