@@ -4,6 +4,8 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <malloc.h>
+
 #include <memory>
 #include <new>
 #include <string>
@@ -396,6 +398,9 @@ val traceStatusNameList() {
   return a;
 }
 
+/// Bytes currently allocated by malloc in WASM memory (for leak checks).
+double heapUsedBytes() { return static_cast<double>(mallinfo().uordblks); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(straightest) {
@@ -414,4 +419,5 @@ EMSCRIPTEN_BINDINGS(straightest) {
   emscripten::function("sample", &sample);
   emscripten::function("sampleNames", &sampleNameList);
   emscripten::function("traceStatusNames", &traceStatusNameList);
+  emscripten::function("heapUsedBytes", &heapUsedBytes);
 }

@@ -27,7 +27,7 @@ export interface MeshInfo {
 /** Error categories: see core/include/straightest/error.hpp. */
 export type ErrorCategory =
   | 'io' | 'unsupported_format' | 'parse' | 'empty' | 'too_large' | 'non_finite' | 'index_out_of_range'
-  | 'invalid_face' | 'duplicate_face' | 'non_manifold_edge' | 'non_manifold_vertex' | 'non_orientable'
+  | 'invalid_face' | 'duplicate_face' | 'degenerate' | 'non_manifold_edge' | 'non_manifold_vertex' | 'non_orientable'
   | 'topology' | 'invalid_argument' | 'internal';
 
 export class StraightestError extends Error {
@@ -149,6 +149,8 @@ export class Straightest {
   sampleNames(): string[];
   sample(name: 'mountain' | 'cap' | 'saddle' | 'face' | string): Mesh;
   readonly memoryBytes: number;
+  /** Bytes currently allocated inside WASM memory. */
+  readonly heapUsedBytes: number;
   readonly traceStatuses: TraceStatus[];
 }
 

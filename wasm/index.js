@@ -175,6 +175,9 @@ export class Straightest {
 
   /** Bytes of WASM memory currently reserved (grows, never shrinks). */
   get memoryBytes() { return this.#module.HEAPU8.length; }
+
+  /** Bytes currently allocated inside WASM memory (returns to its baseline when meshes are deleted). */
+  get heapUsedBytes() { return this.#module.heapUsedBytes(); }
 }
 
 /**

@@ -13,6 +13,7 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::IndexOutOfRange: return "index_out_of_range";
     case ErrorCode::InvalidFace: return "invalid_face";
     case ErrorCode::DuplicateFace: return "duplicate_face";
+    case ErrorCode::Degenerate: return "degenerate";
     case ErrorCode::NonManifoldEdge: return "non_manifold_edge";
     case ErrorCode::NonManifoldVertex: return "non_manifold_vertex";
     case ErrorCode::NonOrientable: return "non_orientable";

@@ -138,9 +138,10 @@ Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits)
                                              " vertices and " + std::to_string(limits.maxFaces) + " faces"};
       return false;
     }
-    // Each vertex needs at least "0 0 0\n" (6 bytes) and each face "3 0 1 2\n" (8 bytes).
+    // Each vertex needs at least "0 0 0\n" (6 bytes) and each face line at least 2 bytes (a bound
+    // loose enough that a short face line still gets its own, more precise error).
     const uint64_t remaining = text.size() - consumed;
-    if (static_cast<uint64_t>(nv) * 6 + static_cast<uint64_t>(nf) * 8 > remaining) {
+    if (static_cast<uint64_t>(nv) * 6 + static_cast<uint64_t>(nf) * 2 > remaining) {
       error = parseError(line, "header claims " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
                                    " faces, but only " + std::to_string(remaining) +
                                    " bytes follow (the file is truncated or the header lies)");

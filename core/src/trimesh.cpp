@@ -34,10 +34,14 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   if (nv == 0) return err(ErrorCode::Empty, "mesh has no vertices");
   if (nf == 0) return err(ErrorCode::Empty, "mesh has no faces (" + std::to_string(nv) + " vertices)");
 
-  for (int64_t v = 0; v < nv; ++v)
-    if (!isFinite(positions[v]))
-      return err(ErrorCode::NonFinite, "vertex " + std::to_string(v) + " has a non-finite coordinate " +
-                                           str(positions[v]));
+  for (int64_t v = 0; v < nv; ++v) {
+    const Vec3& p = positions[v];
+    if (!isFinite(p))
+      return err(ErrorCode::NonFinite, "vertex " + std::to_string(v) + " has a non-finite coordinate " + str(p));
+    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate)
+      return err(ErrorCode::NonFinite, "vertex " + std::to_string(v) + " has a coordinate too large to compute with " +
+                                           str(p) + " (|x| > 1e150 overflows)");
+  }
 
   for (int64_t f = 0; f < nf; ++f) {
     const Triangle& t = triangles[f];
@@ -247,6 +251,10 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     degenerate += isDegenerate;
     mesh.faceNormals_[f] = isDegenerate ? Vec3{} : c / twiceArea;
   }
+
+  if (degenerate == nf)
+    return err(ErrorCode::Degenerate, "every face (" + std::to_string(nf) + ") has zero area: the vertices of each "
+                                      "face are collinear or coincide");
 
   MeshSummary& s = mesh.summary_;
   s.vertices = nv;

@@ -96,10 +96,19 @@ test('use after delete throws an Error; delete is idempotent', () => {
   assert.throws(() => mesh.positions(), /has been deleted/);
 });
 
-test('memory is reused across many load/delete cycles', () => {
-  const text = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n';
-  for (let i = 0; i < 200; ++i) st.loadMesh(text).delete();
-  const before = st.memoryBytes;
-  for (let i = 0; i < 2000; ++i) st.loadMesh(text).delete();
-  assert.equal(st.memoryBytes, before, 'WASM memory grew while meshes were deleted');
+test('10,000 meshes created and deleted leave the WASM heap at its baseline', () => {
+  const text = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n';
+  for (let i = 0; i < 100; ++i) st.loadMesh(text).delete();  // warm up allocator free lists
+  const baseline = st.heapUsedBytes;
+  const reserved = st.memoryBytes;
+  for (let i = 0; i < 10000; ++i) {
+    const mesh = i % 2 ? st.loadMesh(text) : st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 2]);
+    mesh.info();
+    mesh.positions();
+    mesh.delete();
+  }
+  // Failed loads must not leak either.
+  for (let i = 0; i < 1000; ++i) assert.throws(() => st.loadMesh('v 0 0 0\nf 1 2 3\n'));
+  assert.equal(st.heapUsedBytes, baseline, 'bytes still allocated after deleting every mesh');
+  assert.equal(st.memoryBytes, reserved, 'WASM memory grew while meshes were deleted');
 });

@@ -16,10 +16,11 @@ enum class ErrorCode {
   Parse,              // syntax error: bad token, bad header, truncated file, line too long
   Empty,              // no vertices or no faces
   TooLarge,           // over the configured caps (or a header claims more than the file can hold)
-  NonFinite,          // NaN or Inf coordinate
+  NonFinite,          // NaN or Inf coordinate, or one so large (> 1e150) that products overflow
   IndexOutOfRange,    // face refers to a vertex that does not exist (or index 0 in OBJ)
   InvalidFace,        // fewer than 3 vertices, or a vertex repeated inside one face
   DuplicateFace,      // two faces with the same vertex set
+  Degenerate,         // every face has zero area: nothing can be measured on it
   NonManifoldEdge,    // an edge shared by more than two faces
   NonManifoldVertex,  // a vertex whose faces form more than one fan
   NonOrientable,      // e.g. a Möbius strip: no consistent orientation exists

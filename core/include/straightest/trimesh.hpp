@@ -105,6 +105,9 @@ class TriMesh {
 Expected<TriMesh> meshFromFlatArrays(const std::vector<double>& xyz, const std::vector<double>& indices,
                                      const BuildLimits& limits = {});
 
+/// Largest accepted |coordinate|: squared lengths and cross products of larger ones overflow.
+inline constexpr double kMaxCoordinate = 1e150;
+
 /// Relative threshold below which a face counts as degenerate: |e1 × e2| <= kDegenerateRel * |e1| * |e2|
 /// (the sine of the face's angle at its first corner is below it) or an edge has zero length.
 inline constexpr double kDegenerateRel = 1e-12;
