@@ -36,9 +36,10 @@ BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
                 "): area-weighted normal at the source used";
     return base;
   }
-  Vec3 meshNormal;
-  for (int32_t f = 0; f < mesh.numFaces(); ++f) meshNormal += mesh.faceNormal(f) * mesh.faceArea(f);
-  base.normal = normalized(dot(mean, meshNormal) < 0 ? -mean : mean);
+  // Orient like the surface at S. (The mesh's total area-weighted normal, DESIGN's first choice, points
+  // away from the hole of a nearly closed surface and would flip the base plane of sources near it.)
+  const Vec3 local = areaWeightedNormal(mesh, source);
+  base.normal = normalized(dot(mean, local) < 0 ? -mean : mean);
   return base;
 }
 

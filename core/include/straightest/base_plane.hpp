@@ -3,7 +3,8 @@
 //
 // Base normal at S (mesh with boundary): the normalized mean of the unit normals of the virtual
 // triangles (S, b_i, b_i+1) fanned from S over consecutive vertices of the longest boundary loop
-// (closing the loop), oriented to agree with the mesh's area-weighted normal sum. If that mean nearly
+// (closing the loop), oriented to agree with the area-weighted normal at S (the surface's side; the
+// mesh's total normal sum would flip it near the hole of a nearly closed surface). If that mean nearly
 // cancels (|mean| < kBaseNormalCancel, e.g. a slit-like boundary) the area-weighted normal at S is used
 // and `fallback` says so. Closed meshes: the area-weighted normal at S.
 //
