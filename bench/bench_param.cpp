@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
   for (int n : {100, 317, 1000}) {
     if (n > maxN) break;
     const TriMesh mesh = makeHeightField(n);
-    for (LinearSolver solver : {LinearSolver::SparseLU, LinearSolver::BiCGSTAB}) {
+    for (LinearSolver solver : {LinearSolver::Multigrid, LinearSolver::SparseLU, LinearSolver::BiCGSTAB}) {
+      if (solver != LinearSolver::Multigrid && mesh.numVertices() > 200000) continue;  // minutes; see docs
       ParamOptions o;
       o.solver = solver;
       const auto r = parameterize(mesh, o);
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
       }
       const ParamTimings& t = r.value().timingsMs;
       std::printf("| %s | %d | %s | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.4f | %.1e |\n", target,
-                  mesh.numVertices(), solver == LinearSolver::SparseLU ? "SparseLU" : "BiCGSTAB+ILUT", t.source,
+                  mesh.numVertices(), solver == LinearSolver::SparseLU ? "SparseLU" : solver == LinearSolver::BiCGSTAB ? "BiCGSTAB+ILUT" : "BiCGSTAB+AMG", t.source,
                   t.trace, t.boundary, t.weights, t.solve, t.metrics, t.total, r.value().metrics.l2,
                   r.value().residual);
       std::fflush(stdout);

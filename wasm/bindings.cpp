@@ -249,11 +249,11 @@ class MeshHandle {
       if (!b) return errorObject(b.error());
       auto w = parseWeightKind(weights);
       if (!w) return errorObject(w.error());
-      if (solver != "lu" && solver != "bicgstab")
-        return errorObject("invalid_argument", "unknown solver '" + solver + "' (use lu or bicgstab)");
+      auto linear = parseLinearSolver(solver);
+      if (!linear) return errorObject(linear.error());
       options.boundary = b.value();
       options.weights = w.value();
-      options.solver = solver == "lu" ? LinearSolver::SparseLU : LinearSolver::BiCGSTAB;
+      options.solver = linear.value();
       const auto spec = emscripten::convertJSArrayToNumberVector<double>(sourceSpec);
       if (spec.at(0) >= 0) {
         auto source = pointFrom(*mesh_, spec.data());

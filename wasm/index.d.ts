@@ -93,7 +93,8 @@ export interface ParameterizeOptions {
   /** Default 'measured'; 'auto' tries all three and keeps the lowest L2 stretch. */
   boundary?: BoundaryKind | 'auto';
   weights?: WeightKind;
-  solver?: 'lu' | 'bicgstab';
+  /** Default 'multigrid' (BiCGSTAB + algebraic multigrid); 'lu' direct; 'bicgstab' with ILUT. */
+  solver?: 'multigrid' | 'lu' | 'bicgstab';
 }
 
 export interface Parameterization {

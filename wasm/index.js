@@ -124,7 +124,7 @@ export class Mesh {
    * the three); weights 'shape-preserving' (default), 'mean-value', 'cotan' or 'uniform'.
    * Returns uv (2 floats per vertex, in [0, 1]²), per-face stretch and the metrics.
    */
-  parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'lu' } = {}) {
+  parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid' } = {}) {
     return unwrap(this.#live().parameterize(pointSpec(source, 'source', true), String(boundary), String(weights), String(solver)));
   }
 

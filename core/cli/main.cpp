@@ -41,7 +41,7 @@ constexpr const char* kUsage =
     "      --source auto|N        center for the measured boundary (default auto)\n"
     "      --boundary measured|circle|square|auto   (default measured; auto keeps the least stretched)\n"
     "      --weights shape-preserving|mean-value|cotan|uniform   (default shape-preserving)\n"
-    "      --solver lu|bicgstab   sparse solver (default lu)\n"
+    "      --solver multigrid|lu|bicgstab   sparse solver (default multigrid)\n"
     "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order\n"
     "\n"
     "MESH is an .obj or .off file, sample:NAME for a built-in sample (mountain, cap, saddle, face), or\n"
@@ -59,7 +59,7 @@ struct Options {
   std::string command, mesh;
   bool pretty = false, jsonErrors = false, points = false;
   std::string source = "auto", to = "boundary";
-  std::string boundary = "measured", weights = "shape-preserving", solver = "lu", output;
+  std::string boundary = "measured", weights = "shape-preserving", solver = "multigrid", output;
   BuildLimits limits;
 };
 
@@ -240,10 +240,11 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   if (!boundary) return fail(o, 2, "usage", boundary.error().message);
   auto weights = parseWeightKind(o.weights);
   if (!weights) return fail(o, 2, "usage", weights.error().message);
-  if (o.solver != "lu" && o.solver != "bicgstab") return fail(o, 2, "usage", "unknown solver '" + o.solver + "' (use lu or bicgstab)");
+  auto solver = parseLinearSolver(o.solver);
+  if (!solver) return fail(o, 2, "usage", solver.error().message);
   options.boundary = boundary.value();
   options.weights = weights.value();
-  options.solver = o.solver == "lu" ? LinearSolver::SparseLU : LinearSolver::BiCGSTAB;
+  options.solver = solver.value();
   if (o.source != "auto") {
     auto v = parseVertex(mesh, o.source, "--source");
     if (!v) return fail(o, 2, errorCodeName(v.error().code), v.error().message);

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "straightest/geodesic_distance.hpp"
+#include "straightest/multigrid.hpp"
 
 namespace straightest {
 namespace {
@@ -43,30 +44,39 @@ double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const Bounda
       }
     }
   }
-  Eigen::SparseMatrix<double> A(n, n);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> A(n, n);
   A.setFromTriplets(triplets.begin(), triplets.end());
   A.makeCompressed();
   Eigen::MatrixXd x(n, 2);
-  bool solved = false;
-  if (solver == LinearSolver::BiCGSTAB) {
-    Eigen::BiCGSTAB<Eigen::SparseMatrix<double>, Eigen::IncompleteLUT<double>> it;
-    it.preconditioner().setFillfactor(4);
-    it.setTolerance(1e-12);
+  // Initial guess for iterative solvers: the boundary's centroid (inside the convex polygon).
+  Eigen::MatrixXd guess(n, 2);
+  double cx = 0, cy = 0;
+  for (const Vec2& q : boundary.polygon) { cx += q[0]; cy += q[1]; }
+  guess.col(0).setConstant(cx / boundary.polygon.size());
+  guess.col(1).setConstant(cy / boundary.polygon.size());
+  auto iterate = [&](auto& it) {
+    it.setTolerance(1e-10);
+    it.setMaxIterations(1000);
     it.compute(A);
-    if (it.info() == Eigen::Success) {
-      // Initial guess: the boundary's centroid (inside the convex polygon).
-      Eigen::MatrixXd guess(n, 2);
-      double cx = 0, cy = 0;
-      for (const Vec2& q : boundary.polygon) { cx += q[0]; cy += q[1]; }
-      guess.col(0).setConstant(cx / boundary.polygon.size());
-      guess.col(1).setConstant(cy / boundary.polygon.size());
-      x = it.solveWithGuess(rhs, guess);
-      solved = it.info() == Eigen::Success;
+    if (it.info() != Eigen::Success) return false;
+    for (int c = 0; c < 2; ++c) {
+      x.col(c) = it.solveWithGuess(rhs.col(c), guess.col(c));
+      if (it.info() != Eigen::Success) return false;
     }
+    return true;
+  };
+  bool solved = false;
+  if (solver == LinearSolver::Multigrid) {
+    Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, AggregationMultigrid> it;
+    solved = iterate(it);
+  } else if (solver == LinearSolver::BiCGSTAB) {
+    Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::IncompleteLUT<double>> it;
+    it.preconditioner().setFillfactor(4);
+    solved = iterate(it);
   }
   if (!solved) {
     Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-    lu.compute(A);
+    lu.compute(Eigen::SparseMatrix<double>(A));
     if (lu.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
     x = lu.solve(rhs);
   }
@@ -104,6 +114,13 @@ Expected<BoundaryChoice> parseBoundaryChoice(const std::string& name) {
   if (name == "square") return BoundaryChoice::Square;
   if (name == "auto") return BoundaryChoice::Auto;
   return Error{ErrorCode::InvalidArgument, "unknown boundary '" + name + "' (use measured, circle, square or auto)"};
+}
+
+Expected<LinearSolver> parseLinearSolver(const std::string& name) {
+  if (name == "multigrid") return LinearSolver::Multigrid;
+  if (name == "lu") return LinearSolver::SparseLU;
+  if (name == "bicgstab") return LinearSolver::BiCGSTAB;
+  return Error{ErrorCode::InvalidArgument, "unknown solver '" + name + "' (use multigrid, lu or bicgstab)"};
 }
 
 Expected<WeightKind> parseWeightKind(const std::string& name) {

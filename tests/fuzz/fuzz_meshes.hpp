@@ -5,9 +5,11 @@
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cmath>
+#include <limits>
 
 #include "fuzz_common.hpp"
 #include "straightest/samples.hpp"
+#include "straightest/surface_point.hpp"
 
 namespace fuzz {
 

@@ -17,7 +17,11 @@
 namespace straightest {
 
 enum class BoundaryChoice { Measured, Circle, Square, Auto };
-enum class LinearSolver { SparseLU, BiCGSTAB };
+/// Multigrid (default): BiCGSTAB preconditioned by smoothed-aggregation multigrid (multigrid.hpp).
+/// SparseLU: Eigen's direct LU (COLAMD). BiCGSTAB: preconditioned by incomplete LU (ILUT).
+/// An iterative solve that does not converge falls back to SparseLU.
+enum class LinearSolver { Multigrid, SparseLU, BiCGSTAB };
+Expected<LinearSolver> parseLinearSolver(const std::string& name);
 
 Expected<BoundaryChoice> parseBoundaryChoice(const std::string& name);
 Expected<WeightKind> parseWeightKind(const std::string& name);
@@ -27,7 +31,7 @@ struct ParamOptions {
   SurfacePoint source;  // when !autoSource
   BoundaryChoice boundary = BoundaryChoice::Measured;
   WeightKind weights = WeightKind::ShapePreserving;
-  LinearSolver solver = LinearSolver::SparseLU;
+  LinearSolver solver = LinearSolver::Multigrid;
 };
 
 struct BoundaryCandidate {

@@ -1,0 +1,136 @@
+// libFuzzer harness: parameterize() on random disks (height-field grids with random heights and
+// jitter, spherical caps; rotated and scaled), sometimes with triangles removed (a notched disk, or
+// not a disk any more), with a random boundary (measured / circle / square / auto), weights
+// (shape-preserving / mean-value / uniform / cotan), source (automatic, an interior vertex or face
+// point, or a boundary vertex) and solver. Also textureStretch on random uv.
+// Invariants: a result or an error with a known category (Topology / InvalidArgument) and a message;
+// not a disk ⇒ Topology error; a result has one finite uv per vertex in [0, 1]², the boundary loop
+// of the mesh, its polygon at the loop's uv; stretch is finite iff the map is bijective
+// (no flipped, no degenerate triangle) and then L2 ≥ 1 and L∞ ≥ L2; with convex-combination weights
+// (not cotan) and a circle or measured boundary the map is bijective (Tutte/Floater): flipped == 0.
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include "fuzz_meshes.hpp"
+#include "straightest/parameterize.hpp"
+
+using namespace straightest;
+
+namespace {
+
+void checkMetrics(const TriMesh& m, const StretchMetrics& s, const char* what) {
+  FUZZ_CHECK(s.flipped >= 0 && s.degenerate >= 0 && s.flipped + s.degenerate <= m.numFaces(), "%s: counts", what);
+  FUZZ_CHECK(s.bijective == (s.flipped == 0 && s.degenerate == 0), "%s: bijective=%d with %lld flipped, %lld degenerate",
+             what, s.bijective, (long long)s.flipped, (long long)s.degenerate);
+  FUZZ_CHECK(std::isfinite(s.l2) == s.bijective && std::isfinite(s.linf) == s.bijective,
+             "%s: stretch L2 %g / Linf %g but bijective=%d", what, s.l2, s.linf, s.bijective);
+  if (s.bijective) {
+    FUZZ_CHECK(s.l2 >= 1 - 1e-9, "%s: L2 stretch %.17g below 1", what, s.l2);
+    FUZZ_CHECK(s.linf >= s.l2 * (1 - 1e-9), "%s: Linf %.17g below L2 %.17g", what, s.linf, s.l2);
+  }
+  FUZZ_CHECK(static_cast<int32_t>(s.faceStretch.size()) == m.numFaces(), "%s: faceStretch size", what);
+  FUZZ_CHECK(!std::isnan(s.angleDistortionMean) && !std::isnan(s.areaDistortionMean), "%s: NaN distortion", what);
+}
+
+bool isDisk(const TriMesh& m) {
+  const MeshSummary& s = m.summary();
+  return s.boundaryLoopSizes.size() == 1 && s.eulerCharacteristic == 1 && s.components == 1;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  FuzzedDataProvider in(data, size);
+  fuzz::RandomMesh gen = in.ConsumeIntegralInRange(0, 4) == 0 ? fuzz::cap(in, false) : fuzz::heightGrid(in, 10);
+  const int removals = in.ConsumeIntegralInRange(0, 7) == 0 ? in.ConsumeIntegralInRange(1, 4) : 0;
+  for (int k = 0; k < removals && gen.T.size() > 1; ++k)
+    gen.T.erase(gen.T.begin() + in.ConsumeIntegralInRange<std::ptrdiff_t>(0, gen.T.size() - 1));
+  if (removals > 0) {  // may have made it non-manifold or disconnected: build decides
+    auto built = TriMesh::build(gen.P, gen.T);
+    if (!built.ok()) return 0;
+  }
+  const TriMesh mesh = fuzz::transformAndBuild(in, gen);
+
+  ParamOptions options;
+  static const BoundaryChoice boundaries[] = {BoundaryChoice::Measured, BoundaryChoice::Circle, BoundaryChoice::Square,
+                                              BoundaryChoice::Auto};
+  static const WeightKind weights[] = {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Uniform,
+                                       WeightKind::Cotan};
+  options.boundary = boundaries[in.ConsumeIntegralInRange(0, 3)];
+  options.weights = weights[in.ConsumeIntegralInRange(0, 7) == 0 ? 3 : in.ConsumeIntegralInRange(0, 2)];
+  options.solver = in.ConsumeBool() ? LinearSolver::SparseLU : LinearSolver::BiCGSTAB;
+  options.autoSource = in.ConsumeBool();
+  if (!options.autoSource) {
+    options.source = fuzz::randomPoint(in, mesh);
+    if (in.ConsumeIntegralInRange(0, 3) > 0) {  // mostly an interior source
+      for (int32_t v = 0; v < mesh.numVertices(); ++v) {
+        const int32_t w = (v + options.source.index) % mesh.numVertices();
+        if (options.source.kind == SurfacePoint::Kind::Vertex && !mesh.isBoundaryVertex(w)) {
+          options.source.index = w;
+          break;
+        }
+      }
+    }
+  }
+
+  auto result = parameterize(mesh, options);
+  const bool disk = isDisk(mesh);
+  if (!result.ok()) {
+    fuzz::checkError(result.error(), "parameterize");
+    const ErrorCode c = result.error().code;
+    FUZZ_CHECK(c == ErrorCode::Topology || c == ErrorCode::InvalidArgument, "parameterize: unexpected %s: %s",
+               errorCodeName(c), result.error().message.c_str());
+    FUZZ_CHECK(!disk || c != ErrorCode::Topology || options.boundary == BoundaryChoice::Measured ||
+                   result.error().message.find("interior") != std::string::npos,
+               "disk refused with a topology error (%s boundary): %s", options.boundary == BoundaryChoice::Auto
+                   ? "auto" : "fixed", result.error().message.c_str());
+    return 0;
+  }
+  FUZZ_CHECK(disk, "parameterize accepted a mesh that is not a disk");
+  const Parameterization& p = result.value();
+  const int32_t V = mesh.numVertices();
+  FUZZ_CHECK(static_cast<int32_t>(p.uv.size()) == V, "uv size %zu for %d vertices", p.uv.size(), V);
+  for (int32_t v = 0; v < V; ++v)
+    FUZZ_CHECK(std::isfinite(p.uv[v][0]) && std::isfinite(p.uv[v][1]) && p.uv[v][0] >= -1e-12 &&
+                   p.uv[v][0] <= 1 + 1e-12 && p.uv[v][1] >= -1e-12 && p.uv[v][1] <= 1 + 1e-12,
+               "uv of vertex %d = (%.17g, %.17g) outside [0,1]^2", v, p.uv[v][0], p.uv[v][1]);
+  FUZZ_CHECK(p.boundaryLoop == mesh.boundaryLoops()[0], "boundary loop differs from the mesh's");
+  FUZZ_CHECK(p.boundaryPolygon.size() == p.boundaryLoop.size(), "polygon size");
+  for (size_t i = 0; i < p.boundaryLoop.size(); ++i) {
+    const Vec2 &a = p.uv[p.boundaryLoop[i]], &b = p.boundaryPolygon[i];
+    FUZZ_CHECK(std::abs(a[0] - b[0]) <= 1e-9 && std::abs(a[1] - b[1]) <= 1e-9,
+               "boundary vertex %zu: uv (%g, %g), polygon (%g, %g)", i, a[0], a[1], b[0], b[1]);
+  }
+  FUZZ_CHECK(p.weights == options.weights, "weights kind changed");
+  switch (options.boundary) {
+    case BoundaryChoice::Measured: FUZZ_CHECK(p.boundary == BoundaryKind::Measured, "boundary kind"); break;
+    case BoundaryChoice::Circle: FUZZ_CHECK(p.boundary == BoundaryKind::Circle, "boundary kind"); break;
+    case BoundaryChoice::Square: FUZZ_CHECK(p.boundary == BoundaryKind::Square, "boundary kind"); break;
+    case BoundaryChoice::Auto:
+      FUZZ_CHECK(p.candidates.size() >= 2 && p.candidates.size() <= 3, "auto: %zu candidates", p.candidates.size());
+      for (const BoundaryCandidate& c : p.candidates)
+        FUZZ_CHECK(!(c.l2 < p.metrics.l2), "auto kept L2 %.17g over a candidate with %.17g", p.metrics.l2, c.l2);
+      break;
+  }
+  checkMetrics(mesh, p.metrics, "parameterize");
+  FUZZ_CHECK(p.fallbacks >= 0 && p.weightFallbacks >= 0, "negative fallback counts");
+  const bool convexWeights = options.weights != WeightKind::Cotan;
+  const char* weightName = weightKindName(options.weights);
+  if (convexWeights) {
+    FUZZ_CHECK(p.residual <= 1e-6, "%s weights: residual %g", weightName, p.residual);
+    for (const BoundaryCandidate& c : p.candidates)
+      if (c.kind == BoundaryKind::Circle || c.kind == BoundaryKind::Measured)
+        FUZZ_CHECK(c.flipped == 0 && c.degenerate == 0,
+                   "%s mesh, %s boundary, %s weights: %lld flipped and %lld degenerate triangles (must be bijective)",
+                   gen.kind, boundaryKindName(c.kind), weightName, (long long)c.flipped, (long long)c.degenerate);
+    if (p.boundary == BoundaryKind::Circle || p.boundary == BoundaryKind::Measured)
+      FUZZ_CHECK(p.metrics.bijective && p.metrics.flipped == 0, "%s boundary, %s weights: not bijective",
+                 boundaryKindName(p.boundary), weightName);
+  }
+  // textureStretch on the result's uv with some vertices moved: the metric invariants still hold.
+  std::vector<Vec2> uv = p.uv;
+  const int moves = in.ConsumeIntegralInRange(0, 3);
+  for (int k = 0; k < moves; ++k)
+    uv[in.ConsumeIntegralInRange<int32_t>(0, V - 1)] = {in.ConsumeProbability<double>(), in.ConsumeProbability<double>()};
+  checkMetrics(mesh, textureStretch(mesh, uv), "textureStretch");
+  return 0;
+}
