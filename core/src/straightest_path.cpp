@@ -40,10 +40,6 @@ struct Exit {
   int32_t face2 = -1;     // second face when the segment runs along an edge
 };
 
-bool contains(const std::vector<int32_t>& faces, int32_t f) {
-  return f >= 0 && std::find(faces.begin(), faces.end(), f) != faces.end();
-}
-
 }  // namespace
 
 struct StraightestPathTracer::Walk {
@@ -75,13 +71,13 @@ struct StraightestPathTracer::Walk {
   /// inside it: at D (reached) or back at S (returned to source).
   bool segment(const Vec3& P, const Vec3& Q, int32_t f1, int32_t f2, bool first) {
     ++out.facesCrossed;
-    if ((contains(tr.targetFaces_, f1) || contains(tr.targetFaces_, f2)) && onSegment(D, P, Q)) {
+    if ((tr.isTargetFace(f1) || tr.isTargetFace(f2)) && onSegment(D, P, Q)) {
       out.length += norm(D - P);
       emit(dest, D);
       out.status = TraceStatus::Reached;
       return true;
     }
-    if (!first && (contains(tr.sourceFaces_, f1) || contains(tr.sourceFaces_, f2)) &&
+    if (!first && (tr.isSourceFace(f1) || tr.isSourceFace(f2)) &&
         onSegment(tr.sourcePosition_, P, Q)) {
       out.length += norm(tr.sourcePosition_ - P);
       emit(tr.source_, tr.sourcePosition_);
@@ -247,6 +243,9 @@ StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfaceP
   maxSteps_ = options.maxSteps > 0 ? options.maxSteps
                                    : 2 * static_cast<int64_t>(mesh.numFaces()) + mesh.numVertices() + 16;
   incidentFaces(mesh, source, sourceFaces_);
+  sourceFace_.assign(mesh.numFaces(), 0);
+  for (int32_t f : sourceFaces_) sourceFace_[f] = 1;
+  targetStamp_.assign(mesh.numFaces(), 0);
   edgeStamp_.assign(3 * static_cast<size_t>(mesh.numFaces()), 0);
   vertexStamp_.assign(mesh.numVertices(), 0);
   meanEdge_ = meanEdge;
@@ -301,6 +300,11 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
   if (!plane) return singlePoint(TraceStatus::DegeneratePlane);
   plane_ = *plane;
   incidentFaces(mesh_, destination, targetFaces_);
+  if (++targetEpoch_ == 0) {
+    std::fill(targetStamp_.begin(), targetStamp_.end(), 0);
+    targetEpoch_ = 1;
+  }
+  for (int32_t f : targetFaces_) targetStamp_[f] = targetEpoch_;
   const Vec3 t = normalized(SD - base_.normal * dot(base_.normal, SD));
   walk(destination, plane_, t, true, r);
   if (r.status != TraceStatus::Reached) {

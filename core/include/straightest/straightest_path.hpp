@@ -81,6 +81,11 @@ class StraightestPathTracer {
   int64_t maxSteps_ = 0;
   std::vector<int32_t> sourceFaces_;
   std::vector<int32_t> targetFaces_;
+  std::vector<uint8_t> sourceFace_;     // per face: contains the source
+  std::vector<uint32_t> targetStamp_;   // per face: == targetEpoch_ when it contains the destination
+  uint32_t targetEpoch_ = 0;
+  bool isSourceFace(int32_t f) const { return f >= 0 && sourceFace_[f]; }
+  bool isTargetFace(int32_t f) const { return f >= 0 && targetStamp_[f] == targetEpoch_; }
   std::vector<int32_t> fan_;  // scratch: faces around the current vertex
   std::vector<uint32_t> edgeStamp_, vertexStamp_;
   uint32_t epoch_ = 0;
