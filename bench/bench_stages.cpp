@@ -1,0 +1,119 @@
+// Benchmark of every stage on one mesh, as one JSON line: load, source, base plane, all-boundary
+// traces, then the measured-boundary parameterization's boundary, weights, solve and metrics; the
+// median of `repeats` runs per stage and the process's peak memory. Built natively and to WASM from
+// this one source so scripts/bench.mjs can put the two side by side. Never pass/fail.
+//   bench_stages TARGET MESH [REPEATS]     MESH: a file, heightfield:N or sample:NAME
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "straightest/geodesic_distance.hpp"
+#include "straightest/mesh_io.hpp"
+#include "straightest/parameterize.hpp"
+#include "straightest/samples.hpp"
+#include "straightest/straightest_path.hpp"
+
+#ifdef __EMSCRIPTEN__
+#include <emscripten/heap.h>
+static double peakMemoryMB() { return emscripten_get_heap_size() / 1048576.0; }  // memory only grows
+#else
+#include <sys/resource.h>
+static double peakMemoryMB() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // KiB on Linux
+}
+#endif
+
+using namespace straightest;
+using Clock = std::chrono::steady_clock;
+
+static double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+static Expected<TriMesh> open(const std::string& spec) {
+  if (spec.rfind("heightfield:", 0) == 0) return makeHeightField(std::atoi(spec.c_str() + 12));
+  if (spec.rfind("sample:", 0) == 0) return makeSample(spec.substr(7));
+  return loadMeshFile(spec);
+}
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: bench_stages TARGET MESH [REPEATS]\n");
+    return 2;
+  }
+  const std::string target = argv[1], spec = argv[2];
+  const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
+  std::map<std::string, std::vector<double>> stage;
+  int64_t vertices = 0, faces = 0, paths = 0, reached = 0, crossed = 0;
+  double l2 = 0;
+  bool bijective = false;
+  // One extra run first, not counted: it warms caches and, in WASM, lets the engine tier up from its
+  // baseline compiler to the optimizing one.
+  for (int r = -1; r < repeats; ++r) {
+    auto t = Clock::now();
+    auto loaded = open(spec);
+    if (!loaded) {
+      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                  loaded.error().message.c_str());
+      return 2;
+    }
+    const TriMesh mesh = std::move(loaded).value();
+    const double loadMs = msSince(t);
+    if (r >= 0) stage["load"].push_back(loadMs);
+    vertices = mesh.numVertices();
+    faces = mesh.numFaces();
+    t = Clock::now();
+    const int32_t source = defaultSource(mesh).value();
+    const double sourceMs = msSince(t);
+    t = Clock::now();
+    const BasePlane base = basePlane(mesh, SurfacePoint::vertex(source));
+    const double baseMs = msSince(t);
+    (void)base;
+    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), false);
+    if (r >= 0) {
+      stage["source"].push_back(sourceMs);
+      stage["base_plane"].push_back(baseMs);
+      stage["traces"].push_back(batch.prepareMs + batch.traceMs);
+    }
+    paths = static_cast<int64_t>(batch.status.size());
+    reached = batch.reached();
+    crossed = 0;
+    for (int64_t c : batch.facesCrossed) crossed += c;
+    ParamOptions options;
+    options.autoSource = false;
+    options.source = SurfacePoint::vertex(source);
+    const auto p = parameterize(mesh, options);
+    if (!p) {
+      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                  p.error().message.c_str());
+      return 2;
+    }
+    const ParamTimings& pt = p.value().timingsMs;
+    l2 = p.value().metrics.l2;
+    bijective = p.value().metrics.bijective;
+    if (r < 0) continue;
+    stage["boundary"].push_back(pt.boundary);
+    stage["weights"].push_back(pt.weights);
+    stage["solve"].push_back(pt.solve);
+    stage["metrics"].push_back(pt.metrics);
+    stage["param_total"].push_back(pt.total);
+  }
+  std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,\"paths\":%lld,"
+              "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
+              target.c_str(), spec.c_str(), static_cast<long long>(vertices), static_cast<long long>(faces), repeats,
+              static_cast<long long>(paths), static_cast<long long>(reached), static_cast<long long>(crossed), l2,
+              bijective ? "true" : "false", peakMemoryMB());
+  bool first = true;
+  for (const char* name : {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics", "param_total"}) {
+    std::vector<double>& v = stage[name];
+    std::sort(v.begin(), v.end());
+    std::printf("%s\"%s\":%.3f", first ? "" : ",", name, v[v.size() / 2]);
+    first = false;
+  }
+  std::printf("}}\n");
+  return 0;
+}
