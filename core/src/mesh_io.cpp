@@ -86,6 +86,30 @@ NumberStatus parseDouble(std::string_view token, double& out) {
   return NumberStatus::Ok;
 }
 
+/// [+-]? (digits [. digits*] | . digits) ([eE] [+-]? digits)? — the numbers tinyobjloader reads the
+/// same way strtod does (it reads hexadecimal floats such as 0x1p3 as 0, silently).
+bool isPlainDecimal(std::string_view t) {
+  size_t i = 0;
+  auto digits = [&] {
+    const size_t start = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i - start;
+  };
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  size_t mantissa = digits();
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == t.size();
+}
+
 bool parseInt64(std::string_view token, int64_t& out) {
   if (token.empty() || token.size() > 19) return false;
   size_t i = 0;
@@ -304,9 +328,9 @@ Expected<std::vector<int64_t>> scanObj(std::string_view text) {
                                                   " has a non-finite coordinate " + quoted(tokens.items[k])};
           return false;
         }
-        if (st != NumberStatus::Ok) {
+        if (st != NumberStatus::Ok || !isPlainDecimal(tokens.items[k])) {
           error = parseError(line, "vertex " + std::to_string(vertices) + ": coordinate " +
-                                       quoted(tokens.items[k]) + " is not a number");
+                                       quoted(tokens.items[k]) + " is not a plain decimal number");
           return false;
         }
       }

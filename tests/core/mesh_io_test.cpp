@@ -168,6 +168,15 @@ TEST(MalformedInput, TenMegabyteLineIsRejectedQuicklyNotHung) {
   EXPECT_TRUE(loadMesh(comment).ok());
 }
 
+TEST(MalformedInput, HexadecimalObjCoordinateIsRejectedNotReadAsZero) {
+  // Found by fuzz_obj: strtod reads 0x1p3 as 8, tinyobjloader as 0 — a silent wrong answer.
+  auto mesh = loadMeshFile(dataPath("../fuzz/regressions/fuzz_obj/hex_float_read_as_zero.obj"));
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::Parse);
+  EXPECT_NE(mesh.error().message.find("line 3"), std::string::npos) << mesh.error().message;
+  EXPECT_TRUE(loadMesh("v 0 0 0\nv 1.5e+0 0 0\nv -.5 1. 0\nf 1 2 3\n").ok());  // plain decimals still read
+}
+
 TEST(MalformedInput, MissingFileIsAnIoError) {
   EXPECT_EQ(loadError("does/not/exist.obj").code, ErrorCode::Io);
 }
