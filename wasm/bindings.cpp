@@ -87,6 +87,12 @@ Expected<SurfacePoint> pointFrom(const TriMesh& mesh, const double* s) {
   }
 }
 
+/// A JS progress function (stage, fraction) → false to cancel; undefined or null means none.
+Progress progressFrom(const val& fn) {
+  if (fn.isUndefined() || fn.isNull()) return {};
+  return [fn](const char* stage, double fraction) { return !fn(std::string(stage), fraction).isFalse(); };
+}
+
 val pointToJs(const SurfacePoint& p) {
   val o = val::object();
   switch (p.kind) {
@@ -162,7 +168,8 @@ class MeshHandle {
   }
 
   /// targetSpecs: 5 numbers per target (see pointFrom); an empty array means the boundary.
-  val straightestPaths(const val& sourceSpec, const val& targetSpecs, bool boundary, bool keepPoints) const {
+  val straightestPaths(const val& sourceSpec, const val& targetSpecs, bool boundary, bool keepPoints,
+                       const val& progress) const {
     return guarded([&] {
       const auto spec = emscripten::convertJSArrayToNumberVector<double>(sourceSpec);
       auto source = pointFrom(*mesh_, spec.data());
@@ -179,7 +186,9 @@ class MeshHandle {
           targets.push_back(t.value());
         }
       }
-      const PathBatch batch = traceStraightestPaths(*mesh_, source.value(), std::move(targets), keepPoints);
+      const PathBatch batch =
+          traceStraightestPaths(*mesh_, source.value(), std::move(targets), keepPoints, progressFrom(progress));
+      if (batch.cancelled) return errorObject("cancelled", "straightest paths cancelled");
       const size_t n = batch.status.size();
       std::vector<uint8_t> status(n);
       std::vector<uint32_t> crossed(n), offsets(batch.offsets.size());
@@ -242,7 +251,7 @@ class MeshHandle {
   }
 
   val parameterizeMesh(const val& sourceSpec, const std::string& boundary, const std::string& weights,
-                       const std::string& solver) const {
+                       const std::string& solver, const val& progress) const {
     return guarded([&] {
       ParamOptions options;
       auto b = parseBoundaryChoice(boundary);
@@ -261,7 +270,7 @@ class MeshHandle {
         options.autoSource = false;
         options.source = source.value();
       }
-      auto result = parameterize(*mesh_, options);
+      auto result = parameterize(*mesh_, options, progressFrom(progress));
       if (!result) return errorObject(result.error());
       const Parameterization& p = result.value();
       const StretchMetrics& m = p.metrics;

@@ -28,7 +28,7 @@ export interface MeshInfo {
 export type ErrorCategory =
   | 'io' | 'unsupported_format' | 'parse' | 'empty' | 'too_large' | 'non_finite' | 'index_out_of_range'
   | 'invalid_face' | 'duplicate_face' | 'degenerate' | 'non_manifold_edge' | 'non_manifold_vertex' | 'non_orientable'
-  | 'topology' | 'invalid_argument' | 'internal';
+  | 'topology' | 'invalid_argument' | 'cancelled' | 'internal';
 
 export class StraightestError extends Error {
   readonly category: ErrorCategory;
@@ -82,7 +82,12 @@ export interface StraightestPathsOptions {
   targets?: 'boundary' | SurfacePoint[];
   /** Return the points of each path (default true). */
   points?: boolean;
+  /** Called with ('trace', fraction) while tracing; return false to cancel (throws 'cancelled'). */
+  onProgress?: ProgressCallback;
 }
+
+/** (stage, fraction in [0, 1]) → return false to cancel. Called synchronously from the WASM work. */
+export type ProgressCallback = (stage: string, fraction: number) => boolean | void;
 
 export type BoundaryKind = 'measured' | 'circle' | 'square';
 export type WeightKind = 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform';
@@ -95,6 +100,8 @@ export interface ParameterizeOptions {
   weights?: WeightKind;
   /** Default 'multigrid' (BiCGSTAB + algebraic multigrid); 'lu' direct; 'bicgstab' with ILUT. */
   solver?: 'multigrid' | 'lu' | 'bicgstab';
+  /** Stages 'source', 'trace', 'weights', 'solve', 'metrics'; return false to cancel (throws 'cancelled'). */
+  onProgress?: ProgressCallback;
 }
 
 export interface Parameterization {

@@ -44,6 +44,16 @@ function pointSpec(p, what, allowAuto) {
   throw new StraightestError(`${what} must be ${allowAuto ? "'auto', " : ''}a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}; got ${JSON.stringify(p)}`, 'invalid_argument');
 }
 
+/**
+ * onProgress(stage, fraction) is called from inside the WASM work (synchronously, ~100 times per stage
+ * at most); returning false cancels and the call throws a StraightestError with category 'cancelled'.
+ */
+function progressCallback(onProgress) {
+  if (onProgress === undefined || onProgress === null) return null;
+  if (typeof onProgress !== 'function') throw new TypeError('onProgress must be a function (stage, fraction) => boolean | void');
+  return (stage, fraction) => onProgress(stage, fraction) !== false;
+}
+
 const finalizer = typeof FinalizationRegistry === 'function'
   ? new FinalizationRegistry((handle) => { try { handle.delete(); } catch { /* already gone */ } })
   : null;
@@ -86,12 +96,12 @@ export class Mesh {
    * statuses, faces crossed, and one packed Float32Array of points with offsets (path i is points
    * offsets[i]..offsets[i+1], 3 floats each).
    */
-  straightestPaths({ source = 'auto', targets = 'boundary', points = true } = {}) {
+  straightestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
     const src = pointSpec(source, 'source', true);
     const boundary = targets === 'boundary';
     if (!boundary && !Array.isArray(targets)) throw new StraightestError("targets must be 'boundary' or an array of surface points", 'invalid_argument');
     const flat = boundary ? [] : targets.flatMap((t, i) => pointSpec(t, `targets[${i}]`, false));
-    const r = unwrap(this.#live().straightestPaths(src, flat, boundary, !!points));
+    const r = unwrap(this.#live().straightestPaths(src, flat, boundary, !!points, progressCallback(onProgress)));
     const names = this.#statusNames;
     const statuses = Array.from(r.statusCodes, (c) => names[c]);
     const reached = statuses.filter((s) => s === 'reached').length;
@@ -124,8 +134,9 @@ export class Mesh {
    * the three); weights 'shape-preserving' (default), 'mean-value', 'cotan' or 'uniform'.
    * Returns uv (2 floats per vertex, in [0, 1]²), per-face stretch and the metrics.
    */
-  parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid' } = {}) {
-    return unwrap(this.#live().parameterize(pointSpec(source, 'source', true), String(boundary), String(weights), String(solver)));
+  parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid', onProgress } = {}) {
+    return unwrap(this.#live().parameterize(pointSpec(source, 'source', true), String(boundary), String(weights), String(solver),
+      progressCallback(onProgress)));
   }
 
   /** The mesh as OBJ text (input vertex order); with uv (2 per vertex) also `vt` lines. */

@@ -144,7 +144,7 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
   return moved;
 }
 
-Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source) {
+Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress) {
   BoundaryMap map;
   map.kind = BoundaryKind::Measured;
   map.loop = mesh.boundaryLoops().at(0);
@@ -159,7 +159,8 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
   }
   if (!(total > 0)) return Error{ErrorCode::Topology, "the boundary subtends no angle at the source"};
   const auto t0 = std::chrono::steady_clock::now();
-  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), false);
+  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), false, progress);
+  if (batch.cancelled) return Error{ErrorCode::Cancelled, "cancelled while tracing the boundary"};
   map.traceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::vector<double> fallback;
   map.polygon.resize(n);

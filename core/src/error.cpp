@@ -19,6 +19,7 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::NonOrientable: return "non_orientable";
     case ErrorCode::Topology: return "topology";
     case ErrorCode::InvalidArgument: return "invalid_argument";
+    case ErrorCode::Cancelled: return "cancelled";
   }
   return "unknown";
 }

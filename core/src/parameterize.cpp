@@ -21,7 +21,7 @@ double msSince(Clock::time_point t) { return std::chrono::duration<double, std::
 /// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; one factorization, two right-hand
 /// sides. Returns the relative residual.
 double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const BoundaryMap& boundary, LinearSolver solver,
-                     std::vector<Vec2>& uv) {
+                     std::vector<Vec2>& uv, const Progress& progress, bool& cancelled) {
   const int32_t nv = mesh.numVertices();
   uv.assign(nv, Vec2{0, 0});
   for (size_t i = 0; i < boundary.loop.size(); ++i) uv[boundary.loop[i]] = boundary.polygon[i];
@@ -54,14 +54,27 @@ double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const Bounda
   for (const Vec2& q : boundary.polygon) { cx += q[0]; cy += q[1]; }
   guess.col(0).setConstant(cx / boundary.polygon.size());
   guess.col(1).setConstant(cy / boundary.polygon.size());
+  // Iterations run in chunks of 10 so progress can be reported (and cancelled) as the residual falls.
+  constexpr double kTolerance = 1e-10;
   auto iterate = [&](auto& it) {
-    it.setTolerance(1e-10);
-    it.setMaxIterations(1000);
+    it.setTolerance(kTolerance);
+    it.setMaxIterations(10);
     it.compute(A);
     if (it.info() != Eigen::Success) return false;
     for (int c = 0; c < 2; ++c) {
-      x.col(c) = it.solveWithGuess(rhs.col(c), guess.col(c));
-      if (it.info() != Eigen::Success) return false;
+      Eigen::VectorXd xc = guess.col(c);
+      const double r0 = std::max((A * xc - rhs.col(c)).norm() / std::max(rhs.col(c).norm(), 1e-300), 1e-300);
+      for (int chunk = 0;; ++chunk) {
+        xc = it.solveWithGuess(rhs.col(c), xc);
+        if (it.info() == Eigen::Success) break;
+        if (chunk >= 100 || !std::isfinite(it.error())) return false;  // 1000 iterations: give up, use LU
+        const double done = std::log(r0 / std::max(it.error(), kTolerance)) / std::log(r0 / kTolerance);
+        if (!report(progress, "solve", 0.5 * c + 0.5 * std::clamp(done, 0.0, 1.0))) {
+          cancelled = true;
+          return false;
+        }
+      }
+      x.col(c) = xc;
     }
     return true;
   };
@@ -74,6 +87,7 @@ double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const Bounda
     it.preconditioner().setFillfactor(4);
     solved = iterate(it);
   }
+  if (cancelled) return 0;
   if (!solved) {
     Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
     lu.compute(Eigen::SparseMatrix<double>(A));
@@ -144,13 +158,15 @@ Expected<bool> requireDisk(const TriMesh& mesh) {
                                     "one component); found " + found};
 }
 
-Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options) {
+Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options, const Progress& progress) {
+  const Error cancelled{ErrorCode::Cancelled, "parameterization cancelled"};
   const auto start = Clock::now();
   auto disk = requireDisk(mesh);
   if (!disk) return disk.error();
   Parameterization result;
   result.weights = options.weights;
 
+  if (!report(progress, "source", 0)) return cancelled;
   auto t = Clock::now();
   const bool needsSource = options.boundary == BoundaryChoice::Measured || options.boundary == BoundaryChoice::Auto;
   if (options.autoSource) {
@@ -174,7 +190,8 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   std::vector<BoundaryMap> boundaries;
   std::string measuredError;
   if (needsSource) {
-    auto m = measuredBoundary(mesh, result.source);
+    auto m = measuredBoundary(mesh, result.source, progress);
+    if (!m && m.error().code == ErrorCode::Cancelled) return m.error();
     if (m) {
       boundaries.push_back(std::move(m).value());
       result.timingsMs.trace = boundaries.back().traceMs;
@@ -188,6 +205,7 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
     boundaries.push_back(squareBoundary(mesh));
   result.timingsMs.boundary = msSince(t) - result.timingsMs.trace;
 
+  if (!report(progress, "weights", 0)) return cancelled;
   t = Clock::now();
   const InteriorWeights W = interiorWeights(mesh, options.weights);
   result.weightFallbacks = W.uniformFallbacks;
@@ -197,8 +215,11 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   for (BoundaryMap& boundary : boundaries) {
     t = Clock::now();
     std::vector<Vec2> uv;
-    const double residual = solveInterior(mesh, W, boundary, options.solver, uv);
+    bool stopped = false;
+    const double residual = solveInterior(mesh, W, boundary, options.solver, uv, progress, stopped);
+    if (stopped) return cancelled;
     result.timingsMs.solve += msSince(t);
+    if (!report(progress, "metrics", 0)) return cancelled;
     t = Clock::now();
     StretchMetrics metrics = textureStretch(mesh, uv);
     result.timingsMs.metrics += msSince(t);
@@ -219,6 +240,7 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   }
   if (!haveBest) return Error{ErrorCode::Topology, "no boundary map could be built"};
   normalizeIntoUnitSquare(mesh, result.uv, result.boundaryPolygon);
+  report(progress, "metrics", 1.0);
   result.timingsMs.total = msSince(start);
   return result;
 }

@@ -326,7 +326,7 @@ std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
 }
 
 PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source, std::vector<SurfacePoint> targets,
-                                bool keepPoints) {
+                                bool keepPoints, const Progress& progress) {
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
   PathBatch batch;
@@ -345,8 +345,14 @@ PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
   batch.offsets.reserve(n + 1);
   batch.offsets.push_back(0);
   const auto t1 = Clock::now();
-  for (const SurfacePoint& target : batch.targets) {
-    const StraightestPath& path = tracer.trace(target);
+  const size_t step = std::max<size_t>(1, n / 100);
+  for (size_t i = 0; i < n; ++i) {
+    if (i % step == 0 && !report(progress, "trace", static_cast<double>(i) / n)) {
+      batch.cancelled = true;
+      batch.targets.resize(i);
+      break;
+    }
+    const StraightestPath& path = tracer.trace(batch.targets[i]);
     batch.status.push_back(path.status);
     batch.length.push_back(path.length);
     batch.facesCrossed.push_back(path.facesCrossed);
@@ -355,6 +361,7 @@ PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
     batch.offsets.push_back(static_cast<int64_t>(batch.points.size()));
   }
   const auto t2 = Clock::now();
+  if (!batch.cancelled) report(progress, "trace", 1.0);
   batch.prepareMs = ms(t1 - t0);
   batch.traceMs = ms(t2 - t1);
   return batch;

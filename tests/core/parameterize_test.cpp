@@ -1,4 +1,5 @@
 // Measured-boundary parameterization and texture stretch: facts a flattening must satisfy.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -6,6 +7,7 @@
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
+#include "straightest/straightest_path.hpp"
 #include "test_meshes.hpp"
 #include "test_util.hpp"
 
@@ -201,6 +203,50 @@ TEST(ObjWriter, WritesOneVtPerVertexInTheInputOrder) {
   EXPECT_EQ(reread.value().triangles(), mesh.triangles());
   EXPECT_NE(text.find(" 1/1"), std::string::npos);  // faces as v/vt with vt = v
   EXPECT_NE(text.find("\nvt "), std::string::npos);
+}
+
+}  // namespace
+}  // namespace straightest
+
+namespace straightest {
+namespace {
+
+TEST(Progress, ParameterizationReportsEveryStageAndCanBeCancelled) {
+  const TriMesh mesh = makeHeightField(60);
+  std::vector<std::string> stages;
+  double lastSolve = -1;
+  bool monotone = true;
+  auto r = parameterize(mesh, {}, [&](const char* stage, double fraction) {
+    if (stages.empty() || stages.back() != stage) stages.push_back(stage);
+    if (std::string(stage) == "solve") {
+      monotone = monotone && fraction >= lastSolve;
+      lastSolve = fraction;
+    }
+    return true;
+  });
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(monotone);
+  EXPECT_EQ(stages.front(), "source");
+  EXPECT_EQ(stages.back(), "metrics");
+  EXPECT_NE(std::find(stages.begin(), stages.end(), "trace"), stages.end());
+  EXPECT_NE(std::find(stages.begin(), stages.end(), "weights"), stages.end());
+  for (const char* stop : {"source", "trace", "weights", "metrics"}) {
+    auto cancelled = parameterize(mesh, {}, [&](const char* stage, double) { return std::string(stage) != stop; });
+    ASSERT_FALSE(cancelled.ok()) << stop;
+    EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled) << stop;
+  }
+}
+
+TEST(Progress, CancelledTraceBatchKeepsTheFinishedPaths) {
+  const TriMesh mesh = makeHeightField(40);
+  int calls = 0;
+  const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(defaultSource(mesh).value()),
+                                                boundaryTargets(mesh), false,
+                                                [&](const char*, double) { return ++calls < 10; });
+  EXPECT_TRUE(batch.cancelled);
+  EXPECT_EQ(batch.targets.size(), batch.status.size());
+  EXPECT_GT(batch.status.size(), 0u);
+  EXPECT_LT(batch.status.size(), boundaryTargets(mesh).size());
 }
 
 }  // namespace

@@ -68,3 +68,21 @@ test('straightest/three applyUV sets the uv attribute of a geometry', () => {
   assert.throws(() => applyUV(geometry, new Float32Array(4)), RangeError);
   mesh.delete();
 });
+
+test('progress callbacks report the stages and can cancel', () => {
+  const mesh = st.sample('mountain');
+  const seen = [];
+  mesh.parameterize({ onProgress: (stage, fraction) => { seen.push([stage, fraction]); } });
+  const stages = [...new Set(seen.map(([s]) => s))];
+  assert.deepEqual(stages.filter((s) => s !== 'solve'), ['source', 'trace', 'weights', 'metrics']);
+  assert.ok(seen.every(([, f]) => f >= 0 && f <= 1));
+  assert.deepEqual(seen.at(-1), ['metrics', 1]);
+  assert.throws(() => mesh.parameterize({ onProgress: (stage) => stage !== 'weights' }), (e) => e.category === 'cancelled');
+  let calls = 0;
+  assert.throws(() => mesh.straightestPaths({ onProgress: () => ++calls < 5 }), (e) => e.category === 'cancelled');
+  const traced = [];
+  mesh.straightestPaths({ points: false, onProgress: (s, f) => traced.push(f) });
+  assert.equal(traced.at(-1), 1);
+  assert.throws(() => mesh.parameterize({ onProgress: 42 }), TypeError);
+  mesh.delete();
+});

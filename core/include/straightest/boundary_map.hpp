@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "straightest/progress.hpp"
 #include "straightest/surface_point.hpp"
 
 namespace straightest {
@@ -38,7 +39,7 @@ struct BoundaryMap {
 };
 
 /// Requires a disk (checked by the caller). `source` must be an interior surface point for measured.
-Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source);
+Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress = {});
 BoundaryMap circleBoundary(const TriMesh& mesh);
 BoundaryMap squareBoundary(const TriMesh& mesh);
 

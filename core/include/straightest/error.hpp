@@ -26,6 +26,7 @@ enum class ErrorCode {
   NonOrientable,      // e.g. a Möbius strip: no consistent orientation exists
   Topology,           // the algorithm needs another topology (disk, boundary, ...)
   InvalidArgument,    // an option or index given by the caller is wrong
+  Cancelled,          // a progress callback asked to stop
 };
 
 /// Stable snake_case name of a category ("non_manifold_edge"); used in JSON and JS errors.

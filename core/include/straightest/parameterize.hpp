@@ -62,6 +62,9 @@ struct Parameterization {
 /// Checks that the mesh is a single disk (message says what was found otherwise).
 Expected<bool> requireDisk(const TriMesh& mesh);
 
-Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options);
+/// Progress stages: "source", "trace", "weights", "solve", "metrics" (auto: "trace" once, then "solve"
+/// and "metrics" per candidate). Cancelling returns a Cancelled error.
+Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options,
+                                        const Progress& progress = {});
 
 }  // namespace straightest

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "straightest/base_plane.hpp"
+#include "straightest/progress.hpp"
 
 namespace straightest {
 
@@ -106,14 +107,15 @@ struct PathBatch {
   std::vector<Vec3> points;
   std::vector<int64_t> offsets;
   double prepareMs = 0, traceMs = 0;  // setup (base plane, tables) and all traces
+  bool cancelled = false;             // the progress callback stopped it: only the first paths are here
   int64_t reached() const;
 };
 
 /// The vertices of the longest boundary loop, in order (empty for a closed mesh).
 std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh);
 
-/// Traces every target (each a valid surface point; see validateSurfacePoint).
+/// Traces every target (each a valid surface point; see validateSurfacePoint). Progress stage: "trace".
 PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
-                                std::vector<SurfacePoint> targets, bool keepPoints);
+                                std::vector<SurfacePoint> targets, bool keepPoints, const Progress& progress = {});
 
 }  // namespace straightest
