@@ -38,6 +38,7 @@ struct Exit {
   Vec3 position;
   int32_t face = -1;      // face holding the segment to the exit
   int32_t face2 = -1;     // second face when the segment runs along an edge
+  double dTail = 0, dHead = 0;  // signed distances of the crossed halfedge's ends (reused next step)
 };
 
 }  // namespace
@@ -89,10 +90,17 @@ struct StraightestPathTracer::Walk {
   }
 
   Exit crossing(int32_t h, int32_t face) const {
-    const double da = tr.signedDistance(mesh.tail(h)), db = tr.signedDistance(mesh.head(h));
+    return crossing(h, face, tr.signedDistance(mesh.tail(h)), tr.signedDistance(mesh.head(h)));
+  }
+
+  /// The crossing of halfedge h whose endpoints have the (snapped, strictly opposite) signed distances
+  /// da (tail) and db (head).
+  Exit crossing(int32_t h, int32_t face, double da, double db) const {
     Exit e;
     e.valid = true;
     e.halfedge = h;
+    e.dTail = da;
+    e.dHead = db;
     e.t = da / (da - db);
     e.position = mesh.position(mesh.tail(h)) * (1 - e.t) + mesh.position(mesh.head(h)) * e.t;
     e.face = face;
@@ -200,8 +208,10 @@ struct StraightestPathTracer::Walk {
       // Enter face g through k (u → w, signs strictly opposite); leave through the vertex o on the
       // plane or through the other edge with opposite signs.
       const int32_t g = TriMesh::face(k);
-      const int32_t u = mesh.tail(k), o = mesh.head(TriMesh::next(k));
-      const double du = tr.signedDistance(u), dO = tr.signedDistance(o);
+      // k runs opposite to the crossed halfedge: its tail is that halfedge's head. Only the opposite
+      // vertex o is new.
+      const int32_t o = mesh.head(TriMesh::next(k));
+      const double du = e.dHead, dw = e.dTail, dO = tr.signedDistance(o);
       if (dO == 0) {
         Exit ev;
         ev.valid = true;
@@ -211,7 +221,8 @@ struct StraightestPathTracer::Walk {
         ev.face = g;
         e = ev;
       } else {
-        e = crossing((dO > 0) != (du > 0) ? TriMesh::prev(k) : TriMesh::next(k), g);
+        // prev(k) runs o → u, next(k) runs w → o.
+        e = (dO > 0) != (du > 0) ? crossing(TriMesh::prev(k), g, dO, du) : crossing(TriMesh::next(k), g, dw, dO);
       }
     }
   }
