@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -34,19 +35,17 @@ std::string quoted(std::string_view token) {
   return "'" + s + (token.size() > 40 ? "...'" : "'");
 }
 
-/// Splits text into lines ('\n', with a trailing '\r' removed), calling fn(lineNumber, line) until fn
-/// returns false. Linear in the input.
+/// Splits text into lines ending in "\n", "\r\n" or a lone "\r" (as tinyobjloader does, so both
+/// readers see the same lines), calling fn(lineNumber, line) until fn returns false. Linear.
 template <class Fn>
 void forEachLine(std::string_view text, Fn&& fn) {
   int64_t number = 0;
   size_t pos = 0;
   while (pos < text.size()) {
-    size_t end = text.find('\n', pos);
+    size_t end = text.find_first_of("\r\n", pos);
     if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (!fn(++number, line)) return;
-    pos = end + 1;
+    if (!fn(++number, text.substr(pos, end - pos))) return;
+    pos = end + ((end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ? 2 : 1);
   }
 }
 
@@ -111,11 +110,11 @@ bool isPlainDecimal(std::string_view t) {
 }
 
 bool parseInt64(std::string_view token, int64_t& out) {
-  if (token.empty() || token.size() > 19) return false;
+  if (token.empty() || token.size() > 19) return false;  // with a sign: at most 18 digits, no overflow
   size_t i = 0;
   bool negative = false;
   if (token[0] == '-' || token[0] == '+') { negative = token[0] == '-'; i = 1; }
-  if (i == token.size()) return false;
+  if (i == token.size() || token.size() - i > 18) return false;
   int64_t v = 0;
   for (; i < token.size(); ++i) {
     if (token[i] < '0' || token[i] > '9') return false;
@@ -301,11 +300,18 @@ Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits)
 
 // ---------------------------------------------------------------- OBJ
 
-/// Our pass over an OBJ: checks coordinates and face corners, records each face's line.
-Expected<std::vector<int64_t>> scanObj(std::string_view text) {
+/// What our own pass over an OBJ reads: every coordinate (strtod, correctly rounded) and every face
+/// corner's vertex index resolved to 0-based (negative = relative), with the line of each face.
+struct ObjScan {
+  std::vector<Vec3> positions;
+  std::vector<int64_t> corners;      // resolved vertex index per corner
+  std::vector<int64_t> faceStart{0};  // corners of face f: [faceStart[f], faceStart[f+1])
   std::vector<int64_t> faceLines;
+};
+
+Expected<ObjScan> scanObj(std::string_view text) {
+  ObjScan scan;
   std::optional<Error> error;
-  int64_t vertices = 0;
   Tokens tokens;
   forEachLine(text, [&](int64_t line, std::string_view raw) {
     size_t i = 0;
@@ -314,63 +320,73 @@ Expected<std::vector<int64_t>> scanObj(std::string_view text) {
     const char kind = raw[i];
     if (kind != 'v' && kind != 'f') return true;
     tokenize(stripComment(raw.substr(i + 2)), tokens, 4);
+    const int64_t vertex = static_cast<int64_t>(scan.positions.size());
     if (kind == 'v') {
       if (tokens.count < 3) {
-        error = parseError(line, "vertex " + std::to_string(vertices) + " has " + std::to_string(tokens.count) +
+        error = parseError(line, "vertex " + std::to_string(vertex) + " has " + std::to_string(tokens.count) +
                                      " coordinates, expected at least 3");
         return false;
       }
+      double c[3];
       for (int k = 0; k < 3; ++k) {
-        double value;
-        const NumberStatus st = parseDouble(tokens.items[k], value);
+        const NumberStatus st = parseDouble(tokens.items[k], c[k]);
         if (st == NumberStatus::NonFinite) {
-          error = Error{ErrorCode::NonFinite, "line " + std::to_string(line) + ": vertex " + std::to_string(vertices) +
+          error = Error{ErrorCode::NonFinite, "line " + std::to_string(line) + ": vertex " + std::to_string(vertex) +
                                                   " has a non-finite coordinate " + quoted(tokens.items[k])};
           return false;
         }
         if (st != NumberStatus::Ok || !isPlainDecimal(tokens.items[k])) {
-          error = parseError(line, "vertex " + std::to_string(vertices) + ": coordinate " +
-                                       quoted(tokens.items[k]) + " is not a plain decimal number");
+          error = parseError(line, "vertex " + std::to_string(vertex) + ": coordinate " + quoted(tokens.items[k]) +
+                                       " is not a plain decimal number");
           return false;
         }
       }
-      ++vertices;
-    } else {
-      const int64_t face = static_cast<int64_t>(faceLines.size());
-      if (tokens.count < 3) {
-        error = Error{ErrorCode::InvalidFace, "line " + std::to_string(line) + ": face " + std::to_string(face) +
-                                                  " has " + std::to_string(tokens.count) +
-                                                  " vertices (at least 3 needed)"};
+      scan.positions.push_back({c[0], c[1], c[2]});
+      return true;
+    }
+    const int64_t face = static_cast<int64_t>(scan.faceLines.size());
+    if (tokens.count < 3) {
+      error = Error{ErrorCode::InvalidFace, "line " + std::to_string(line) + ": face " + std::to_string(face) +
+                                                " has " + std::to_string(tokens.count) + " vertices (at least 3 needed)"};
+      return false;
+    }
+    tokenize(stripComment(raw.substr(i + 2)), tokens, tokens.count);
+    for (std::string_view corner : tokens.items) {
+      int64_t index = 0;
+      if (!parseInt64(corner.substr(0, corner.find('/')), index)) {
+        error = parseError(line, "face " + std::to_string(face) + ": vertex index " + quoted(corner) +
+                                     " is not an integer (or too large)");
         return false;
       }
-      tokenize(stripComment(raw.substr(i + 2)), tokens, tokens.count);
-      for (std::string_view corner : tokens.items) {
-        int64_t index = 0;
-        const std::string_view v = corner.substr(0, corner.find('/'));
-        if (!parseInt64(v, index)) {
-          error = parseError(line, "face " + std::to_string(face) + ": vertex index " + quoted(corner) +
-                                       " is not an integer");
-          return false;
-        }
-        if (index == 0) {
-          error = Error{ErrorCode::IndexOutOfRange, "line " + std::to_string(line) + ": face " +
-                                                        std::to_string(face) +
-                                                        " uses vertex index 0 (OBJ indices start at 1)"};
-          return false;
-        }
+      const int64_t resolved = index > 0 ? index - 1 : vertex + index;
+      if (index == 0 || resolved < 0 || resolved > std::numeric_limits<int32_t>::max()) {
+        error = Error{ErrorCode::IndexOutOfRange,
+                      "line " + std::to_string(line) + ": face " + std::to_string(face) + " uses vertex index " +
+                          std::to_string(index) +
+                          (index == 0 ? " (OBJ indices start at 1)"
+                                      : " (" + std::to_string(vertex) + " vertices are defined before this line)")};
+        return false;
       }
-      faceLines.push_back(line);
+      scan.corners.push_back(resolved);
     }
+    scan.faceStart.push_back(static_cast<int64_t>(scan.corners.size()));
+    scan.faceLines.push_back(line);
     return true;
   });
   if (error) return *error;
-  return faceLines;
+  return scan;
 }
 
+/// tinyobjloader parses the file; our scan read the same numbers independently. Any disagreement (a
+/// number one of them reads differently) is a parse error rather than a silently different mesh.
 Expected<PolygonSoup> parseObj(std::string_view text, const BuildLimits& limits) {
   auto scanned = scanObj(text);
   if (!scanned) return scanned.error();
-  const std::vector<int64_t>& faceLines = scanned.value();
+  const ObjScan& scan = scanned.value();
+  const int64_t nv = static_cast<int64_t>(scan.positions.size());
+  if (nv > limits.maxVertices)
+    return Error{ErrorCode::TooLarge, "file has " + std::to_string(nv) + " vertices, over the limit of " +
+                                          std::to_string(limits.maxVertices)};
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;
@@ -382,32 +398,44 @@ Expected<PolygonSoup> parseObj(std::string_view text, const BuildLimits& limits)
     return Error{ErrorCode::Parse, "OBJ: " + (message.empty() ? std::string("cannot parse") : message)};
   }
   const auto& attrib = reader.GetAttrib();
-  PolygonSoup soup;
-  const int64_t nv = static_cast<int64_t>(attrib.vertices.size() / 3);
-  if (nv > limits.maxVertices)
-    return Error{ErrorCode::TooLarge, "file has " + std::to_string(nv) + " vertices, over the limit of " +
-                                          std::to_string(limits.maxVertices)};
-  soup.positions.resize(nv);
+  if (static_cast<int64_t>(attrib.vertices.size()) != 3 * nv)
+    return Error{ErrorCode::Parse, "OBJ readers disagree on the number of vertices (" + std::to_string(nv) + " vs " +
+                                       std::to_string(attrib.vertices.size() / 3) + "): malformed 'v' lines"};
   for (int64_t v = 0; v < nv; ++v)
-    soup.positions[v] = {attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]};
+    for (int k = 0; k < 3; ++k) {
+      const double ours = scan.positions[v][k], theirs = attrib.vertices[3 * v + k];
+      if (!(std::abs(ours - theirs) <= 1e-12 * std::max(std::abs(ours), std::abs(theirs)) + 1e-300))
+        return Error{ErrorCode::Parse, "vertex " + std::to_string(v) + ": coordinate " + std::to_string(ours) +
+                                           " is read as " + std::to_string(theirs) +
+                                           " by tinyobjloader (an unusual number format); rewrite it plainly"};
+    }
 
+  PolygonSoup soup;
+  soup.positions = scan.positions;
   std::vector<int32_t> polygon;
-  int64_t face = 0;
+  int64_t face = 0, corner = 0;
   for (const auto& shape : reader.GetShapes()) {
     size_t offset = 0;
-    for (const auto corners : shape.mesh.num_face_vertices) {
+    for (const auto count : shape.mesh.num_face_vertices) {
+      const int64_t line = face < static_cast<int64_t>(scan.faceLines.size()) ? scan.faceLines[face] : -1;
+      if (face >= static_cast<int64_t>(scan.faceLines.size()) ||
+          scan.faceStart[face + 1] - scan.faceStart[face] != static_cast<int64_t>(count))
+        return Error{ErrorCode::Parse, "line " + std::to_string(line) + ": OBJ readers disagree on face " +
+                                           std::to_string(face)};
       polygon.clear();
-      const int64_t line = face < static_cast<int64_t>(faceLines.size()) ? faceLines[face] : -1;
-      for (size_t j = 0; j < corners; ++j) {
-        const int index = shape.mesh.indices[offset + j].vertex_index;
-        if (index < 0 || index >= nv)
+      for (size_t j = 0; j < count; ++j, ++corner) {
+        const int64_t index = scan.corners[corner];
+        if (index != shape.mesh.indices[offset + j].vertex_index)
+          return Error{ErrorCode::Parse, "line " + std::to_string(line) + ": OBJ readers disagree on face " +
+                                             std::to_string(face) + "'s vertex index"};
+        if (index >= nv)
           return Error{ErrorCode::IndexOutOfRange,
                        "line " + std::to_string(line) + ": face " + std::to_string(face) + " refers to vertex " +
                            std::to_string(index + 1) + " (1-based), but the file has " + std::to_string(nv) +
                            " vertices"};
-        polygon.push_back(index);
+        polygon.push_back(static_cast<int32_t>(index));
       }
-      offset += corners;
+      offset += count;
       if (polygon.size() == 3) {
         soup.triangles.push_back({polygon[0], polygon[1], polygon[2]});
       } else {
@@ -419,6 +447,9 @@ Expected<PolygonSoup> parseObj(std::string_view text, const BuildLimits& limits)
         return Error{ErrorCode::TooLarge, "file has more than " + std::to_string(limits.maxFaces) + " faces"};
     }
   }
+  if (face != static_cast<int64_t>(scan.faceLines.size()))
+    return Error{ErrorCode::Parse, "OBJ readers disagree on the number of faces (" +
+                                       std::to_string(scan.faceLines.size()) + " vs " + std::to_string(face) + ")"};
   if (nv == 0 && soup.triangles.empty())
     return Error{ErrorCode::UnsupportedFormat, "found neither an OFF header nor OBJ 'v'/'f' lines"};
   return soup;

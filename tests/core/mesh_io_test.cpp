@@ -177,6 +177,29 @@ TEST(MalformedInput, HexadecimalObjCoordinateIsRejectedNotReadAsZero) {
   EXPECT_TRUE(loadMesh("v 0 0 0\nv 1.5e+0 0 0\nv -.5 1. 0\nf 1 2 3\n").ok());  // plain decimals still read
 }
 
+TEST(MalformedInput, FuzzFoundObjDisagreementsAreErrorsNotSilentlyDifferentMeshes) {
+  // Each of these was read differently by tinyobjloader and by a careful reader (found by fuzz_obj).
+  const std::pair<const char*, ErrorCode> cases[] = {
+      {"index_wraps_modulo_2_32.obj", ErrorCode::IndexOutOfRange},  // atoi wrapped 4294967299 to 3
+      {"int64_overflow_index.obj", ErrorCode::Parse},               // 19 digits
+      {"lone_cr_hides_nan.obj", ErrorCode::NonFinite},              // lone CR line breaks; nan is seen
+  };
+  for (const auto& [file, code] : cases) {
+    auto mesh = loadMeshFile(dataPath(std::string("../fuzz/regressions/fuzz_obj/") + file));
+    ASSERT_FALSE(mesh.ok()) << file;
+    EXPECT_EQ(mesh.error().code, code) << file << ": " << mesh.error().message;
+  }
+  // 1e-2147483648 underflows to 0: both readers must agree on exactly that.
+  auto tiny = loadMeshFile(dataPath("../fuzz/regressions/fuzz_obj/tinyobj_exponent_overflow.obj"));
+  ASSERT_TRUE(tiny.ok()) << tiny.error().message;
+  EXPECT_EQ(tiny.value().position(2).z, 0.0);
+  auto off = loadMeshFile(dataPath("../fuzz/regressions/fuzz_off/int64_overflow_count.off"));
+  ASSERT_FALSE(off.ok());
+  EXPECT_EQ(off.error().code, ErrorCode::Parse) << off.error().message;
+  // Old Mac line endings (lone CR) are lines, like in tinyobjloader.
+  EXPECT_TRUE(loadMesh("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", MeshFormat::Obj).ok());
+}
+
 TEST(MalformedInput, MissingFileIsAnIoError) {
   EXPECT_EQ(loadError("does/not/exist.obj").code, ErrorCode::Io);
 }
