@@ -6,10 +6,13 @@
 // every boundary vertex and draws them (the paper's Figure 1 view); clicking the mesh moves the
 // source, shift-clicking adds a destination. The page computes no distances or paths itself: it
 // only draws the worker's arrays, picks points on the mesh and orchestrates the requests.
+// Once the paths are drawn, the parameterization view (param-view.js) flattens the mesh; it owns
+// the panels, the texture and the stretch heat map of the parameterization.
 //
 // Test hooks: document.body.dataset.state is 'loading' | 'ready' | 'error' ('ready' once the mesh
 // and its paths are drawn), and window.__straightest holds { state, samples, lastInfo, lastError,
-// renders, background, traces, paths: { count, reached, source, traceMs } }.
+// renders, background, traces, paths: { count, reached, source, traceMs } } and the hooks of the
+// parameterization view (param, paramError, parameterizations, compare: see param-view.js).
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -18,6 +21,7 @@ import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js
 import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
+import { createParamView } from './param-view.js';
 
 const BACKGROUND = 0x14171c;
 const MESH_COLOR = 0xd9b982;
@@ -52,14 +56,17 @@ function setState(state) {
 // ------------------------------------------------------------------ worker client
 
 const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
-const pending = new Map(); // request id -> { resolve, reject }
+const pending = new Map(); // request id -> { resolve, reject, onProgress }
 let nextId = 1;
 
-/** Sends a request to the worker; resolves with its reply, rejects with an Error (+ category). */
-function request(type, payload = {}, transfer = []) {
+/**
+ * Sends a request to the worker; resolves with its reply, rejects with an Error (+ category).
+ * onProgress receives the 'progress' messages the worker sends before the reply.
+ */
+function request(type, payload = {}, transfer = [], onProgress = null) {
   const id = nextId++;
   return new Promise((resolve, reject) => {
-    pending.set(id, { resolve, reject });
+    pending.set(id, { resolve, reject, onProgress });
     worker.postMessage({ id, type, ...payload }, transfer);
   });
 }
@@ -67,6 +74,10 @@ function request(type, payload = {}, transfer = []) {
 worker.addEventListener('message', ({ data }) => {
   const entry = pending.get(data.id);
   if (!entry) return;
+  if (data.type === 'progress') {
+    entry.onProgress?.(data);
+    return;
+  }
   pending.delete(data.id);
   if (data.type === 'error') {
     const err = new Error(data.message);
@@ -176,6 +187,21 @@ function showMesh(positions, indices) {
   wireframe.visible = $('wireframe-toggle').checked;
   scene.add(surface, wireframe);
   meshGeneration += 1;
+  paramView.meshChanged();
+}
+
+/**
+ * Sets the surface material from what colours the surface: the heat-distance vertex colours, else
+ * the parameterization's texture (if any), else the plain mesh colour.
+ */
+function updateSurfaceMaterial() {
+  const map = surfaceMaterial.vertexColors ? null : paramView.texture();
+  if (surfaceMaterial.map !== map) {
+    surfaceMaterial.map = map;
+    surfaceMaterial.needsUpdate = true;
+  }
+  surfaceMaterial.color.set(surfaceMaterial.vertexColors || map ? 0xffffff : MESH_COLOR);
+  requestRender();
 }
 
 /** Points the camera at the bounding box, from the front-right and above, so it fills the view. */
@@ -196,6 +222,21 @@ function frameBox(bbox) {
   controls.target.copy(center);
   controls.update();
 }
+
+// ------------------------------------------------------------------ parameterization view
+
+const paramView = createParamView({
+  request,
+  hooks,
+  scene,
+  renderer,
+  surface: () => surface,
+  generation: () => meshGeneration,
+  label: () => meshLabel,
+  pathSource: () => pathRequest.source,
+  surfaceChanged: () => updateSurfaceMaterial(),
+  requestRender,
+});
 
 // ------------------------------------------------------------------ panels
 
@@ -250,6 +291,7 @@ function clearError() {
 let latestLoad = 0; // only the most recent load may update the view
 let shownSample = ''; // the sample on display ('' for a file), restored in the select after an error
 let meshStatus = ''; // the status line of the mesh on display
+let meshLabel = ''; // the sample or file name of the mesh on display
 
 async function load(what, send, sample = '') {
   const ticket = ++latestLoad;
@@ -258,6 +300,7 @@ async function load(what, send, sample = '') {
   try {
     const reply = await send();
     if (ticket !== latestLoad) return;
+    meshLabel = reply.label;
     showMesh(reply.positions, reply.indices);
     frameBox(reply.info.bbox);
     showInfo(reply.info, reply.label);
@@ -272,6 +315,8 @@ async function load(what, send, sample = '') {
     requestRender(); // shows the mesh if tracing takes longer than a frame
     resetPathRequest();
     await tracePaths(); // sets the state ('ready' once the paths are drawn)
+    // Then the parameterization, so it does not delay the first view of the mesh and its paths.
+    if (ticket === latestLoad) await paramView.meshReady();
   } catch (err) {
     if (ticket !== latestLoad) return;
     $('sample-select').value = shownSample;
@@ -653,8 +698,8 @@ async function showHeat() {
   });
   surface.geometry.setAttribute('color', new THREE.BufferAttribute(colors, 3));
   surfaceMaterial.vertexColors = true;
-  surfaceMaterial.color.set(0xffffff);
   surfaceMaterial.needsUpdate = true;
+  updateSurfaceMaterial(); // the heat colours replace the texture
   $('heat-max').textContent = formatNumber(max);
   $('heat-legend').hidden = false;
   requestRender();
@@ -665,10 +710,9 @@ function resetSurfaceColor() {
   latestHeat += 1;
   surface?.geometry.deleteAttribute('color');
   surfaceMaterial.vertexColors = false;
-  surfaceMaterial.color.set(MESH_COLOR);
   surfaceMaterial.needsUpdate = true;
+  updateSurfaceMaterial();
   $('heat-legend').hidden = true;
-  requestRender();
 }
 
 // ------------------------------------------------------------------ picking and hovering

@@ -22,14 +22,30 @@
 //                           timings: { prepare, trace }, timeMs }  (buffers transferred)
 //   → { id, type: 'distances', source }                      ← { id, type: 'distances', source,
 //        distances: Float32Array (heat method, one per vertex), max, timeMs }
+//   → { id, type: 'parameterize', source, boundary, weights } ← { id, type: 'parameterization', ... }
+//        source: a SurfacePoint or 'auto'; boundary: 'measured' | 'circle' | 'square' | 'auto';
+//        weights: 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform'.
+//        The reply holds every field of mesh.parameterize() (uv, faceStretch, boundaryPolygon and
+//        boundaryLoop transferred) plus timeMs and `overlays`: [{ boundary, polygon, error }] for
+//        'measured', 'circle' and 'square' — each boundary's polygon in the same [0,1]² frame (or
+//        polygon null and the core's message when that boundary failed), for the layout overlay.
+//   → { id, type: 'compare', source }                        ← { id, type: 'progress', done, total }
+//        after each cell, then { id, type: 'comparison', source, rows: [{ boundary, weights, l2,
+//        linf, flipped, degenerate, bijective, timeMs, error }] } (3 boundaries × 4 weights; a cell
+//        that fails has error set and no numbers)
+//   → { id, type: 'exportObj', uv: Float32Array }            ← { id, type: 'obj', text }
+//        OBJ of the current mesh in its input vertex order, with the given uv as `vt` lines.
 //   any failure                                              ← { id, type: 'error', message, category }
-// Later operations on the current mesh (parameterization) are new `type`s in `handlers` below.
+// A request answers with exactly one final reply; only 'progress' messages may come before it.
 
 let modulePromise = null; // resolves to the object returned by createStraightest()
 let currentMesh = null; // the mesh later operations will work on; deleted when replaced
 // Per-mesh data the handlers reuse: vertex positions and triangles (to place the targets the
 // reply lists), whether the mesh has a boundary, and the boundary targets once known.
-let currentData = null; // { positions: Float64Array, indices: Uint32Array, closed, boundary }
+let currentData = null; // { positions: Float64Array, indices: Uint32Array, closed, boundary, polygons }
+
+const BOUNDARIES = ['measured', 'circle', 'square'];
+const WEIGHTS = ['shape-preserving', 'mean-value', 'cotan', 'uniform'];
 
 function straightest() {
   if (!modulePromise) throw new Error('the geometry worker was not initialized');
@@ -61,6 +77,7 @@ function meshReply(mesh, label, startTime) {
     indices: indices.slice(), // `indices` itself is transferred to the page
     closed: (info.boundaryLoops ?? []).length === 0,
     boundary: null,
+    polygons: new Map(), // source key -> overlays (see boundaryOverlays)
   };
   const reply = {
     type: 'mesh',
@@ -96,6 +113,39 @@ function resolveTargets(mesh, source, targets) {
   if (!Array.isArray(targets)) throw new Error("targets must be 'boundary' or an array");
   if (targets.length === 1 && targets[0] === 'boundary') return resolveTargets(mesh, source, 'boundary');
   return targets.flatMap((t) => (t === 'boundary' ? boundaryTargets(mesh, source) : [t]));
+}
+
+/** Error → { message, category } as the page shows it. */
+function describeError(err) {
+  if (err instanceof Error) {
+    return { message: err.message || String(err), category: err.category ?? err.name ?? 'error' };
+  }
+  return { message: String(err), category: 'error' };
+}
+
+/**
+ * The boundary polygons of 'measured', 'circle' and 'square' for the layout overlay, one
+ * parameterization each. A polygon depends only on the boundary and the source, not on the weights,
+ * so the cheapest weights do and the result is kept per source; `known` (the reply's own
+ * boundary and polygon) saves one of the three solves.
+ */
+function boundaryOverlays(mesh, source, known) {
+  const key = JSON.stringify(source);
+  let overlays = currentData.polygons.get(key);
+  if (!overlays) {
+    overlays = BOUNDARIES.map((boundary) => {
+      if (boundary === known.boundary) return { boundary, polygon: known.polygon.slice(), error: null };
+      try {
+        const { boundaryPolygon } = mesh.parameterize({ source, boundary, weights: 'uniform' });
+        return { boundary, polygon: Float32Array.from(boundaryPolygon), error: null };
+      } catch (err) {
+        return { boundary, polygon: null, error: describeError(err).message };
+      }
+    });
+    currentData.polygons.set(key, overlays);
+  }
+  // Copies: the cached polygons stay here when the reply's buffers are transferred.
+  return overlays.map((o) => ({ ...o, polygon: o.polygon?.slice() ?? null }));
 }
 
 const handlers = {
@@ -156,14 +206,56 @@ const handlers = {
     const reply = { type: 'distances', source, distances, max, timeMs: performance.now() - start };
     return { reply, transfer: [distances.buffer] };
   },
-};
 
-function describeError(err) {
-  if (err instanceof Error) {
-    return { message: err.message || String(err), category: err.category ?? err.name ?? 'error' };
-  }
-  return { message: String(err), category: 'error' };
-}
+  async parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving' }) {
+    const mesh = requireMesh();
+    const start = performance.now();
+    const result = mesh.parameterize({ source, boundary, weights });
+    const timeMs = performance.now() - start;
+    const reply = {
+      ...result,
+      type: 'parameterization',
+      uv: owned(result.uv),
+      faceStretch: owned(result.faceStretch),
+      boundaryPolygon: owned(result.boundaryPolygon),
+      boundaryLoop: owned(result.boundaryLoop),
+      timeMs,
+    };
+    reply.overlays = boundaryOverlays(mesh, result.source, {
+      boundary: result.boundary, polygon: result.boundaryPolygon,
+    });
+    const buffers = [reply.uv, reply.faceStretch, reply.boundaryPolygon, reply.boundaryLoop,
+      ...reply.overlays.map((o) => o.polygon).filter(Boolean)];
+    return { reply, transfer: buffers.map((a) => a.buffer) };
+  },
+
+  async compare({ id, source = 'auto' }) {
+    const mesh = requireMesh();
+    const total = BOUNDARIES.length * WEIGHTS.length;
+    const rows = [];
+    for (const boundary of BOUNDARIES) {
+      for (const weights of WEIGHTS) {
+        const start = performance.now();
+        try {
+          const { stretch, flipped, degenerate, bijective } = mesh.parameterize({ source, boundary, weights });
+          rows.push({
+            boundary, weights, l2: stretch.l2, linf: stretch.linf, flipped, degenerate, bijective,
+            timeMs: performance.now() - start, error: null,
+          });
+        } catch (err) {
+          rows.push({ boundary, weights, timeMs: performance.now() - start, error: describeError(err).message });
+        }
+        self.postMessage({ id, type: 'progress', done: rows.length, total });
+      }
+    }
+    return { reply: { type: 'comparison', source, rows } };
+  },
+
+  async exportObj({ uv }) {
+    const mesh = requireMesh();
+    return { reply: { type: 'obj', text: mesh.toOBJ(uv) } };
+  },
+};
 
 // Requests are handled one at a time, in order, so replies never overtake each other.
 let queue = Promise.resolve();

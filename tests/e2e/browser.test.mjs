@@ -1,6 +1,6 @@
 // End-to-end tests of the web page in headless Debian Chromium (playwright-core, no bundled browser).
 //
-//   node tests/e2e/browser.test.mjs
+//   node tests/e2e/browser.test.mjs            (TEST_FILTER=text runs only the tests whose name has it)
 //
 // Starts scripts/serve.mjs on a free port, opens /web/index.html once per test, and prints
 // `ok - name` / `not ok - name: reason` per test and finally `N passed, M failed` (exit 1 on failure).
@@ -18,7 +18,7 @@ const CHROMIUM_ARGS = [
 ];
 const WAIT_TIMEOUT_MS = 8_000; // any single wait in a page
 const TEST_TIMEOUT_MS = 20_000;
-const RUN_TIMEOUT_MS = 55_000;
+const RUN_TIMEOUT_MS = 85_000; // the whole run must stay under 90 s
 const VIEWPORT = { width: 1000, height: 700 };
 
 // ------------------------------------------------------------------ helpers
@@ -100,6 +100,13 @@ function rawGet(port, path) {
     req.on('timeout', () => req.destroy(new Error(`GET ${path} timed out`)));
     req.on('error', reject);
   });
+}
+
+/** Reads a download's stream into a string. */
+async function streamText(stream, encoding = 'utf8') {
+  const chunks = [];
+  for await (const chunk of stream) chunks.push(chunk);
+  return Buffer.concat(chunks).toString(encoding);
 }
 
 function assert(condition, message) {
@@ -424,6 +431,133 @@ test('a closed mesh shows its info and a note instead of paths', async ({ browse
   }
 });
 
+test('mountain is parameterized after loading: stats, UV layout and a checkerboard on the mesh', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    // The automatic parameterization runs once the paths are drawn.
+    await expectReady(page, 'window.__straightest.param');
+    const param = await page.evaluate(() => window.__straightest.param);
+    assert(param.boundary === 'measured' && param.weights === 'shape-preserving',
+      `default parameterization is ${param.boundary} / ${param.weights}`);
+    assert(Number.isFinite(param.l2) && param.l2 >= 1, `L2 stretch is ${param.l2}, expected finite and ≥ 1`);
+    assert(Number.isFinite(param.linf) && param.linf >= param.l2, `L∞ stretch is ${param.linf} (L2 ${param.l2})`);
+    assert(param.bijective === true && param.flipped === 0, `bijective ${param.bijective}, ${param.flipped} flipped`);
+    const shownL2 = (await page.textContent('#param-l2')).trim();
+    assert(Math.abs(Number(shownL2) - param.l2) < 1e-3, `the panel shows L2 '${shownL2}', the hook ${param.l2}`);
+    const panel = await page.textContent('#param-panel');
+    assert(panel.includes(shownL2) && /bijective\s*yes/i.test(panel), `param panel: '${panel.replace(/\s+/g, ' ')}'`);
+    assert(await page.isHidden('#error-panel'), 'error panel is visible');
+
+    // The layout is drawn: a good share of the uv canvas differs from its background.
+    const layout = await page.evaluate(() => {
+      const canvas = document.getElementById('uv-canvas');
+      const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
+      const background = [data[4 * (canvas.width + 1)], data[4 * (canvas.width + 1) + 1], data[4 * (canvas.width + 1) + 2]];
+      let differing = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        if (background.some((c, k) => Math.abs(data[i + k] - c) > 12)) differing++;
+      }
+      return { width: canvas.width, height: canvas.height, fraction: differing / (data.length / 4) };
+    });
+    assert(layout.width > 100 && layout.height > 100, `uv canvas is ${layout.width}×${layout.height}`);
+    assert(layout.fraction > 0.1, `only ${(layout.fraction * 100).toFixed(1)}% of the uv canvas is drawn on`);
+
+    // The checkerboard: many sharp dark↔light steps along the rows of the 3D view, far more than
+    // the same view without the texture has (shading and the paths make some too).
+    const steps = async () => {
+      await page.waitForFunction(() => window.__straightest.renders > 0);
+      const image = decodePng(await page.locator('#view-canvas').screenshot());
+      const luma = (i) => 0.299 * image.data[i] + 0.587 * image.data[i + 1] + 0.114 * image.data[i + 2];
+      let count = 0;
+      for (let y = 0; y < image.height; y++) {
+        for (let x = 0; x + 3 < image.width; x++) {
+          const [a, b] = [luma((y * image.width + x) * image.channels), luma((y * image.width + x + 3) * image.channels)];
+          if ((a < 90 && b > 170) || (a > 170 && b < 90)) count++;
+        }
+      }
+      return count;
+    };
+    const checker = await steps();
+    const renders = await page.evaluate(() => window.__straightest.renders);
+    await page.selectOption('#texture-select', 'none');
+    await page.waitForFunction((n) => window.__straightest.renders > n, renders);
+    const plain = await steps();
+    assert(checker > 1500 && checker > 2 * plain,
+      `${checker} dark/light steps with the checkerboard, ${plain} without: no checkerboard on the mesh`);
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('comparison table, stretch heat map and the OBJ/PNG downloads', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.param');
+    await page.click('#compare-button');
+    await page.waitForFunction(() => window.__straightest.compare);
+    const rows = await page.evaluate(() => window.__straightest.compare);
+    assert(rows.length === 12, `${rows.length} comparison rows, expected 3 × 4`);
+    const combos = new Set(rows.map((r) => `${r.boundary}/${r.weights}`));
+    assert(combos.size === 12, `the rows repeat combinations: ${[...combos].join(', ')}`);
+    assert(rows.every((r) => !r.error && Number.isFinite(r.l2) && r.timeMs >= 0), 'a comparison cell failed');
+    const tableRows = await page.$$eval('#compare-table tbody tr[data-boundary]', (trs) => trs.length);
+    assert(tableRows === 12, `the table shows ${tableRows} rows`);
+    const best = rows.reduce((a, b) => (b.l2 < a.l2 ? b : a));
+    const bestRow = await page.$eval('#compare-table tr.best', (tr) => [tr.dataset.boundary, tr.dataset.weights]);
+    assert(bestRow[0] === best.boundary && bestRow[1] === best.weights,
+      `highlighted ${bestRow.join('/')}, least L2 is ${best.boundary}/${best.weights}`);
+
+    // The heat map replaces the surface: greens (stretch near 1) fill the view.
+    const renders = await page.evaluate(() => window.__straightest.renders);
+    await page.check('#stretch-toggle');
+    await page.waitForFunction((n) => window.__straightest.renders > n, renders);
+    assert(await page.isVisible('#stretch-legend'), 'no stretch legend');
+    const image = decodePng(await page.locator('#view-canvas').screenshot());
+    let green = 0;
+    for (let i = 0; i < image.width * image.height; i++) {
+      const [r, g, b] = image.data.subarray(i * image.channels, i * image.channels + 3);
+      if (g > r + 30 && g > b + 30) green++;
+    }
+    assert(green / (image.width * image.height) > 0.05, `only ${green} green pixels with the stretch heat map`);
+
+    const [obj] = await Promise.all([page.waitForEvent('download'), page.click('#export-obj-button')]);
+    const text = await streamText(await obj.createReadStream());
+    const vt = text.split('\n').filter((line) => line.startsWith('vt ')).length;
+    assert(vt === 2500 && /^f \d+\/\d+ /m.test(text), `the OBJ has ${vt} vt lines (expected 2500) or no v/vt faces`);
+    const [png] = await Promise.all([page.waitForEvent('download'), page.click('#export-png-button')]);
+    const layout = decodePng(Buffer.from(await streamText(await png.createReadStream(), 'latin1'), 'latin1'));
+    assert(layout.width > 100 && png.suggestedFilename().endsWith('.png'), `layout PNG ${png.suggestedFilename()}`);
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
+test('a closed mesh shows the core’s disk message in the parameterization panel', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.param');
+    await page.setInputFiles('#file-input', {
+      name: 'tetrahedron.off', mimeType: 'text/plain', buffer: Buffer.from(TETRAHEDRON_OFF),
+    });
+    await expectReady(page, 'window.__straightest.lastInfo.vertices === 4 && window.__straightest.paramError');
+    const { param, paramError } = await page.evaluate(() => window.__straightest);
+    assert(param === null, `the previous mesh's parameterization is still listed: ${JSON.stringify(param)}`);
+    assert(paramError.category === 'topology', `error category '${paramError.category}'`);
+    const message = await page.textContent('#param-message');
+    assert(/disk/i.test(message) && message.includes(paramError.message), `param panel says '${message}'`);
+    assert(await page.isVisible('#param-message'), 'the message is hidden');
+    assert(await page.isHidden('#error-panel'), 'the global error panel is visible');
+    assert((await page.textContent('#stats-paths')).trim() === '0', 'the paths view did not update');
+    assert(await page.isDisabled('#compare-button') && await page.isDisabled('#export-obj-button'),
+      'compare/export stay enabled on a non-disk');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
 // ------------------------------------------------------------------ runner
 
 async function main() {
@@ -446,14 +580,17 @@ async function main() {
       executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, timeout: 20_000,
     });
     const env = { browser, port, baseUrl: `http://127.0.0.1:${port}` };
-    for (const { name, fn } of tests) {
+    const filter = process.env.TEST_FILTER ?? '';
+    for (const { name, fn } of tests.filter((t) => t.name.includes(filter))) {
+      const start = Date.now();
+      const took = () => `(${((Date.now() - start) / 1000).toFixed(1)} s)`;
       try {
         await withTimeout(fn(env), TEST_TIMEOUT_MS, 'test');
         passed++;
-        console.log(`ok - ${name}`);
+        console.log(`ok - ${name} ${took()}`);
       } catch (err) {
         failed++;
-        console.log(`not ok - ${name}: ${String(err.message).split('\n')[0]}`);
+        console.log(`not ok - ${name}: ${String(err.message).split('\n')[0]} ${took()}`);
       }
     }
   } catch (err) {
