@@ -141,7 +141,8 @@ bool looksBinary(std::string_view bytes) {
 Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits) {
   enum class Stage { Header, Counts, Vertices, Faces, Done } stage = Stage::Header;
   PolygonSoup soup;
-  int64_t nv = 0, nf = 0;
+  int64_t nv = 0, nf = 0, facesRead = 0;
+  size_t extraPerVertex = 0;  // COFF: colour (3 or 4 values); NOFF: normal (3)
   std::vector<int32_t> polygon;
   Tokens tokens;
   std::optional<Error> error;
@@ -184,11 +185,13 @@ Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits)
     switch (stage) {
       case Stage::Header: {
         const std::string_view kw = items[0];
-        if (kw != "OFF") {
-          error = Error{ErrorCode::UnsupportedFormat,
-                        "line " + std::to_string(line) + ": expected the keyword OFF, found " + quoted(kw)};
+        if (kw != "OFF" && kw != "COFF" && kw != "NOFF") {
+          error = Error{ErrorCode::UnsupportedFormat, "line " + std::to_string(line) +
+                                                          ": expected the keyword OFF (or COFF, NOFF), found " +
+                                                          quoted(kw)};
           return false;
         }
+        extraPerVertex = kw == "COFF" ? 4 : kw == "NOFF" ? 3 : 0;
         stage = Stage::Counts;
         if (items.size() > 1) {
           std::vector<std::string_view> rest(items.begin() + 1, items.end());
@@ -198,9 +201,15 @@ Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits)
       }
       case Stage::Counts: return handleCounts(line, items);
       case Stage::Vertices: {
-        if (tokens.count != 3) {
+        // OFF: exactly x y z. COFF: x y z and a colour of 3 or 4 values. NOFF: x y z and a normal.
+        const bool countOk = extraPerVertex == 0 ? tokens.count == 3
+                             : extraPerVertex == 4 ? (tokens.count == 6 || tokens.count == 7)
+                                                   : tokens.count == 6;
+        if (!countOk) {
           error = parseError(line, "vertex " + std::to_string(soup.positions.size()) + " has " +
-                                       std::to_string(tokens.count) + " values, expected 3 (x y z)");
+                                       std::to_string(tokens.count) + " values, expected " +
+                                       (extraPerVertex == 0 ? "3 (x y z)" : extraPerVertex == 4 ? "6 or 7 (x y z r g b [a])"
+                                                                                                : "6 (x y z nx ny nz)"));
           return false;
         }
         double c[3];
@@ -223,7 +232,7 @@ Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits)
         return true;
       }
       case Stage::Faces: {
-        const int64_t face = static_cast<int64_t>(soup.triangles.size()) + soup.polygonsTriangulated;
+        const int64_t face = facesRead;
         int64_t k = 0;
         if (!parseInt64(items[0], k) || k < 0) {
           error = parseError(line, "face " + std::to_string(face) + ": expected a vertex count, found " +
@@ -273,7 +282,7 @@ Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits)
           triangulatePolygon(soup.positions, polygon, soup.triangles);
           ++soup.polygonsTriangulated;
         }
-        if (face + 1 == nf) stage = Stage::Done;
+        if (++facesRead == nf) stage = Stage::Done;
         return true;
       }
       case Stage::Done:
@@ -290,9 +299,8 @@ Expected<PolygonSoup> parseOff(std::string_view text, const BuildLimits& limits)
       return Error{ErrorCode::Parse, "file ends after " + std::to_string(soup.positions.size()) + " of " +
                                          std::to_string(nv) + " vertices (truncated?)"};
     case Stage::Faces:
-      return Error{ErrorCode::Parse, "file ends after " +
-                                         std::to_string(soup.triangles.size() + soup.polygonsTriangulated) +
-                                         " of " + std::to_string(nf) + " faces (truncated?)"};
+      return Error{ErrorCode::Parse, "file ends after " + std::to_string(facesRead) + " of " + std::to_string(nf) +
+                                         " faces (truncated?)"};
     case Stage::Done: break;
   }
   return soup;
@@ -476,13 +484,14 @@ Expected<PolygonSoup> parsePolygonSoup(std::string_view bytes, MeshFormat format
   if (looksBinary(bytes))
     return Error{ErrorCode::UnsupportedFormat, "file contains binary data; expected a text OBJ or OFF mesh"};
   if (format == MeshFormat::Auto) {
-    // OFF if the first token (after comments and blank lines) starts with "OFF".
+    // OFF if the first token (after comments and blank lines) is OFF, COFF or NOFF.
     format = MeshFormat::Obj;
     forEachLine(bytes, [&](int64_t, std::string_view line) {
       Tokens t;
       tokenize(stripComment(line), t, 1);
       if (t.count == 0) return true;
-      if (t.items[0].substr(0, 3) == "OFF") format = MeshFormat::Off;
+      const std::string_view kw = t.items[0];
+      if (kw.substr(0, 3) == "OFF" || kw == "COFF" || kw == "NOFF") format = MeshFormat::Off;
       return false;
     });
   }

@@ -85,6 +85,29 @@ TEST(OffLoader, TriangulatesANonConvexPolygonInsideItsOutline) {
   EXPECT_NEAR(area, 3.0, 1e-12);
 }
 
+TEST(OffLoader, CountsPolygonsAsFacesWhateverTheirTriangleCount) {
+  // Two quads and a pentagon: 3 faces in the header, 2 + 2 + 3 triangles (a face-count bug found by the
+  // CGAL benchmark: polygons were counted as their triangles).
+  const std::string text =
+      "OFF\n7 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n3 0.5 0\n"
+      "4 0 1 2 3\n4 1 4 5 2\n5 4 6 5 2 1\n";
+  auto mesh = loadMesh(text);
+  ASSERT_FALSE(mesh.ok());  // the pentagon overlaps the second quad: a non-manifold edge, not a count error
+  EXPECT_NE(mesh.error().code, ErrorCode::Parse) << mesh.error().message;
+  auto quads = loadMesh("OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n4 0 1 2 3\n4 1 4 5 2\n");
+  ASSERT_TRUE(quads.ok()) << quads.error().message;
+  EXPECT_EQ(quads.value().numFaces(), 4);
+}
+
+TEST(OffLoader, AcceptsColouredAndNormalVariants) {
+  auto coff = loadMesh("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n");
+  ASSERT_TRUE(coff.ok()) << coff.error().message;
+  EXPECT_EQ(coff.value().position(1).x, 1.0);
+  auto noff = loadMesh("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n");
+  ASSERT_TRUE(noff.ok()) << noff.error().message;
+  EXPECT_FALSE(loadMesh("OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n").ok());  // plain OFF stays strict
+}
+
 TEST(FormatDetection, RecognizesOffByItsHeaderAndObjOtherwise) {
   EXPECT_TRUE(loadMesh("# comment\nOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").ok());
   EXPECT_TRUE(loadMesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").ok());
