@@ -11,7 +11,7 @@ import { fileURLToPath } from 'node:url';
 const root = fileURLToPath(new URL('..', import.meta.url));
 const repeats = Number(process.env.REPEATS ?? 3);
 const cgalDir = join(root, 'build/data/data/meshes');
-const cgalMeshes = (process.env.CGAL_MESHES ?? 'nefertiti.off').split(',').map((f) => join(cgalDir, f)).filter(existsSync);
+const cgalMeshes = (process.env.CGAL_MESHES ?? 'nefertiti.off,lion-head.off,cylinder_locally_refined.off,mannequin-devil.off').split(',').map((f) => join(cgalDir, f)).filter(existsSync);
 const meshes = process.env.MESHES ? process.env.MESHES.split(',') : ['heightfield:100', 'heightfield:317', 'heightfield:1000', ...cgalMeshes];
 
 function run(target, mesh) {

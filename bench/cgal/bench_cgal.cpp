@@ -95,6 +95,13 @@ double resetPeakRss() {
   return statusMb("VmRSS:");
 }
 double peakRssMb() { return statusMb("VmHWM:"); }
+double memAvailableMb() {
+  std::ifstream f("/proc/meminfo");
+  std::string line;
+  while (std::getline(f, line))
+    if (line.rfind("MemAvailable:", 0) == 0) return std::atof(line.c_str() + 13) / 1024.0;
+  return -1;
+}
 
 // ------------------------------------------------------------------ a tiny JSON writer
 std::string num(double x, int digits = 6) {
@@ -192,6 +199,13 @@ struct Row {  // one line of the final table
   std::string error;
 };
 
+std::string fmtMs(double x) {
+  if (!std::isfinite(x)) return "—";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, x < 10 ? "%.2f" : x < 100 ? "%.1f" : "%.0f", x);
+  return buf;
+}
+
 std::string fmt(double x, const char* f) {
   if (!std::isfinite(x)) return "—";
   char buf[64];
@@ -205,6 +219,15 @@ struct Settings {
   int64_t spMaxVertices = -1;     // explicit cap (-1: none)
   bool lengths = true;            // per-boundary-vertex lengths in the JSON
 };
+
+const char* solverName(LinearSolver s) {
+  switch (s) {
+    case LinearSolver::Multigrid: return "multigrid (BiCGSTAB + smoothed-aggregation multigrid)";
+    case LinearSolver::SparseLU: return "SparseLU";
+    case LinearSolver::BiCGSTAB: return "BiCGSTAB + ILUT";
+  }
+  return "?";
+}
 
 Expected<TriMesh> loadAny(const std::string& spec) {
   if (spec.rfind("heightfield:", 0) == 0) {
@@ -252,13 +275,16 @@ int main(int argc, char** argv) {
   int64_t spSkipAbove = st.spMaxVertices >= 0 ? st.spMaxVertices : std::numeric_limits<int64_t>::max();
   std::string spSkipReason =
       st.spMaxVertices >= 0 ? "more than --sp-max-vertices " + std::to_string(st.spMaxVertices) + " vertices" : "";
+  int64_t spLargestV = 0;   // the largest mesh whose CGAL shortest paths ran, and their peak (MB)
+  double spLargestMb = 0;
   std::vector<Row> rows;
 
   for (const std::string& spec : meshes) {
     Row row;
     row.name = spec.rfind("heightfield:", 0) == 0 ? spec : baseName(spec);
     Obj out;
-    out.addStr("mesh", row.name).addStr("kernel", "Exact_predicates_inexact_constructions_kernel");
+    out.addStr("mesh", row.name).addStr("cgal", CGAL_VERSION_STR)
+        .addStr("kernel", "Exact_predicates_inexact_constructions_kernel");
     std::fprintf(stderr, "bench_cgal: %s: loading\n", row.name.c_str());
     auto loaded = loadAny(spec);
     if (!loaded) {
@@ -326,9 +352,25 @@ int main(int argc, char** argv) {
     // ---------------------------------------------------------------- CGAL: exact geodesic distances
     std::vector<double> exact(targets.size(), kInf);
     Obj sp;
-    if (row.vertices > spSkipAbove) {
-      row.cgalSpNote = "skipped: " + spSkipReason;
-      sp.add("skipped", true).addStr("reason", spSkipReason);
+    // Memory guard: the sequence tree's peak grew like V^1.55 from 10k to 100k vertices on the height
+    // fields (274 MB → 9.6 GB); predict from the largest mesh run so far with exponent 1.5 and skip
+    // when the prediction exceeds 80% of the memory available now.
+    std::string memoryReason;
+    if (spLargestV > 0 && row.vertices > spLargestV) {
+      const double predicted = spLargestMb * std::pow(double(row.vertices) / spLargestV, 1.5);
+      const double available = memAvailableMb();
+      if (available > 0 && predicted > 0.8 * available) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "predicted peak %.0f GB (%.0f MB at %lld vertices × (V ratio)^1.5) > 80%% of "
+                      "the %.0f GB available", predicted / 1024, spLargestMb, static_cast<long long>(spLargestV),
+                      available / 1024);
+        memoryReason = buf;
+      }
+    }
+    if (row.vertices > spSkipAbove || !memoryReason.empty()) {
+      const std::string reason = row.vertices > spSkipAbove ? spSkipReason : memoryReason;
+      row.cgalSpNote = "skipped: " + reason;
+      sp.add("skipped", true).addStr("reason", reason);
       std::fprintf(stderr, "bench_cgal: %s: CGAL shortest paths %s\n", row.name.c_str(), row.cgalSpNote.c_str());
     } else {
       std::fprintf(stderr, "bench_cgal: %s: CGAL shortest paths\n", row.name.c_str());
@@ -349,6 +391,10 @@ int main(int argc, char** argv) {
       sp.add("skipped", false).add("ms", t.ms, 4).add("runs", t.runs).add("peak_rss_mb", rss, 4)
           .add("baseline_rss_mb", base, 4)
           .add("unreachable", unreachable);
+      if (row.vertices > spLargestV && rss > base) {
+        spLargestV = row.vertices;
+        spLargestMb = rss - base;
+      }
       if (t.ms > st.spBudgetS * 1000 && row.vertices < spSkipAbove) {
         spSkipAbove = row.vertices;
         char buf[160];
@@ -448,6 +494,7 @@ int main(int argc, char** argv) {
         const ParamTimings& tm = p.timingsMs;
         const Stretch s = stretchOf(mesh, p.uv);  // the same function as CGAL's UVs go through
         const double ms = median(totals);
+        o.addStr("solver", solverName(po.solver));
         o.add("ms", ms, 4).add("runs", static_cast<int>(totals.size())).add("peak_rss_mb", rss, 4)
             .add("baseline_rss_mb", base, 4)
             .add("timings_ms", Obj().add("source", tm.source, 4).add("trace", tm.trace, 4)
@@ -495,16 +542,26 @@ int main(int argc, char** argv) {
       std::printf("| %s | error: %s |||||||||||\n", r.name.c_str(), r.error.c_str());
       continue;
     }
-    const std::string cgalSp = r.cgalSpNote.empty() ? fmt(r.cgalSpMs, "%.1f") : r.cgalSpNote;
+    const std::string cgalSp = r.cgalSpNote.empty() ? fmtMs(r.cgalSpMs) : "skipped¹";
     const std::string ratio = std::isfinite(r.ratioMin) ? fmt(r.ratioMin, "%.4f") + " / " + fmt(r.ratioMed, "%.4f") +
                                                               " / " + fmt(r.ratioMax, "%.4f")
                                                         : "—";
     std::printf("| %s | %lld | %lld | %lld | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(),
                 static_cast<long long>(r.vertices), static_cast<long long>(r.boundary),
-                static_cast<long long>(r.reached), fmt(r.oursPathsMs, "%.1f").c_str(), cgalSp.c_str(),
-                ratio.c_str(), fmt(r.cgalParamMs, "%.1f").c_str(), fmt(r.cgalL2, "%.6f").c_str(),
-                fmt(r.oursCircleMs, "%.1f").c_str(), fmt(r.oursCircleL2, "%.6f").c_str(),
-                fmt(r.oursMeasMs, "%.1f").c_str(), fmt(r.oursMeasL2, "%.6f").c_str());
+                static_cast<long long>(r.reached), fmtMs(r.oursPathsMs).c_str(), cgalSp.c_str(),
+                ratio.c_str(), fmtMs(r.cgalParamMs).c_str(), fmt(r.cgalL2, "%.6f").c_str(),
+                fmtMs(r.oursCircleMs).c_str(), fmt(r.oursCircleL2, "%.6f").c_str(),
+                fmtMs(r.oursMeasMs).c_str(), fmt(r.oursMeasL2, "%.6f").c_str());
   }
+  std::printf("\nTimes in ms, median of %d run(s) (a run over 30 s is not repeated), loading excluded; CGAL kernel: "
+              "Exact_predicates_inexact_constructions_kernel. Paths: ours = traceStraightestPaths to every boundary "
+              "vertex (setup included); CGAL = Surface_mesh_shortest_path construction + add_source_point + "
+              "build_sequence_tree + shortest_distance_to_source_points per boundary vertex. Ratio over the reached "
+              "paths. Parameterizations: CGAL = the SMP::parameterize call (its default solver, Eigen BiCGSTAB + "
+              "IncompleteLUT); ours = timingsMs.total (source given, the library's default solver: %s; "
+              "stretch metrics included). L2 = our textureStretch for every UV set.\n",
+              st.repeats, solverName(ParamOptions{}.solver));
+  for (const Row& r : rows)
+    if (!r.cgalSpNote.empty()) std::printf("¹ %s: CGAL shortest paths %s\n", r.name.c_str(), r.cgalSpNote.c_str());
   return 0;
 }
