@@ -41,6 +41,28 @@ struct Exit {
   double dTail = 0, dHead = 0;  // signed distances of the crossed halfedge's ends (reused next step)
 };
 
+/// A source within kSnapSource (barycentric or edge parameter) of an edge or a vertex is moved onto
+/// it: leaving a point 1e-9 away from an edge, the walk's first crossing would be closer than its
+/// rounding tolerance and could be missed.
+constexpr double kSnapSource = 1e-6;
+SurfacePoint snapToNearbyEdgeOrVertex(const TriMesh& mesh, SurfacePoint p) {
+  if (p.kind == SurfacePoint::Kind::Edge) {
+    if (p.t < kSnapSource) return SurfacePoint::vertex(mesh.tail(p.index));
+    if (p.t > 1 - kSnapSource) return SurfacePoint::vertex(mesh.head(p.index));
+    return p;
+  }
+  if (p.kind != SurfacePoint::Kind::Face) return p;
+  if (std::min({p.bary[0], p.bary[1], p.bary[2]}) >= kSnapSource) return p;
+  double sum = 0;
+  for (double& b : p.bary) {
+    if (b < kSnapSource) b = 0;
+    sum += b;
+  }
+  for (double& b : p.bary) b /= sum;
+  auto snapped = validateSurfacePoint(mesh, p);  // turns zero coordinates into an edge or a vertex
+  return snapped ? snapped.value() : p;
+}
+
 }  // namespace
 
 struct StraightestPathTracer::Walk {
@@ -57,15 +79,16 @@ struct StraightestPathTracer::Walk {
     out.positions.push_back(x);
   }
 
-  /// X lies on segment PQ (within rounding; see onSegment tolerances in the file comment).
+  /// X lies on segment PQ, within tol = 1e-6 · mean edge length along and across it (absolute, so a
+  /// very short last segment still finds a target that rounding put just past its end).
   bool onSegment(const Vec3& X, const Vec3& P, const Vec3& Q) const {
     const Vec3 v = Q - P;
-    const double l2 = squaredNorm(v);
+    const double length = norm(v);
     const double tol = 1e-6 * meanEdge;
-    if (l2 == 0) return norm(X - P) <= tol;
-    const double s = dot(X - P, v) / l2;
-    if (s < -1e-9 || s > 1 + 1e-9) return false;
-    return norm(X - (P + v * s)) <= tol;
+    if (!(length > 0)) return norm(X - P) <= tol;
+    const double along = dot(X - P, v) / length;
+    if (along < -tol || along > length + tol) return false;
+    return norm(X - (P + v * (along / length))) <= tol;
   }
 
   /// Accounts for the segment P→Q in face f1 (and f2 along an edge). Returns true when the walk ends
@@ -239,9 +262,9 @@ struct StraightestPathTracer::Walk {
 
 StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source,
                                              const TraceOptions& options)
-    : mesh_(mesh), source_(source), options_(options) {
-  sourcePosition_ = position(mesh, source);
-  base_ = basePlane(mesh, source);
+    : mesh_(mesh), source_(snapToNearbyEdgeOrVertex(mesh, source)), options_(options) {
+  sourcePosition_ = position(mesh, source_);
+  base_ = basePlane(mesh, source_);
   double total = 0;
   int64_t edges = 0;
   for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h)
@@ -253,7 +276,7 @@ StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfaceP
   onPlaneTolerance_ = kOnPlaneRel * meanEdge;
   maxSteps_ = options.maxSteps > 0 ? options.maxSteps
                                    : 2 * static_cast<int64_t>(mesh.numFaces()) + mesh.numVertices() + 16;
-  incidentFaces(mesh, source, sourceFaces_);
+  incidentFaces(mesh, source_, sourceFaces_);
   sourceFace_.assign(mesh.numFaces(), 0);
   for (int32_t f : sourceFaces_) sourceFace_[f] = 1;
   targetStamp_.assign(mesh.numFaces(), 0);
@@ -307,10 +330,23 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
     return r;
   };
   if (samePoint) return singlePoint(TraceStatus::Reached);
+  // Source and destination in one face: the section of that face runs straight from S to D. (Also the
+  // robust answer when D is so close to S that the direction D − S is dominated by rounding.)
+  incidentFaces(mesh_, destination, targetFaces_);
+  for (int32_t f : targetFaces_)
+    if (isSourceFace(f)) {
+      singlePoint(TraceStatus::Reached);
+      r.length = norm(SD);
+      r.facesCrossed = 1;
+      if (options_.keepPoints) {
+        r.points.push_back(destination);
+        r.positions.push_back(D);
+      }
+      return r;
+    }
   const auto plane = cuttingPlane(base_, D);
   if (!plane) return singlePoint(TraceStatus::DegeneratePlane);
   plane_ = *plane;
-  incidentFaces(mesh_, destination, targetFaces_);
   if (++targetEpoch_ == 0) {
     std::fill(targetStamp_.begin(), targetStamp_.end(), 0);
     targetEpoch_ = 1;

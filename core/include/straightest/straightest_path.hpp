@@ -56,7 +56,8 @@ struct StraightestPath {
 /// Traces straightest paths from one source; reuse it for many destinations (shared setup).
 class StraightestPathTracer {
  public:
-  /// The source must be a valid surface point (see validateSurfacePoint).
+  /// The source must be a valid surface point (see validateSurfacePoint). A source within 1e-6
+  /// (barycentric or edge parameter) of an edge or vertex is moved onto it; source() is the point used.
   StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options = {});
 
   const BasePlane& base() const { return base_; }
