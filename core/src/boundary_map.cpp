@@ -62,17 +62,20 @@ const char* boundaryKindName(BoundaryKind k) {
   return "unknown";
 }
 
-std::vector<std::array<int32_t, 3>> allBoundaryTriangles(const TriMesh& mesh, const std::vector<int32_t>& loop) {
+std::vector<std::array<int32_t, 2>> boundaryChords(const TriMesh& mesh, const std::vector<int32_t>& loop) {
   std::vector<int32_t> position(mesh.numVertices(), -1);
   for (size_t i = 0; i < loop.size(); ++i) position[loop[i]] = static_cast<int32_t>(i);
-  std::vector<std::array<int32_t, 3>> out;
-  for (const Triangle& t : mesh.triangles())
-    if (position[t[0]] >= 0 && position[t[1]] >= 0 && position[t[2]] >= 0)
-      out.push_back({position[t[0]], position[t[1]], position[t[2]]});
+  std::vector<std::array<int32_t, 2>> out;
+  for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) {
+    const int32_t t = mesh.twin(h);
+    if (t < 0 || t < h) continue;  // boundary edges run along the loop; each interior edge once
+    const int32_t a = position[mesh.tail(h)], b = position[mesh.head(h)];
+    if (a >= 0 && b >= 0) out.push_back({a, b});
+  }
   return out;
 }
 
-int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 3>>& triangles) {
+int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 2>>& chords) {
   const size_t n = points.size();
   if (n < 3) return -1;
   const std::vector<size_t> hullIdx = convexHull(points);
@@ -118,14 +121,20 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
       along[i] = t;
     }
   }
-  // 2. Hull edges on which an all-boundary triangle collapses.
+  // 2. Hull edges along which an interior edge of the mesh joining two boundary vertices (a chord)
+  //    would lie: its triangles would collapse. A point at a hull vertex lies on both adjacent edges.
   std::vector<uint8_t> bulgeEdge(h, 0);
-  for (const auto& t : triangles) {
-    const Vec2 e1 = sub(points[t[1]], points[t[0]]), e2 = sub(points[t[2]], points[t[0]]);
-    if (std::abs(cross2(e1, e2)) > 1e-9 * len(e1) * len(e2)) continue;
-    for (int32_t k : t)
-      if (edgeOf[k] >= 0) bulgeEdge[edgeOf[k]] = 1;
-  }
+  auto onEdge = [&](int32_t i, size_t j) {
+    if (edgeOf[i] == static_cast<int64_t>(j)) return true;
+    for (size_t end : {j, (j + 1) % h})
+      if (len(sub(points[i], hull[end])) <= 1e-12 * len(hull[end])) return true;
+    return false;
+  };
+  for (const auto& c : chords)
+    for (int32_t k : {c[0], c[1]}) {
+      const int64_t j = edgeOf[k];
+      if (j >= 0 && onEdge(c[0], j) && onEdge(c[1], j)) bulgeEdge[j] = 1;
+    }
   // 3. Lift the points of those edges onto a parabola; its end slopes stay below a third of the
   //    hull's turning angle at each end, so the polygon stays convex.
   auto turnAngle = [&](size_t j) {
@@ -174,7 +183,7 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
     const double theta = kTwoPi * cumulative[i] / total;
     map.polygon[i] = {r * std::cos(theta), r * std::sin(theta)};
   }
-  map.movedToHull = convexify(map.polygon, allBoundaryTriangles(mesh, map.loop));
+  map.movedToHull = convexify(map.polygon, boundaryChords(mesh, map.loop));
   if (map.movedToHull < 0)
     return Error{ErrorCode::Topology, "the measured boundary does not surround the source (a boundary edge "
                                       "subtends half of the total angle or more)"};
@@ -203,7 +212,7 @@ BoundaryMap squareBoundary(const TriMesh& mesh) {
     const Vec2 q = side == 0 ? Vec2{f, 0} : side == 1 ? Vec2{1, f} : side == 2 ? Vec2{1 - f, 1} : Vec2{0, 1 - f};
     map.polygon.push_back({q[0] - 0.5, q[1] - 0.5});
   }
-  convexify(map.polygon, allBoundaryTriangles(mesh, map.loop));  // lifts sides only where triangles collapse
+  convexify(map.polygon, boundaryChords(mesh, map.loop));  // lifts sides only where triangles collapse
   for (Vec2& q : map.polygon) q = {q[0] + 0.5, q[1] + 0.5};
   return map;
 }

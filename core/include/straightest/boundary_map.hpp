@@ -4,8 +4,9 @@
 //    ∠(b_j − S, b_j+1 − S), j < i) / (sum over the loop), r_i = straightest distance S → b_i. A failed
 //    trace gets the edge-graph (Dijkstra) distance from S instead and is counted as a fallback.
 //    Then the polygon is made convex: a point strictly inside the convex hull moves radially outward
-//    onto the hull. Where a triangle with all three vertices on the boundary would then lie on one
-//    straight hull edge (zero area: the map could not be bijective), the points on that edge are lifted
+//    onto the hull. Where an interior mesh edge joining two boundary vertices (a chord) would then lie
+//    on one straight hull edge (its triangles collapse: the map could not be bijective; Floater's
+//    condition for weakly convex boundaries), the points on that edge are lifted
 //    onto a shallow parabola over it (sagitta ≤ kBulge · edge length / 4, limited by the hull's turning
 //    angles at both ends), which keeps the polygon convex and makes it strictly convex there. Edges
 //    without such a triangle stay straight, so a flat convex patch reproduces itself exactly.
@@ -43,13 +44,13 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
 BoundaryMap circleBoundary(const TriMesh& mesh);
 BoundaryMap squareBoundary(const TriMesh& mesh);
 
-/// Triangles of the mesh whose three vertices are all on the loop, as indices into the loop.
-std::vector<std::array<int32_t, 3>> allBoundaryTriangles(const TriMesh& mesh, const std::vector<int32_t>& loop);
+/// Interior edges of the mesh whose two ends are both on the loop ("chords"), as indices into the loop.
+std::vector<std::array<int32_t, 2>> boundaryChords(const TriMesh& mesh, const std::vector<int32_t>& loop);
 
 /// Moves points strictly inside the convex hull of `points` radially (from the origin) onto the hull,
-/// then bulges the hull edges on which one of `triangles` (indices into points) would collapse (see
-/// the file comment). The origin must be strictly inside the hull; returns the number of points moved
+/// then bulges the hull edges along which one of `chords` (pairs of indices into points) would lie (its
+/// triangles would collapse; see the file comment). The origin must be strictly inside the hull; returns the number of points moved
 /// onto the hull, or -1 when the origin is not inside.
-int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 3>>& triangles);
+int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 2>>& chords);
 
 }  // namespace straightest
