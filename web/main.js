@@ -9,10 +9,16 @@
 // Once the paths are drawn, the parameterization view (param-view.js) flattens the mesh; it owns
 // the panels, the texture and the stretch heat map of the parameterization.
 //
+// Long work: the worker reports every stage's progress (progress-view.js shows the bars) and Cancel
+// restarts the worker (worker-client.js) and reloads the mesh on display into the new one. Large
+// meshes (LARGE_MESH_VERTICES) are not parameterized automatically, and many paths are drawn as
+// plain lines (FAT_LINE_SEGMENTS) without hover picking, so the main thread never has long work.
+//
 // Test hooks: document.body.dataset.state is 'loading' | 'ready' | 'error' ('ready' once the mesh
 // and its paths are drawn), and window.__straightest holds { state, samples, lastInfo, lastError,
-// renders, background, traces, paths: { count, reached, source, traceMs } } and the hooks of the
-// parameterization view (param, paramError, parameterizations, compare: see param-view.js).
+// renders, background, traces, paths: { count, reached, source, traceMs, plain }, cancels } and the
+// hooks of the parameterization view (param, paramError, parameterizations, compare: see
+// param-view.js) and of the progress panel (progress: see progress-view.js).
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -22,6 +28,8 @@ import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { createParamView } from './param-view.js';
+import { createProgressView } from './progress-view.js';
+import { createWorkerClient, isCancelled, workerError } from './worker-client.js';
 
 const BACKGROUND = 0x14171c;
 const MESH_COLOR = 0xd9b982;
@@ -34,6 +42,19 @@ const SOURCE_COLOR = 0xffffff;
 const ADDED_COLOR = 0xc15cff; // destinations added with shift+click
 const BASE_PLANE_COLOR = 0x9cc2ff;
 
+// Above this many vertices the page does not parameterize automatically after loading (seconds of
+// work per solve; the button runs it, with progress and Cancel) and skips the layout's overlay
+// polygons of the other two boundaries (another solve each).
+const LARGE_MESH_VERTICES = 300_000;
+// Above this many path segments the paths are plain 1-pixel LineSegments over the worker's points
+// (fat lines take a quad and 6 floats per segment) and hovering them is off (picking would walk
+// every segment and the surface on each pointer move).
+const FAT_LINE_SEGMENTS = 100_000;
+// Plain lines draw at most about this many points: every k-th point of each path (and its last).
+// Beyond that the points are closer than a pixel, and uploading and drawing them would only cost
+// time (a 1M-vertex mesh's boundary paths have ~5M points).
+const PLAIN_LINE_POINTS = 250_000;
+
 const $ = (id) => document.getElementById(id);
 
 const hooks = {
@@ -44,7 +65,8 @@ const hooks = {
   renders: 0,
   background: [(BACKGROUND >> 16) & 255, (BACKGROUND >> 8) & 255, BACKGROUND & 255],
   traces: 0, // completed path traces
-  paths: null, // { count, reached, source, traceMs } of the paths on display
+  paths: null, // { count, reached, source, traceMs, plain } of the paths on display
+  cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
 };
 window.__straightest = hooks;
 
@@ -55,52 +77,21 @@ function setState(state) {
 
 // ------------------------------------------------------------------ worker client
 
-const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
-const pending = new Map(); // request id -> { resolve, reject, onProgress }
-let nextId = 1;
+const MODULE_URL = import.meta.resolve('straightest'); // the worker imports the npm package from here
+
+const progressView = createProgressView({ hooks, onCancel: () => cancelWork() });
+const client = createWorkerClient({
+  url: new URL('./worker.js', import.meta.url),
+  observer: progressView,
+});
 
 /**
- * Sends a request to the worker; resolves with its reply, rejects with an Error (+ category).
- * onProgress receives the 'progress' messages the worker sends before the reply.
+ * Sends a request to the worker; resolves with its reply, rejects with an Error (+ category;
+ * 'cancelled' when Cancel stopped it). onProgress receives the 'progress' messages before the reply.
  */
 function request(type, payload = {}, transfer = [], onProgress = null) {
-  const id = nextId++;
-  return new Promise((resolve, reject) => {
-    pending.set(id, { resolve, reject, onProgress });
-    worker.postMessage({ id, type, ...payload }, transfer);
-  });
+  return client.request(type, payload, transfer, onProgress);
 }
-
-worker.addEventListener('message', ({ data }) => {
-  const entry = pending.get(data.id);
-  if (!entry) return;
-  if (data.type === 'progress') {
-    entry.onProgress?.(data);
-    return;
-  }
-  pending.delete(data.id);
-  if (data.type === 'error') {
-    const err = new Error(data.message);
-    err.category = data.category;
-    entry.reject(err);
-  } else {
-    entry.resolve(data);
-  }
-});
-
-function failAllPending(message) {
-  for (const { reject } of pending.values()) {
-    const err = new Error(message);
-    err.category = 'worker';
-    reject(err);
-  }
-  pending.clear();
-}
-worker.addEventListener('error', (event) => {
-  event.preventDefault();
-  failAllPending(`the geometry worker failed to start: ${event.message || 'script error'}`);
-});
-worker.addEventListener('messageerror', () => failAllPending('a worker message could not be read'));
 
 // ------------------------------------------------------------------ scene
 
@@ -158,6 +149,29 @@ function requestRender() {
   if (!scheduledFrame) scheduledFrame = requestAnimationFrame(render);
 }
 
+/**
+ * Resolves once the GPU has finished the frames queued so far (polled, never waited for). A large
+ * upload waits for it: WebGL hands buffers to the GPU process through a bounded transfer buffer, so
+ * an upload queued behind slow frames (seconds each with a software renderer and a million-vertex
+ * mesh) would block the main thread until they are done.
+ */
+function gpuIdle() {
+  const gl = renderer.getContext();
+  const fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+  gl.flush();
+  return new Promise((resolve) => {
+    const poll = () => {
+      if (!fence || gl.isContextLost() || gl.getSyncParameter(fence, gl.SYNC_STATUS) === gl.SIGNALED) {
+        if (fence) gl.deleteSync(fence);
+        resolve();
+      } else {
+        setTimeout(poll, 30);
+      }
+    };
+    poll();
+  });
+}
+
 function resize() {
   const { clientWidth: w, clientHeight: h } = viewport;
   if (w === 0 || h === 0) return;
@@ -170,15 +184,12 @@ new ResizeObserver(resize).observe(viewport);
 resize();
 
 /** Replaces the displayed mesh by the worker's arrays. */
-function showMesh(positions, indices) {
-  if (surface) {
-    scene.remove(surface, wireframe);
-    surface.geometry.dispose();
-  }
+function showMesh(positions, indices, normals) {
+  removeSurface();
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+  geometry.setAttribute('normal', new THREE.BufferAttribute(normals, 3));
   geometry.setIndex(new THREE.BufferAttribute(indices, 1));
-  geometry.computeVertexNormals();
   geometry.computeBoundingSphere();
   if (surfaceMaterial.vertexColors) resetSurfaceColor(); // the next trace recolours if asked
   clearPaths(); // they belong to the previous mesh
@@ -188,6 +199,33 @@ function showMesh(positions, indices) {
   scene.add(surface, wireframe);
   meshGeneration += 1;
   paramView.meshChanged();
+}
+
+function removeSurface() {
+  if (!surface) return;
+  scene.remove(surface, wireframe);
+  surface.geometry.dispose();
+  surface = wireframe = null;
+}
+
+/** Nothing on display (after cancelling the reload of the mesh into a restarted worker). */
+function dropMesh() {
+  if (surfaceMaterial.vertexColors) resetSurfaceColor();
+  clearPaths();
+  removeSurface();
+  meshGeneration += 1;
+  meshLabel = '';
+  meshStatus = '';
+  displayed = null;
+  hooks.lastInfo = null;
+  hooks.paths = null;
+  paramView.meshChanged();
+  requestRender();
+}
+
+/** True for meshes the page does not parameterize on its own (see LARGE_MESH_VERTICES). */
+function largeMesh() {
+  return (hooks.lastInfo?.vertices ?? 0) > LARGE_MESH_VERTICES;
 }
 
 /**
@@ -234,6 +272,9 @@ const paramView = createParamView({
   generation: () => meshGeneration,
   label: () => meshLabel,
   pathSource: () => pathRequest.source,
+  large: () => largeMesh(),
+  largeLimit: LARGE_MESH_VERTICES,
+  gpuIdle,
   surfaceChanged: () => updateSurfaceMaterial(),
   requestRender,
 });
@@ -272,11 +313,22 @@ function showInfo(info, label) {
   }
 }
 
+// What to do about an error, per category, below the core's own message.
+const ERROR_HINTS = {
+  too_large: 'The browser could not give this mesh enough memory: WebAssembly memory is limited to ' +
+    '4 GB, and a mesh takes about 1.3 GB per million vertices once parameterized. Try a smaller or ' +
+    'decimated mesh.',
+  worker: 'Reload the page to start a new geometry worker.',
+};
+
 function showError(err, title) {
   hooks.lastError = { message: err.message, category: err.category ?? 'error' };
   $('error-title').textContent = title;
   $('error-message').textContent = err.message;
   $('error-category').textContent = err.category ?? 'error';
+  const hint = ERROR_HINTS[err.category] ?? '';
+  $('error-hint').textContent = hint;
+  $('error-hint').hidden = !hint;
   $('error-panel').hidden = false;
   $('status').textContent = 'Error — see above';
   setState('error');
@@ -289,25 +341,31 @@ function clearError() {
 // ------------------------------------------------------------------ loading
 
 let latestLoad = 0; // only the most recent load may update the view
-let shownSample = ''; // the sample on display ('' for a file), restored in the select after an error
+let displayed = null; // where the mesh on display came from: { sample } or { file } (see reloadInto)
 let meshStatus = ''; // the status line of the mesh on display
 let meshLabel = ''; // the sample or file name of the mesh on display
 
-async function load(what, send, sample = '') {
+/**
+ * Loads a mesh with send(current) (current() is false once a newer load or a cancel took over)
+ * and shows it, its paths and (unless it is large) its parameterization. origin: { sample } or
+ * { file }, kept to reload the mesh after a cancel.
+ */
+async function load(what, send, origin) {
   const ticket = ++latestLoad;
+  const current = () => ticket === latestLoad;
   setState('loading');
   $('status').textContent = `Loading ${what}…`;
   try {
-    const reply = await send();
-    if (ticket !== latestLoad) return;
+    const reply = await send(current);
+    if (!current()) return;
     meshLabel = reply.label;
-    showMesh(reply.positions, reply.indices);
+    hooks.lastInfo = reply.info;
+    showMesh(reply.positions, reply.indices, reply.normals);
     frameBox(reply.info.bbox);
     showInfo(reply.info, reply.label);
     clearError();
-    hooks.lastInfo = reply.info;
     hooks.lastError = null;
-    shownSample = sample;
+    displayed = origin;
     meshStatus =
       `${reply.label}: ${reply.info.vertices} vertices, ${reply.info.faces} faces ` +
       `(${reply.timeMs.toFixed(0)} ms in the worker)`;
@@ -316,16 +374,16 @@ async function load(what, send, sample = '') {
     resetPathRequest();
     await tracePaths(); // sets the state ('ready' once the paths are drawn)
     // Then the parameterization, so it does not delay the first view of the mesh and its paths.
-    if (ticket === latestLoad) await paramView.meshReady();
+    if (current()) await paramView.meshReady();
   } catch (err) {
-    if (ticket !== latestLoad) return;
-    $('sample-select').value = shownSample;
+    if (!current() || isCancelled(err)) return;
+    $('sample-select').value = displayed?.sample ?? '';
     showError(err, `Could not load ${what}`);
   }
 }
 
 function loadSample(name) {
-  return load(`sample “${name}”`, () => request('sample', { name }), name);
+  return load(`sample “${name}”`, () => request('sample', { name }), { sample: name });
 }
 
 function formatFromName(name) {
@@ -340,10 +398,66 @@ async function loadFile(file) {
     select.options[0].disabled = true;
   }
   select.value = '';
-  return load(`“${file.name}”`, async () => {
+  return load(`“${file.name}”`, async (current) => {
     const bytes = await file.arrayBuffer();
+    if (!current()) throw workerError('cancelled', 'cancelled'); // do not send it to a new worker
     return request('file', { name: file.name, format: formatFromName(file.name), bytes }, [bytes]);
-  });
+  }, { file });
+}
+
+// ------------------------------------------------------------------ cancelling
+
+let restoring = false; // the mesh on display is being reloaded into a restarted worker
+let latestReload = 0;
+
+/**
+ * Cancel: the worker is busy inside a synchronous WASM call and cannot read a message, so it is
+ * terminated and a new one loads the mesh on display again. Every pending request rejects as
+ * 'cancelled', and the tickets below make sure that nothing they started goes on.
+ */
+function cancelWork() {
+  const wasRestoring = restoring;
+  client.restart();
+  latestLoad += 1; // a load in flight stops (no paths, no parameterization after it)
+  latestTrace += 1;
+  latestHeat += 1;
+  paramView.cancelled();
+  if (wasRestoring) dropMesh(); // cancelling the reload itself: nothing is left in the worker
+  if ($('heat-toggle').checked && !surfaceMaterial.vertexColors) $('heat-toggle').checked = false;
+  $('sample-select').value = displayed?.sample ?? '';
+  reloadInto();
+}
+
+/** Initializes the restarted worker and loads the mesh on display into it again. */
+async function reloadInto() {
+  const origin = displayed;
+  const ticket = ++latestReload;
+  restoring = true;
+  setState('loading');
+  $('status').textContent = 'Cancelled — restarting the geometry worker…';
+  try {
+    await request('init', { moduleUrl: MODULE_URL });
+    if (origin?.sample) {
+      await request('sample', { name: origin.sample, restore: true });
+    } else if (origin?.file) {
+      const bytes = await origin.file.arrayBuffer();
+      if (origin !== displayed) return;
+      const { name } = origin.file;
+      await request('file', { name, format: formatFromName(name), bytes, restore: true }, [bytes]);
+    }
+    if (origin !== displayed) return;
+    hooks.cancels += 1;
+    clearError();
+    $('status').textContent = origin
+      ? `Cancelled. ${meshStatus}`
+      : 'Cancelled: no mesh loaded — choose a sample or open a file.';
+    setState('ready');
+  } catch (err) {
+    if (isCancelled(err) || origin !== displayed) return; // a newer cancel or load took over
+    showError(err, 'Could not restart the geometry worker');
+  } finally {
+    if (ticket === latestReload) restoring = false;
+  }
 }
 
 // ------------------------------------------------------------------ straightest paths
@@ -386,6 +500,26 @@ const cutPlaneRimMaterial = new THREE.LineBasicMaterial({
   color: HIGHLIGHT_COLOR, transparent: true, opacity: 0.6, depthWrite: false,
 });
 const markerGeometry = new THREE.SphereGeometry(1, 24, 16); // scaled per marker
+// The plain-line fallback for many paths (see FAT_LINE_SEGMENTS): 1 pixel, failed paths solid red;
+// lighter than the fat lines, as thousands of them cover the surface.
+const plainReachedMaterial = new THREE.LineBasicMaterial({ color: PATH_COLOR, transparent: true, opacity: 0.4 });
+const plainFailedMaterial = new THREE.LineBasicMaterial({ color: FAILED_COLOR });
+
+/**
+ * Builds the plain-line shaders while the GPU is idle: a program's first use waits for the GPU to
+ * finish its queued work, which with a software renderer can be a large mesh's frame of seconds.
+ */
+function prewarmPlainLines() {
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6), 3));
+  geometry.setIndex([0, 1]);
+  const warm = new THREE.Scene();
+  warm.add(new THREE.LineSegments(geometry, plainReachedMaterial), new THREE.LineSegments(geometry, plainFailedMaterial));
+  renderer.render(warm, camera);
+  geometry.dispose();
+  requestRender(); // the real scene replaces the warm-up frame
+}
+prewarmPlainLines();
 
 /** Removes and frees everything in `group` (shared materials and the marker geometry stay). */
 function clearGroup(group) {
@@ -405,14 +539,70 @@ function marker(position, material, radius) {
   return sphere;
 }
 
+/** Number of segments of the listed paths. */
+function segmentCount({ offsets }, paths) {
+  let count = 0;
+  for (const i of paths) count += Math.max(0, offsets[i + 1] - offsets[i] - 1);
+  return count;
+}
+
+/**
+ * Many paths: plain LineSegments, one per [paths, material] group, over one shared position
+ * attribute holding every `stride`-th point of each path and its last (see PLAIN_LINE_POINTS), with
+ * an index pair per segment. No picking data. Returns { lines, stride }.
+ */
+function plainPathLines(reply, groups) {
+  const { points, offsets, count } = reply;
+  const stride = Math.max(1, Math.ceil(offsets[count] / PLAIN_LINE_POINTS));
+  // start[i]: the first kept point of path i; a path of n ≥ 2 points keeps ⌈(n−1)/stride⌉ + 1.
+  const start = new Uint32Array(count + 1);
+  for (let i = 0; i < count; i++) {
+    const n = offsets[i + 1] - offsets[i];
+    start[i + 1] = start[i] + (n < 2 ? n : Math.ceil((n - 1) / stride) + 1);
+  }
+  const kept = new Float32Array(3 * start[count]);
+  const copy = (from, to) => {
+    kept[3 * to] = points[3 * from];
+    kept[3 * to + 1] = points[3 * from + 1];
+    kept[3 * to + 2] = points[3 * from + 2];
+  };
+  for (let i = 0; i < count; i++) {
+    const [first, end] = [offsets[i], offsets[i + 1]];
+    let to = start[i];
+    for (let j = first; j < end; j += stride) copy(j, to++);
+    if (to < start[i + 1]) copy(end - 1, to); // the last point, when the stride skipped it
+  }
+  const positions = new THREE.BufferAttribute(kept, 3);
+  const lines = [];
+  for (const [paths, material] of groups) {
+    let segments = 0;
+    for (const i of paths) segments += Math.max(0, start[i + 1] - start[i] - 1);
+    if (segments === 0) continue;
+    const index = new Uint32Array(2 * segments);
+    let s = 0;
+    for (const i of paths) {
+      for (let j = start[i]; j + 1 < start[i + 1]; j++) {
+        index[s++] = j;
+        index[s++] = j + 1;
+      }
+    }
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', positions);
+    geometry.setIndex(new THREE.BufferAttribute(index, 1));
+    const object = new THREE.LineSegments(geometry, material);
+    object.renderOrder = 1;
+    lines.push(object);
+  }
+  return { lines, stride };
+}
+
 /**
  * One LineSegments2 holding every segment of the listed paths, and for each segment the path it
  * belongs to (to name the path under the cursor).
  */
 function pathLines(reply, paths, material) {
   const { points, offsets } = reply;
-  let count = 0;
-  for (const i of paths) count += Math.max(0, offsets[i + 1] - offsets[i] - 1);
+  const count = segmentCount(reply, paths);
   if (count === 0) return null;
   const segments = new Float32Array(6 * count);
   const owner = new Uint32Array(count);
@@ -477,8 +667,15 @@ function showPaths(reply) {
 
   failedMaterial.dashSize = 0.012 * sceneScale;
   failedMaterial.gapSize = 0.008 * sceneScale;
-  const lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)]
-    .filter(Boolean);
+  let lines;
+  let stride = 1;
+  const plain = segmentCount(reply, reply.statuses.keys()) > FAT_LINE_SEGMENTS;
+  if (plain) {
+    ({ lines, stride } = plainPathLines(reply, [[reached, plainReachedMaterial], [failed, plainFailedMaterial]]));
+  } else {
+    lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)]
+      .filter(Boolean);
+  }
   const basePlane = basePlaneDisc(source, normal);
   const highlight = new Line2(new LineGeometry(), highlightMaterial);
   highlight.visible = false;
@@ -488,7 +685,10 @@ function showPaths(reply) {
   for (const { position } of pathRequest.added) {
     pathGroup.add(marker(position, addedMaterial, 0.008 * sceneScale));
   }
-  shown = { reply, source, normal, lines, basePlane, highlight, cutPlane, hovered: -1 };
+  // Plain lines have no picking data; so many paths lie on a large mesh whose surface would be
+  // ray cast on every pointer move.
+  const pickable = plain ? [] : lines;
+  shown = { reply, source, normal, lines: pickable, plain, stride, basePlane, highlight, cutPlane, hovered: -1 };
 }
 
 /**
@@ -605,6 +805,11 @@ function showStats(reply) {
     notes.push('No destinations: tick “Boundary destinations” or shift+click the mesh to add some.');
   }
   if (reply.baseNote) notes.push(`Base plane: ${reply.baseNote}.`);
+  if (shown?.plain) {
+    const every = shown.stride > 1 ? ` through 1 point in ${shown.stride}` : '';
+    notes.push(`${(reply.points.length / 3).toLocaleString('en-US')} path points: drawn as thin plain ` +
+      `lines${every} (failed ones solid red), and hovering a path is off.`);
+  }
   $('stats-note').textContent = notes.join(' ');
   $('stats-note').hidden = notes.length === 0;
   $('clear-targets-button').disabled = pathRequest.added.length === 0;
@@ -641,15 +846,16 @@ async function tracePaths() {
     const reply = await request('paths', { source: pathRequest.source, targets: currentTargets() });
     if (stale()) return;
     hooks.traces += 1;
+    clearPaths();
+    showPaths(reply);
+    showStats(reply);
     hooks.paths = {
       count: reply.count,
       reached: reply.reached,
       source: reply.source,
       traceMs: reply.timings.trace,
+      plain: shown.plain,
     };
-    clearPaths();
-    showPaths(reply);
-    showStats(reply);
     stage = 'compute the heat distances';
     if ($('heat-toggle').checked) await showHeat();
     if (stale()) return;
@@ -660,7 +866,7 @@ async function tracePaths() {
       : meshStatus;
     setState('ready');
   } catch (err) {
-    if (stale()) return;
+    if (stale() || isCancelled(err)) return;
     showError(err, `Could not ${stage}`);
   }
 }
@@ -878,7 +1084,9 @@ $('base-toggle').addEventListener('change', (event) => {
 
 $('heat-toggle').addEventListener('change', (event) => {
   if (event.target.checked) {
-    showHeat().catch((err) => showError(err, 'Could not compute the heat distances'));
+    showHeat().catch((err) => {
+      if (!isCancelled(err)) showError(err, 'Could not compute the heat distances');
+    });
   } else {
     resetSurfaceColor();
   }
@@ -916,7 +1124,7 @@ viewport.addEventListener('drop', (event) => {
 async function start() {
   setState('loading');
   try {
-    const { samples } = await request('init', { moduleUrl: import.meta.resolve('straightest') });
+    const { samples } = await request('init', { moduleUrl: MODULE_URL });
     hooks.samples = samples;
     const select = $('sample-select');
     select.replaceChildren(...samples.map((name) => new Option(name, name)));

@@ -4,8 +4,9 @@
 // only shows its arrays: it sets them as three.js attributes, draws the 2D layout and fills tables.
 //
 // main.js creates the view once with createParamView(context) and tells it when the mesh changes
-// (meshChanged, right after the new geometry is shown) and when the mesh's paths are drawn
-// (meshReady: the automatic first parameterization, kept out of the initial load).
+// (meshChanged, right after the new geometry is shown), when the mesh's paths are drawn
+// (meshReady: the automatic first parameterization, kept out of the initial load; large meshes
+// only get a note, the button runs it) and when Cancel stopped the worker (cancelled).
 //
 // Test hooks (on window.__straightest): param = { boundary, weights, l2, linf, bijective, flipped }
 // after each parameterization (null before and after a failure), paramError = { message, category }
@@ -13,8 +14,10 @@
 
 import * as THREE from 'three';
 import { applyUV } from 'straightest/three';
+import { isCancelled } from './worker-client.js';
 import {
-  BOUNDARY_COLORS, STRETCH_INFINITE, checkerboardCanvas, drawLayout, stretchGradient, stretchRgb,
+  BOUNDARY_COLORS, STRETCH_INFINITE, STRETCH_MAX, STRETCH_MIN, checkerboardCanvas, drawLayout, stretchGradient,
+  stretchRgb,
 } from './uv-layout.js';
 
 const $ = (id) => document.getElementById(id);
@@ -52,10 +55,13 @@ function download(blob, name) {
 
 /**
  * context: { request(type, payload, transfer, onProgress), hooks, scene, renderer, surface(),
- *            generation(), label(), pathSource(), surfaceChanged(), requestRender() }
+ *            generation(), label(), pathSource(), large(), largeLimit, gpuIdle(),
+ *            surfaceChanged(), requestRender() }
  * surface() is the THREE.Mesh on display (indexed geometry), generation() changes with every mesh,
- * pathSource() is the source of the straightest paths ('auto' or a SurfacePoint) and
- * surfaceChanged() makes main.js reapply the surface material (it asks texture() for the map).
+ * pathSource() is the source of the straightest paths ('auto' or a SurfacePoint), large() says
+ * whether the mesh has more than largeLimit vertices (no automatic run, no overlay polygons),
+ * gpuIdle() resolves when the GPU has caught up (before a large upload) and surfaceChanged() makes
+ * main.js reapply the surface material (it asks texture() for the map).
  */
 export function createParamView(context) {
   const { request, hooks, scene, renderer, requestRender } = context;
@@ -64,6 +70,8 @@ export function createParamView(context) {
   let shown = null; // { reply } of the parameterization on display (for the current mesh)
   let latestRun = 0; // only the most recent parameterize request may update the view
   let latestCompare = 0;
+  let running = false; // a parameterize request is in flight
+  let comparing = false; // likewise for compare
 
   // ---------------------------------------------------------------- textures
 
@@ -115,7 +123,11 @@ export function createParamView(context) {
 
   // Per-face colours need a copy of the mesh without shared corners: a non-indexed geometry with
   // the surface's positions and normals and one colour per face. It replaces the surface while the
-  // heat map is on (the surface stays pickable: ray casts ignore visibility).
+  // heat map is on (the surface stays pickable: ray casts ignore visibility). Normals and colours
+  // are stored as normalized integers (a 1M-vertex mesh's copy is ~110 MB instead of ~220 MB), and
+  // a large mesh is copied in slices of STRETCH_SLICE_FACES faces, one task each, so the page
+  // stays responsive meanwhile.
+  const STRETCH_SLICE_FACES = 200_000;
   const stretchMaterial = new THREE.MeshStandardMaterial({
     vertexColors: true,
     roughness: 0.8,
@@ -126,39 +138,100 @@ export function createParamView(context) {
     polygonOffsetUnits: 2,
   });
   let stretchMesh = null;
+  let stretchBuild = 0; // ticket of the latest heat-map copy
+  let stretchBuilding = false; // a large mesh's copy is being built, slice by slice
 
-  function buildStretchMesh() {
+  /** The stretch colour scale in linear RGB bytes: 256 steps of [1, 2], then ∞ (flipped). */
+  let stretchColors = null;
+  function stretchColorTable() {
+    if (stretchColors) return stretchColors;
+    stretchColors = new Uint8Array(3 * 257);
+    const color = new THREE.Color();
+    for (let i = 0; i <= 256; i++) {
+      const [r, g, b] = i < 256 ? stretchRgb(STRETCH_MIN + (i / 255) * (STRETCH_MAX - STRETCH_MIN)) : STRETCH_INFINITE;
+      color.setRGB(r / 255, g / 255, b / 255, THREE.SRGBColorSpace); // to the linear working space
+      stretchColors.set([color.r, color.g, color.b].map((c) => Math.round(255 * c)), 3 * i);
+    }
+    return stretchColors;
+  }
+
+  /** Builds the heat-map copy of the surface (in slices when large), then shows it if still wanted. */
+  async function buildStretchMesh() {
+    const ticket = ++stretchBuild;
+    let sliced = false;
     const surface = context.surface();
     const { index, attributes } = surface.geometry;
-    const geometry = surface.geometry.toNonIndexed(); // positions and normals per corner
-    geometry.deleteAttribute('uv');
-    const faces = index.count / 3;
-    const colors = new Float32Array(9 * faces);
-    const color = new THREE.Color();
+    if (!attributes.normal) surface.geometry.computeVertexNormals();
+    const corners = index.array;
+    const position = attributes.position.array;
+    const normal = attributes.normal.array;
     const { faceStretch } = shown.reply;
-    for (let f = 0; f < faces; f++) {
-      const [r, g, b] = stretchRgb(faceStretch[f]);
-      color.setRGB(r / 255, g / 255, b / 255, THREE.SRGBColorSpace);
-      for (let k = 0; k < 3; k++) color.toArray(colors, 9 * f + 3 * k);
+    const faces = corners.length / 3;
+    const positions = new Float32Array(9 * faces);
+    const normals = new Int16Array(9 * faces);
+    const colors = new Uint8Array(9 * faces);
+    const table = stretchColorTable();
+    for (let slice = 0; slice < faces; slice += STRETCH_SLICE_FACES) {
+      if (slice > 0) {
+        sliced = stretchBuilding = true;
+        await new Promise((resolve) => setTimeout(resolve)); // let the page breathe between slices
+        if (ticket !== stretchBuild) return; // the mesh or the parameterization changed
+      }
+      const end = Math.min(faces, slice + STRETCH_SLICE_FACES);
+      for (let f = slice; f < end; f++) {
+        const s = faceStretch[f];
+        const t = Number.isFinite(s) ? Math.round(255 * Math.min(Math.max(s - STRETCH_MIN, 0) / (STRETCH_MAX - STRETCH_MIN), 1)) : 256;
+        for (let k = 0; k < 3; k++) {
+          const v = corners[3 * f + k];
+          const to = 9 * f + 3 * k;
+          for (let c = 0; c < 3; c++) {
+            positions[to + c] = position[3 * v + c];
+            normals[to + c] = Math.round(32767 * Math.min(Math.max(normal[3 * v + c], -1), 1));
+            colors[to + c] = table[3 * t + c];
+          }
+        }
+      }
     }
-    geometry.setAttribute('color', new THREE.BufferAttribute(colors, 3));
-    if (!attributes.normal) geometry.computeVertexNormals();
+    if (sliced) {
+      await context.gpuIdle(); // its upload (~110 MB for 1M vertices) must not queue behind slow frames
+      if (ticket !== stretchBuild) return;
+    }
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    geometry.setAttribute('normal', new THREE.BufferAttribute(normals, 3, true));
+    geometry.setAttribute('color', new THREE.BufferAttribute(colors, 3, true));
     stretchMesh = new THREE.Mesh(geometry, stretchMaterial);
     scene.add(stretchMesh);
+    stretchBuilding = false;
+    if (sliced) updateSurfaceView();
   }
 
   function removeStretchMesh() {
+    stretchBuild += 1; // a copy still being built is dropped
+    stretchBuilding = false;
     if (!stretchMesh) return;
     scene.remove(stretchMesh);
     stretchMesh.geometry.dispose();
     stretchMesh = null;
   }
 
-  /** Shows the heat map or the (textured) surface, as the toggle says. */
+  /**
+   * Shows the heat map or the (textured) surface, as the toggle says. A large mesh's heat map comes
+   * a moment later (its copy is built in slices; the surface stays until then).
+   */
   function updateSurfaceView() {
     const surface = context.surface();
-    const heat = $('stretch-toggle').checked && shown !== null && surface !== null;
-    if (heat && !stretchMesh) buildStretchMesh();
+    let heat = $('stretch-toggle').checked && shown !== null && surface !== null;
+    if (heat && !stretchMesh) {
+      if (!stretchBuilding) {
+        // Synchronous for a small mesh (one slice); a large one shows when its last slice is done.
+        buildStretchMesh().catch((err) => {
+          stretchBuilding = false;
+          showNote(`Could not build the stretch heat map: ${err.message}`, 'error');
+        });
+      }
+      heat = stretchMesh !== null;
+    }
     if (stretchMesh) stretchMesh.visible = heat;
     if (surface) surface.visible = !heat;
     stretchMaterial.flatShading = $('flat-toggle').checked;
@@ -270,16 +343,20 @@ export function createParamView(context) {
       source: sourceOption(),
       boundary: $('boundary-select').value,
       weights: $('weights-select').value,
+      overlays: !context.large(), // the other boundaries' polygons: another solve each
     };
     showNote('Parameterizing…', 'busy');
     $('param-panel').dataset.state = 'running';
+    running = true;
     try {
       const reply = await request('parameterize', options);
       if (stale()) return;
       show(reply, options.boundary);
     } catch (err) {
-      if (stale()) return;
+      if (stale() || isCancelled(err)) return;
       showFailure(err);
+    } finally {
+      if (!stale()) running = false;
     }
   }
 
@@ -300,7 +377,11 @@ export function createParamView(context) {
     hooks.parameterizations += 1;
     showStats(reply, requested);
     const failed = reply.overlays.filter((o) => o.error);
-    showNote(failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`).join(' '));
+    const notes = failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`);
+    if (reply.overlays.some((o) => o.skipped)) {
+      notes.push('Large mesh: the layout shows only this boundary (the others would take a solve each).');
+    }
+    showNote(notes.join(' '));
     $('param-panel').dataset.state = 'done';
     context.surfaceChanged();
     updateSurfaceView();
@@ -349,9 +430,10 @@ export function createParamView(context) {
     progress.hidden = false;
     status.textContent = 'starting…';
     $('compare-button').disabled = true;
+    comparing = true;
     try {
       const reply = await request('compare', { source: sourceOption() }, [], ({ done, total }) => {
-        if (stale()) return;
+        if (stale() || done === undefined) return;
         progress.max = total;
         progress.value = done;
         status.textContent = `${done} / ${total}`;
@@ -362,10 +444,11 @@ export function createParamView(context) {
       const total = reply.rows.reduce((sum, row) => sum + row.timeMs, 0);
       status.textContent = `${reply.rows.length} runs in ${formatMs(total)}`;
     } catch (err) {
-      if (stale()) return;
+      if (stale() || isCancelled(err)) return;
       status.textContent = `failed: ${err.message}`;
     } finally {
       if (!stale()) {
+        comparing = false;
         progress.hidden = true;
         setButtons();
       }
@@ -442,7 +525,7 @@ export function createParamView(context) {
       const { text } = await request('exportObj', { uv: reply.uv });
       download(new Blob([text], { type: 'text/plain' }), `${baseName()}-${reply.boundary}-uv.obj`);
     } catch (err) {
-      showNote(`Could not export the OBJ: ${err.message}`, 'error');
+      if (!isCancelled(err)) showNote(`Could not export the OBJ: ${err.message}`, 'error');
     }
   }
 
@@ -503,22 +586,58 @@ export function createParamView(context) {
     /** A new mesh is on display: everything shown belongs to the previous one. */
     meshChanged() {
       latestRun += 1;
+      running = false;
+      comparing = false;
       forget();
       hooks.paramError = null;
       clearStats();
       showNote('');
       delete $('param-panel').dataset.state;
       clearTable();
-      layoutMessage = 'Parameterizing…';
+      layoutMessage = context.surface() ? 'Parameterizing…' : 'No mesh loaded.';
       context.surfaceChanged(); // no uv yet: no texture
       updateSurfaceView();
       redrawLayout();
       setButtons();
     },
 
-    /** The mesh's paths are drawn: time for the automatic parameterization (a non-disk shows why not). */
+    /**
+     * The mesh's paths are drawn: time for the automatic parameterization (a non-disk shows why
+     * not). A large mesh only gets a note: each solve takes seconds there.
+     */
     meshReady() {
-      return parameterize();
+      if (!context.large()) return parameterize();
+      const vertices = context.hooks.lastInfo?.vertices ?? 0;
+      showNote(`Large mesh (${vertices.toLocaleString('en-US')} vertices, more than ` +
+        `${context.largeLimit.toLocaleString('en-US')}): it is not parameterized automatically. ` +
+        'Press Parameterize to run it — it takes a while, the progress shows over the view and ' +
+        'Cancel stops it.', 'note');
+      layoutMessage = 'Press Parameterize to flatten this large mesh.';
+      redrawLayout();
+      return Promise.resolve();
+    },
+
+    /** Cancel stopped the worker: whatever it was computing here will not come. */
+    cancelled() {
+      latestRun += 1;
+      latestCompare += 1;
+      if (running) {
+        running = false;
+        showNote('Parameterization cancelled.', 'note');
+        if (shown) {
+          $('param-panel').dataset.state = 'done';
+        } else {
+          delete $('param-panel').dataset.state;
+          layoutMessage = 'Cancelled — press Parameterize to run it.';
+          redrawLayout();
+        }
+      }
+      if (comparing) {
+        comparing = false;
+        $('compare-progress').hidden = true;
+        $('compare-status').textContent = 'cancelled';
+      }
+      setButtons();
     },
   };
 }

@@ -65,6 +65,11 @@ export function checkerboardCanvas(size = 1024, cells = 16) {
 
 const MARGIN = 12; // CSS pixels around the unit square
 const LEGEND_HEIGHT = 58; // CSS pixels below it: the boundary legend, a caption and a key
+// Above this many faces the triangles are filled pixel by pixel into the canvas' image instead of
+// stroked one by one: at that density the edges would be a solid fill anyway, and stroking millions
+// of sub-pixel triangles would block the page for seconds.
+export const RASTER_FACES = 50_000;
+const RASTER_FILL = [99, 104, 111]; // the thin edge colour over the background, as the strokes blend
 
 /** The canvas' backing store follows its CSS size (at least 2× for a crisp PNG export). */
 function fitCanvas(canvas) {
@@ -124,10 +129,48 @@ export function drawLayout(canvas, layout, message = '') {
     return;
   }
 
-  const { uv, indices, faceStretch, overlays, boundary, heat } = layout;
+  const { indices, overlays, boundary } = layout;
+  const faces = indices.length / 3;
+  if (faces > RASTER_FACES) {
+    rasterize(ctx, layout, x0, y0, side);
+  } else {
+    drawTriangles(ctx, layout, px, py);
+  }
+
+  // The boundary polygons: the others dashed and thin, the chosen one bold on top.
+  const polygonPath = (polygon) => {
+    ctx.beginPath();
+    for (let i = 0; i < polygon.length; i += 2) ctx[i ? 'lineTo' : 'moveTo'](px(polygon[i]), py(polygon[i + 1]));
+    ctx.closePath();
+  };
+  ctx.lineJoin = 'round';
+  for (const { boundary: kind, polygon } of overlays) {
+    if (!polygon || kind === boundary) continue;
+    ctx.strokeStyle = BOUNDARY_COLORS[kind];
+    ctx.lineWidth = 1.4;
+    ctx.setLineDash([5, 3]);
+    polygonPath(polygon);
+    ctx.stroke();
+  }
+  ctx.setLineDash([]);
+  const chosen = overlays.find((o) => o.boundary === boundary && o.polygon);
+  if (chosen) {
+    ctx.strokeStyle = 'rgba(0, 0, 0, 0.55)'; // a dark halo keeps the bold line readable on any fill
+    ctx.lineWidth = 5;
+    polygonPath(chosen.polygon);
+    ctx.stroke();
+    ctx.strokeStyle = BOUNDARY_COLORS[boundary];
+    ctx.lineWidth = 3;
+    ctx.stroke();
+  }
+
+  drawLegend(ctx, { ...layout, raster: faces > RASTER_FACES, faces }, x0, y0 + side + 10, side);
+}
+
+/** The triangles as canvas paths: filled with their stretch colour when `heat`, then their edges. */
+function drawTriangles(ctx, { uv, indices, faceStretch, heat }, px, py) {
   const faces = indices.length / 3;
   const corner = (f, k) => indices[3 * f + k];
-
   if (heat) {
     // One fill per face in its stretch colour, stroked with the same colour so no seams show.
     ctx.lineWidth = 0.6;
@@ -157,46 +200,94 @@ export function drawLayout(canvas, layout, message = '') {
     ctx.closePath();
   }
   ctx.stroke();
+}
 
-  // The boundary polygons: the others dashed and thin, the chosen one bold on top.
-  const polygonPath = (polygon) => {
-    ctx.beginPath();
-    for (let i = 0; i < polygon.length; i += 2) ctx[i ? 'lineTo' : 'moveTo'](px(polygon[i]), py(polygon[i + 1]));
-    ctx.closePath();
-  };
-  ctx.lineJoin = 'round';
-  for (const { boundary: kind, polygon } of overlays) {
-    if (!polygon || kind === boundary) continue;
-    ctx.strokeStyle = BOUNDARY_COLORS[kind];
-    ctx.lineWidth = 1.4;
-    ctx.setLineDash([5, 3]);
-    polygonPath(polygon);
-    ctx.stroke();
+/**
+ * Many triangles: fills them into the frame's pixels (device pixels, read back and written once),
+ * in their stretch colour when `heat`, else in the colour their dense edges would have. A pixel
+ * belongs to the triangles that contain its center, so a tiling leaves no holes however small its
+ * triangles are.
+ */
+function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
+  const scale = ctx.getTransform().a; // device pixels per CSS pixel (fitCanvas)
+  const left = Math.floor(x0 * scale);
+  const top = Math.floor(y0 * scale);
+  const size = Math.ceil(side * scale) + 1;
+  const image = ctx.getImageData(left, top, size, size);
+  const { data, width, height } = image;
+  // u, v → pixel coordinates within the image (pixel centers at integer + 0.5).
+  const sx = side * scale;
+  const ox = x0 * scale - left;
+  const oy = y0 * scale - top;
+  const lut = heat ? stretchTable() : null;
+  const faces = indices.length / 3;
+  for (let f = 0; f < faces; f++) {
+    const a = indices[3 * f];
+    const b = indices[3 * f + 1];
+    const c = indices[3 * f + 2];
+    const ax = ox + uv[2 * a] * sx;
+    const ay = oy + (1 - uv[2 * a + 1]) * sx;
+    const bx = ox + uv[2 * b] * sx;
+    const by = oy + (1 - uv[2 * b + 1]) * sx;
+    const cx = ox + uv[2 * c] * sx;
+    const cy = oy + (1 - uv[2 * c + 1]) * sx;
+    const area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+    if (!(area !== 0)) continue; // degenerate (or NaN) in uv
+    const sign = area > 0 ? 1 : -1;
+    const eps = -1e-7 * Math.abs(area);
+    const x1 = Math.max(0, Math.floor(Math.min(ax, bx, cx)));
+    const x2 = Math.min(width - 1, Math.ceil(Math.max(ax, bx, cx)));
+    const y1 = Math.max(0, Math.floor(Math.min(ay, by, cy)));
+    const y2 = Math.min(height - 1, Math.ceil(Math.max(ay, by, cy)));
+    let r = RASTER_FILL[0];
+    let g = RASTER_FILL[1];
+    let bl = RASTER_FILL[2];
+    if (lut) {
+      const s = faceStretch[f];
+      const k = Number.isFinite(s) ? 3 * Math.round(255 * Math.min(Math.max(s - STRETCH_MIN, 0) / (STRETCH_MAX - STRETCH_MIN), 1)) : 768;
+      [r, g, bl] = [lut[k], lut[k + 1], lut[k + 2]];
+    }
+    for (let y = y1; y <= y2; y++) {
+      const py = y + 0.5;
+      for (let x = x1; x <= x2; x++) {
+        const px = x + 0.5;
+        // Edge functions, all ≥ 0 inside (for either orientation, by `sign`).
+        if (sign * ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) < eps) continue;
+        if (sign * ((cx - bx) * (py - by) - (cy - by) * (px - bx)) < eps) continue;
+        if (sign * ((ax - cx) * (py - cy) - (ay - cy) * (px - cx)) < eps) continue;
+        const p = 4 * (y * width + x);
+        data[p] = r;
+        data[p + 1] = g;
+        data[p + 2] = bl;
+        data[p + 3] = 255;
+      }
+    }
   }
-  ctx.setLineDash([]);
-  const chosen = overlays.find((o) => o.boundary === boundary && o.polygon);
-  if (chosen) {
-    ctx.strokeStyle = 'rgba(0, 0, 0, 0.55)'; // a dark halo keeps the bold line readable on any fill
-    ctx.lineWidth = 5;
-    polygonPath(chosen.polygon);
-    ctx.stroke();
-    ctx.strokeStyle = BOUNDARY_COLORS[boundary];
-    ctx.lineWidth = 3;
-    ctx.stroke();
-  }
+  ctx.putImageData(image, left, top);
+}
 
-  drawLegend(ctx, layout, x0, y0 + side + 10, side);
+let stretchLut = null;
+/** stretchRgb at 256 steps of [STRETCH_MIN, STRETCH_MAX], then the infinite colour: 3 bytes each. */
+function stretchTable() {
+  if (!stretchLut) {
+    stretchLut = new Uint8Array(3 * 257);
+    for (let i = 0; i < 256; i++) {
+      stretchLut.set(stretchRgb(STRETCH_MIN + (i / 255) * (STRETCH_MAX - STRETCH_MIN)), 3 * i);
+    }
+    stretchLut.set(STRETCH_INFINITE, 768);
+  }
+  return stretchLut;
 }
 
 /**
  * Below the frame, three lines: a swatch per boundary polygon (the chosen one bold), the caption,
  * and the key of the fill (the stretch scale) or of the lines.
  */
-function drawLegend(ctx, { overlays, boundary, caption, heat }, x, y, width) {
+function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces }, x, y, width) {
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'left';
   let cx = x;
-  for (const { boundary: kind, polygon } of overlays) {
+  for (const { boundary: kind, polygon, skipped } of overlays) {
     const isChosen = kind === boundary;
     ctx.strokeStyle = BOUNDARY_COLORS[kind];
     ctx.globalAlpha = polygon ? 1 : 0.4;
@@ -208,7 +299,7 @@ function drawLegend(ctx, { overlays, boundary, caption, heat }, x, y, width) {
     ctx.setLineDash([]);
     ctx.font = `${isChosen ? 600 : 400} 11.5px system-ui, sans-serif`;
     ctx.fillStyle = isChosen ? '#e4e7ec' : '#a3abb8';
-    const label = polygon ? kind : `${kind} (failed)`;
+    const label = polygon ? kind : `${kind} (${skipped ? 'skipped' : 'failed'})`;
     ctx.fillText(label, cx + 23, y + 6);
     ctx.globalAlpha = 1;
     cx += 23 + ctx.measureText(label).width + 14;
@@ -221,7 +312,10 @@ function drawLegend(ctx, { overlays, boundary, caption, heat }, x, y, width) {
   ctx.fillStyle = '#8d96a5';
   const keyY = y + 37;
   if (!heat) {
-    ctx.fillText(fitText(ctx, 'thin lines: mesh edges · dashed square: the uv frame [0,1]²', width), x, keyY);
+    const key = raster
+      ? `grey: ${faces.toLocaleString('en-US')} faces, filled (too many edges to draw)`
+      : 'thin lines: mesh edges · dashed square: the uv frame [0,1]²';
+    ctx.fillText(fitText(ctx, key, width), x, keyY);
     return;
   }
   // The stretch scale: "L2 stretch: 1 [ramp] ≥ 2 ■ flipped".

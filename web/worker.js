@@ -6,10 +6,14 @@
 //
 // Protocol (every request carries an `id`; the reply echoes it; 'init' comes first):
 //   → { id, type: 'init', moduleUrl }                        ← { id, type: 'ready', samples: string[] }
-//   → { id, type: 'sample', name }                           ← { id, type: 'mesh', ... } (below)
-//   → { id, type: 'file', name, format, bytes: ArrayBuffer } ← { id, type: 'mesh', ... }
+//   → { id, type: 'sample', name, restore? }                 ← { id, type: 'mesh', ... } (below)
+//   → { id, type: 'file', name, format, bytes: ArrayBuffer, restore? } ← { id, type: 'mesh', ... }
 //        'mesh' replies: { id, type: 'mesh', label, positions: Float32Array, indices: Uint32Array,
-//                          info, timeMs }  (buffers transferred)
+//                          normals: Float32Array, info, timeMs }  (buffers transferred)
+//        normals: area-weighted unit vertex normals for smooth shading (made here so the page's
+//        main thread has no per-vertex work on a large mesh).
+//        restore: true when the page still shows this mesh and only the worker must load it again
+//        (after a restart): the reply then has no positions and indices.
 //   → { id, type: 'paths', source, targets }                 ← { id, type: 'paths', ... } (below)
 //        source: a SurfacePoint or 'auto' (the default source);
 //        targets: 'boundary' | Array<SurfacePoint | 'boundary'> — a 'boundary' entry stands for every
@@ -22,27 +26,44 @@
 //                           timings: { prepare, trace }, timeMs }  (buffers transferred)
 //   → { id, type: 'distances', source }                      ← { id, type: 'distances', source,
 //        distances: Float32Array (heat method, one per vertex), max, timeMs }
-//   → { id, type: 'parameterize', source, boundary, weights } ← { id, type: 'parameterization', ... }
+//   → { id, type: 'parameterize', source, boundary, weights, overlays } ← { id, type: 'parameterization', ... }
 //        source: a SurfacePoint or 'auto'; boundary: 'measured' | 'circle' | 'square' | 'auto';
 //        weights: 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform'.
 //        The reply holds every field of mesh.parameterize() (uv, faceStretch, boundaryPolygon and
-//        boundaryLoop transferred) plus timeMs and `overlays`: [{ boundary, polygon, error }] for
-//        'measured', 'circle' and 'square' — each boundary's polygon in the same [0,1]² frame (or
+//        boundaryLoop transferred) plus timeMs and `overlays`: [{ boundary, polygon, error, skipped }]
+//        for 'measured', 'circle' and 'square' — each boundary's polygon in the same [0,1]² frame (or
 //        polygon null and the core's message when that boundary failed), for the layout overlay.
-//   → { id, type: 'compare', source }                        ← { id, type: 'progress', done, total }
-//        after each cell, then { id, type: 'comparison', source, rows: [{ boundary, weights, l2,
-//        linf, flipped, degenerate, bijective, timeMs, error }] } (3 boundaries × 4 weights; a cell
-//        that fails has error set and no numbers)
+//        With overlays: false (the page's choice on large meshes: each costs another solve) only the
+//        chosen boundary's polygon is there; the others have polygon null and skipped: true.
+//   → { id, type: 'compare', source }                        ← { id, type: 'progress', stage:
+//        'compare', fraction, done, total } after each cell, then { id, type: 'comparison', source,
+//        rows: [{ boundary, weights, l2, linf, flipped, degenerate, bijective, timeMs, error }] }
+//        (3 boundaries × 4 weights; a cell that fails has error set and no numbers)
 //   → { id, type: 'exportObj', uv: Float32Array }            ← { id, type: 'obj', text }
 //        OBJ of the current mesh in its input vertex order, with the given uv as `vt` lines.
 //   any failure                                              ← { id, type: 'error', message, category }
 // A request answers with exactly one final reply; only 'progress' messages may come before it.
+//
+// Progress: while a request runs the worker posts { id, type: 'progress', stage, fraction } (0…1),
+// the first one with `stages`, the request's planned stages in order:
+//   sample, file: 'load' (parsing and checks: one call, so only 0 and 1), 'upload'
+//   paths: 'trace', 'upload'          distances: 'heat', 'upload'
+//   parameterize: 'source', 'trace' (measured and auto boundaries), 'weights', 'solve', 'metrics'
+//                 (the core's stages), 'overlays' (the other boundaries' polygons), 'upload'
+//   compare: 'compare'                exportObj: 'export'
+// 'upload' is packing the results into transferable arrays and posting them. The core's callbacks
+// (≤ ~100 per stage) are throttled to one message per 50 ms; a stage's start and its final 1.0 are
+// always posted, and a stage the core did not report (e.g. 'solve' when the solver converged within
+// its first check) is completed when a later one starts.
+//
+// Cancelling: the work runs inside synchronous WASM calls, so the worker cannot read a message that
+// would stop it; the page terminates the worker instead and starts a new one (see main.js).
 
 let modulePromise = null; // resolves to the object returned by createStraightest()
 let currentMesh = null; // the mesh later operations will work on; deleted when replaced
-// Per-mesh data the handlers reuse: vertex positions and triangles (to place the targets the
-// reply lists), whether the mesh has a boundary, and the boundary targets once known.
-let currentData = null; // { positions: Float64Array, indices: Uint32Array, closed, boundary, polygons }
+// Per-mesh data the handlers reuse: whether the mesh has a boundary, the boundary targets once known
+// and the overlay polygons per source.
+let currentData = null; // { closed, boundary, polygons }
 
 const BOUNDARIES = ['measured', 'circle', 'square'];
 const WEIGHTS = ['shape-preserving', 'mean-value', 'cotan', 'uniform'];
@@ -57,15 +78,135 @@ function formatFromName(name) {
   return ext === 'obj' || ext === 'off' ? ext : 'auto';
 }
 
-/** Replaces the current mesh and builds the 'mesh' reply (positions as Float32 for WebGL). */
-function meshReply(mesh, label, startTime) {
+// ------------------------------------------------------------------ progress
+
+const THROTTLE_MS = 50; // at most one intermediate 'progress' message per 50 ms and request
+const PARAMETERIZE_STAGES = ['source', 'trace', 'weights', 'solve', 'metrics'];
+
+/** The stages a request goes through, in order (see the protocol above). */
+function plannedStages(request) {
+  switch (request.type) {
+    case 'sample':
+    case 'file':
+      return request.restore ? ['load'] : ['load', 'upload'];
+    case 'paths':
+      return ['trace', 'upload'];
+    case 'distances':
+      return ['heat', 'upload'];
+    case 'parameterize': {
+      const traced = ['measured', 'auto', undefined].includes(request.boundary);
+      const core = PARAMETERIZE_STAGES.filter((stage) => stage !== 'trace' || traced);
+      return [...core, ...(request.overlays === false ? [] : ['overlays']), 'upload'];
+    }
+    case 'compare':
+      return ['compare'];
+    case 'exportObj':
+      return ['export'];
+    default:
+      return [];
+  }
+}
+
+/**
+ * Posts a request's 'progress' messages. update(stage, fraction) takes the core's callbacks and the
+ * worker's own stages: a later stage completes every earlier one; within a stage, fractions only
+ * grow and are throttled. finish() completes every stage (before the final reply).
+ */
+class StageProgress {
+  constructor(id, stages) {
+    this.id = id;
+    this.stages = stages;
+    this.fractions = stages.map(() => -1); // -1: not posted yet
+    this.current = -1; // index of the running stage
+    this.lastPost = 0;
+    this.callback = (stage, fraction) => {
+      this.update(stage, fraction);
+      return true; // never cancels: the page cancels by terminating the worker
+    };
+    if (stages.length) this.update(stages[0], 0);
+  }
+
+  update(stage, fraction, extra = undefined) {
+    const k = this.stages.indexOf(stage);
+    if (k < 0) return; // a stage this request does not show
+    if (k > this.current) {
+      for (let j = Math.max(this.current, 0); j < k; j++) this.#post(j, 1, true);
+      this.current = k;
+      this.#post(k, fraction, true, extra);
+    } else {
+      // The running stage, or an earlier one again ('auto' solves once per boundary candidate).
+      this.#post(k, fraction, false, extra);
+    }
+  }
+
+  finish() {
+    for (let k = 0; k < this.stages.length; k++) this.#post(k, 1, true);
+  }
+
+  #post(k, fraction, force, extra) {
+    const f = Math.min(Math.max(Number(fraction) || 0, 0), 1);
+    if (f <= this.fractions[k]) return;
+    const now = performance.now();
+    if (!force && f < 1 && now - this.lastPost < THROTTLE_MS) return;
+    const first = this.fractions.every((x) => x < 0);
+    this.fractions[k] = f;
+    this.lastPost = now;
+    self.postMessage({
+      id: this.id, type: 'progress', stage: this.stages[k], fraction: f,
+      ...(first ? { stages: this.stages } : {}), ...extra,
+    });
+  }
+}
+
+// ------------------------------------------------------------------ meshes
+
+/** Area-weighted vertex normals, unit length (zero for unreferenced vertices), as Float32. */
+function vertexNormals(positions, indices) {
+  const sums = new Float64Array(positions.length);
+  for (let f = 0; f < indices.length; f += 3) {
+    const a = 3 * indices[f];
+    const b = 3 * indices[f + 1];
+    const c = 3 * indices[f + 2];
+    const ux = positions[b] - positions[a];
+    const uy = positions[b + 1] - positions[a + 1];
+    const uz = positions[b + 2] - positions[a + 2];
+    const vx = positions[c] - positions[a];
+    const vy = positions[c + 1] - positions[a + 1];
+    const vz = positions[c + 2] - positions[a + 2];
+    // The cross product's length is twice the face area: the sum weights the faces by area.
+    const nx = uy * vz - uz * vy;
+    const ny = uz * vx - ux * vz;
+    const nz = ux * vy - uy * vx;
+    sums[a] += nx; sums[a + 1] += ny; sums[a + 2] += nz;
+    sums[b] += nx; sums[b + 1] += ny; sums[b + 2] += nz;
+    sums[c] += nx; sums[c + 1] += ny; sums[c + 2] += nz;
+  }
+  const normals = new Float32Array(positions.length);
+  for (let v = 0; v < sums.length; v += 3) {
+    const length = Math.hypot(sums[v], sums[v + 1], sums[v + 2]);
+    if (length > 0) for (let c = 0; c < 3; c++) normals[v + c] = sums[v + c] / length;
+  }
+  return normals;
+}
+
+/**
+ * Replaces the current mesh and builds the 'mesh' reply (positions as Float32 for WebGL; none when
+ * restoring a mesh the page still shows).
+ */
+function meshReply(mesh, label, startTime, progress, restore) {
+  progress.update('upload', 0);
   let info;
   let positions;
   let indices;
+  let normals;
   try {
     info = mesh.info();
-    positions = Float32Array.from(mesh.positions());
-    indices = mesh.indices();
+    if (!restore) {
+      const exact = mesh.positions();
+      indices = mesh.indices();
+      normals = vertexNormals(exact, indices);
+      positions = Float32Array.from(exact);
+    }
   } catch (err) {
     mesh.delete();
     throw err;
@@ -73,8 +214,6 @@ function meshReply(mesh, label, startTime) {
   currentMesh?.delete();
   currentMesh = mesh;
   currentData = {
-    positions: mesh.positions(),
-    indices: indices.slice(), // `indices` itself is transferred to the page
     closed: (info.boundaryLoops ?? []).length === 0,
     boundary: null,
     polygons: new Map(), // source key -> overlays (see boundaryOverlays)
@@ -84,10 +223,11 @@ function meshReply(mesh, label, startTime) {
     label,
     positions,
     indices,
+    normals,
     info,
     timeMs: performance.now() - startTime,
   };
-  return { reply, transfer: [positions.buffer, indices.buffer] };
+  return { reply, transfer: restore ? [] : [positions.buffer, indices.buffer, normals.buffer] };
 }
 
 function requireMesh() {
@@ -127,14 +267,22 @@ function describeError(err) {
  * The boundary polygons of 'measured', 'circle' and 'square' for the layout overlay, one
  * parameterization each. A polygon depends only on the boundary and the source, not on the weights,
  * so the cheapest weights do and the result is kept per source; `known` (the reply's own
- * boundary and polygon) saves one of the three solves.
+ * boundary and polygon) saves one of the three solves. Without `all`, only `known` is listed (the
+ * others skipped). Reports the 'overlays' stage (one step per solve).
  */
-function boundaryOverlays(mesh, source, known) {
+function boundaryOverlays(mesh, source, known, all, progress) {
   const key = JSON.stringify(source);
   let overlays = currentData.polygons.get(key);
+  if (!overlays && !all) {
+    return BOUNDARIES.map((boundary) => (boundary === known.boundary
+      ? { boundary, polygon: known.polygon.slice(), error: null }
+      : { boundary, polygon: null, error: null, skipped: true }));
+  }
   if (!overlays) {
+    let done = 0;
     overlays = BOUNDARIES.map((boundary) => {
       if (boundary === known.boundary) return { boundary, polygon: known.polygon.slice(), error: null };
+      progress.update('overlays', done++ / (BOUNDARIES.length - 1));
       try {
         const { boundaryPolygon } = mesh.parameterize({ source, boundary, weights: 'uniform' });
         return { boundary, polygon: Float32Array.from(boundaryPolygon), error: null };
@@ -155,25 +303,27 @@ const handlers = {
     return { reply: { type: 'ready', samples: st.sampleNames() } };
   },
 
-  async sample({ name }) {
+  async sample({ name, restore }, progress) {
     const st = await straightest();
     const start = performance.now();
-    return meshReply(st.sample(name), name, start);
+    return meshReply(st.sample(name), name, start, progress, restore);
   },
 
-  async file({ name, format, bytes }) {
+  async file({ name, format, bytes, restore }, progress) {
     const st = await straightest();
     const start = performance.now();
+    // One synchronous call: no progress inside it ('load' is 0 before and 1 after).
     const mesh = st.loadMesh(new Uint8Array(bytes), format ?? formatFromName(name));
-    return meshReply(mesh, name, start);
+    return meshReply(mesh, name, start, progress, restore);
   },
 
-  async paths({ source = 'auto', targets = 'boundary' }) {
+  async paths({ source = 'auto', targets = 'boundary' }, progress) {
     const mesh = requireMesh();
     const start = performance.now();
     const resolved = resolveTargets(mesh, source, targets);
-    const result = mesh.straightestPaths({ source, targets: resolved });
+    const result = mesh.straightestPaths({ source, targets: resolved, onProgress: progress.callback });
     if (resolved === 'boundary') currentData.boundary ??= result.targets;
+    progress.update('upload', 0);
     const reply = {
       type: 'paths',
       source: result.source,
@@ -197,20 +347,22 @@ const handlers = {
     return { reply, transfer: transfer.map((a) => a.buffer) };
   },
 
-  async distances({ source = 'auto' }) {
+  async distances({ source = 'auto' }, progress) {
     const mesh = requireMesh();
     const start = performance.now();
-    const distances = Float32Array.from(mesh.geodesicDistances(source, 'heat'));
+    const heat = mesh.geodesicDistances(source, 'heat'); // no progress callback in the API
+    progress.update('upload', 0);
+    const distances = Float32Array.from(heat);
     let max = 0;
     for (const d of distances) if (Number.isFinite(d) && d > max) max = d;
     const reply = { type: 'distances', source, distances, max, timeMs: performance.now() - start };
     return { reply, transfer: [distances.buffer] };
   },
 
-  async parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving' }) {
+  async parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', overlays = true }, progress) {
     const mesh = requireMesh();
     const start = performance.now();
-    const result = mesh.parameterize({ source, boundary, weights });
+    const result = mesh.parameterize({ source, boundary, weights, onProgress: progress.callback });
     const timeMs = performance.now() - start;
     const reply = {
       ...result,
@@ -223,13 +375,14 @@ const handlers = {
     };
     reply.overlays = boundaryOverlays(mesh, result.source, {
       boundary: result.boundary, polygon: result.boundaryPolygon,
-    });
+    }, overlays, progress);
+    progress.update('upload', 0);
     const buffers = [reply.uv, reply.faceStretch, reply.boundaryPolygon, reply.boundaryLoop,
       ...reply.overlays.map((o) => o.polygon).filter(Boolean)];
     return { reply, transfer: buffers.map((a) => a.buffer) };
   },
 
-  async compare({ id, source = 'auto' }) {
+  async compare({ source = 'auto' }, progress) {
     const mesh = requireMesh();
     const total = BOUNDARIES.length * WEIGHTS.length;
     const rows = [];
@@ -245,13 +398,13 @@ const handlers = {
         } catch (err) {
           rows.push({ boundary, weights, timeMs: performance.now() - start, error: describeError(err).message });
         }
-        self.postMessage({ id, type: 'progress', done: rows.length, total });
+        progress.update('compare', rows.length / total, { done: rows.length, total });
       }
     }
     return { reply: { type: 'comparison', source, rows } };
   },
 
-  async exportObj({ uv }) {
+  async exportObj({ uv }, progress) {
     const mesh = requireMesh();
     return { reply: { type: 'obj', text: mesh.toOBJ(uv) } };
   },
@@ -266,7 +419,9 @@ self.addEventListener('message', (event) => {
     const handler = handlers[request.type];
     try {
       if (!handler) throw new Error(`unknown request type: ${request.type}`);
-      const { reply, transfer = [] } = await handler(request);
+      const progress = new StageProgress(request.id, plannedStages(request));
+      const { reply, transfer = [] } = await handler(request, progress);
+      progress.finish();
       self.postMessage({ id: request.id, ...reply }, transfer);
     } catch (err) {
       self.postMessage({ id: request.id, type: 'error', ...describeError(err) });

@@ -6,7 +6,10 @@
 // `ok - name` / `not ok - name: reason` per test and finally `N passed, M failed` (exit 1 on failure).
 // Needs the WASM build (wasm/dist/) and `npm install` (three, playwright-core).
 
+import fs from 'node:fs';
 import http from 'node:http';
+import os from 'node:os';
+import path from 'node:path';
 import zlib from 'node:zlib';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
@@ -17,8 +20,10 @@ const CHROMIUM_ARGS = [
   '--no-first-run', '--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
 ];
 const WAIT_TIMEOUT_MS = 8_000; // any single wait in a page
+const BIG_WAIT_TIMEOUT_MS = 30_000; // waits for the work on the 200k-vertex mesh
 const TEST_TIMEOUT_MS = 20_000;
-const RUN_TIMEOUT_MS = 85_000; // the whole run must stay under 90 s
+const BIG_TEST_TIMEOUT_MS = 45_000; // tests on the 200k-vertex mesh
+const RUN_TIMEOUT_MS = 115_000; // the whole run must stay under 120 s
 const VIEWPORT = { width: 1000, height: 700 };
 
 // ------------------------------------------------------------------ helpers
@@ -123,9 +128,13 @@ function withTimeout(promise, ms, what) {
 
 // ------------------------------------------------------------------ page fixture
 
-/** Opens the page in a fresh context and records console errors and uncaught page errors. */
-async function openPage(browser, baseUrl) {
+/**
+ * Opens the page in a fresh context and records console errors and uncaught page errors.
+ * setup(context), if given, runs before the page loads (e.g. to route requests).
+ */
+async function openPage(browser, baseUrl, setup = null) {
   const context = await browser.newContext({ viewport: VIEWPORT });
+  await setup?.(context);
   const page = await context.newPage();
   page.setDefaultTimeout(WAIT_TIMEOUT_MS);
   const problems = [];
@@ -181,10 +190,67 @@ const QUAD_GRID_OBJ = [
 // A consistently oriented tetrahedron: closed, genus 0.
 const TETRAHEDRON_OFF = 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n';
 
+/** OBJ text of an n × n height-field grid over [0,1]² (two triangles per cell): a disk. */
+function heightFieldObj(n) {
+  const lines = [`# ${n}x${n} height field`];
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      const [x, y] = [i / (n - 1), j / (n - 1)];
+      lines.push(`v ${x.toFixed(6)} ${y.toFixed(6)} ${(0.15 * Math.sin(3 * x) * Math.cos(2 * y)).toFixed(6)}`);
+    }
+  }
+  for (let j = 0; j + 1 < n; j++) {
+    for (let i = 0; i + 1 < n; i++) {
+      const a = j * n + i + 1; // OBJ indices start at 1
+      lines.push(`f ${a} ${a + 1} ${a + n + 1}`, `f ${a} ${a + n + 1} ${a + n}`);
+    }
+  }
+  return `${lines.join('\n')}\n`;
+}
+
+// The large mesh of the responsiveness tests: 448 × 448 = 200,704 vertices, 399,618 faces, and
+// 4 × 447 = 1788 boundary vertices (~14 MB). Written once to a temporary file: Playwright hands a
+// file path to the input directly, while a buffer would be decoded on the page's main thread.
+const BIG_GRID_N = 448;
+const BIG_GRID_VERTICES = BIG_GRID_N * BIG_GRID_N;
+let bigGridDir = null;
+function bigGridFile() {
+  if (!bigGridDir) {
+    bigGridDir = fs.mkdtempSync(path.join(os.tmpdir(), 'straightest-e2e-'));
+    fs.writeFileSync(path.join(bigGridDir, 'grid-200k.obj'), heightFieldObj(BIG_GRID_N));
+  }
+  return path.join(bigGridDir, 'grid-200k.obj');
+}
+function removeBigGrid() {
+  if (bigGridDir) fs.rmSync(bigGridDir, { recursive: true, force: true });
+  bigGridDir = null;
+}
+
+/**
+ * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
+ * ticks (window.__ticker: { ticks, maxGap }); a main thread busy with long work would stretch it.
+ */
+async function startTicker(page) {
+  await page.evaluate(() => {
+    const ticker = { ticks: 0, maxGap: 0, last: performance.now() };
+    ticker.timer = setInterval(() => {
+      const now = performance.now();
+      ticker.maxGap = Math.max(ticker.maxGap, now - ticker.last);
+      ticker.last = now;
+      ticker.ticks += 1;
+    }, 50);
+    window.__ticker = ticker;
+  });
+}
+
+async function readTicker(page) {
+  return page.evaluate(() => ({ ticks: window.__ticker.ticks, maxGap: window.__ticker.maxGap }));
+}
+
 // ------------------------------------------------------------------ tests
 
 const tests = [];
-const test = (name, fn) => tests.push({ name, fn });
+const test = (name, fn, timeout = TEST_TIMEOUT_MS) => tests.push({ name, fn, timeout });
 
 test('server redirects / to the page, serves WASM MIME types and refuses path traversal', async ({ port }) => {
   const root = await rawGet(port, '/');
@@ -558,6 +624,144 @@ test('a closed mesh shows the core’s disk message in the parameterization pane
   }
 });
 
+test('a 200k-vertex OBJ loads, traces and parameterizes in the worker while the page keeps ticking', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.param && !window.__straightest.progress.busy');
+    await startTicker(page);
+    const started = Date.now();
+    await page.setInputFiles('#file-input', bigGridFile());
+    // While the worker loads, traces and parameterizes, the main thread keeps ticking: sample the
+    // ticker every 250 ms until the work is done (each sample also needs the main thread).
+    await page.waitForSelector('#progress-panel', { state: 'visible', timeout: BIG_WAIT_TIMEOUT_MS });
+    const samples = [];
+    for (;;) {
+      const { ticks, maxGap } = await readTicker(page);
+      const { busy, done } = await page.evaluate((n) => ({
+        busy: window.__straightest.progress.busy,
+        done: window.__straightest.lastInfo?.vertices === n && !!window.__straightest.param,
+      }), BIG_GRID_VERTICES);
+      samples.push({ ticks, maxGap, busy });
+      if (done && !busy) break;
+      assert(Date.now() - started < BIG_WAIT_TIMEOUT_MS,
+        `the work did not finish in ${BIG_WAIT_TIMEOUT_MS} ms (state ${await page.evaluate(() => document.body.dataset.state)})`);
+      await page.waitForTimeout(250);
+    }
+    const busySamples = samples.filter((sample) => sample.busy);
+    assert(busySamples.length >= 4, `only ${busySamples.length} samples while the worker was busy`);
+    for (let i = 1; i < samples.length; i++) {
+      assert(samples[i].ticks > samples[i - 1].ticks, `the main-thread timer stopped between samples ${i - 1} and ${i}`);
+    }
+    const { maxGap, ticks } = await readTicker(page);
+    assert(maxGap < 500, `the main thread was blocked for ${maxGap.toFixed(0)} ms (${ticks} ticks)`);
+
+    // Every stage of the three requests reported 100%.
+    const { progress, lastInfo, paths, param } = await page.evaluate(() => window.__straightest);
+    const expected = ['file:load', 'file:upload', 'paths:trace', 'paths:upload', 'parameterize:source',
+      'parameterize:trace', 'parameterize:weights', 'parameterize:solve', 'parameterize:metrics',
+      'parameterize:overlays', 'parameterize:upload'];
+    for (const key of expected) {
+      assert(progress.stages[key] === 1, `stage ${key} reached ${progress.stages[key]}, expected 1 ` +
+        `(stages: ${JSON.stringify(progress.stages)})`);
+    }
+    assert(progress.messages >= expected.length, `${progress.messages} progress messages`);
+    assert(lastInfo.vertices === BIG_GRID_VERTICES, `lastInfo.vertices is ${lastInfo.vertices}`);
+    const vertices = (await page.textContent('#info-vertices')).trim();
+    assert(vertices === String(BIG_GRID_VERTICES), `info panel shows '${vertices}' vertices, expected ${BIG_GRID_VERTICES}`);
+    assert(paths.count === 4 * (BIG_GRID_N - 1) && paths.plain, `paths: ${JSON.stringify(paths)}`);
+    assert(param.bijective && Number.isFinite(param.l2), `parameterization: ${JSON.stringify(param)}`);
+    assert(await page.isHidden('#progress-panel'), 'the progress panel stays visible when idle');
+    assert(await page.isHidden('#error-panel'), 'error panel is visible');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+}, BIG_TEST_TIMEOUT_MS);
+
+test('Cancel stops the parameterization of the 200k-vertex mesh; the mesh stays and the worker works again', async ({ browser, baseUrl }) => {
+  const { page, context, problems } = await openPage(browser, baseUrl);
+  try {
+    await expectReady(page, 'window.__straightest.param && !window.__straightest.progress.busy');
+    // Once the paths are drawn the page parameterizes the mesh: with the 'auto' boundary (a solve
+    // for each of the three) that is seconds of work. Cancel it midway.
+    await page.selectOption('#boundary-select', 'auto');
+    await page.setInputFiles('#file-input', bigGridFile());
+    await page.waitForFunction((n) => {
+      const { lastInfo, progress } = window.__straightest;
+      return lastInfo?.vertices === n && document.body.dataset.state === 'ready' &&
+        progress.stages['parameterize:source'] !== undefined && !(progress.stages['parameterize:upload'] >= 1);
+    }, BIG_GRID_VERTICES, { timeout: BIG_WAIT_TIMEOUT_MS, polling: 100 });
+    const { traces, parameterizations } = await page.evaluate(() => window.__straightest);
+    // force: no waiting for the view to be stable (software-rendered frames of this mesh are slow).
+    await page.click('#cancel-button', { force: true });
+    const stages = await page.evaluate(() => window.__straightest.progress.stages);
+    assert(!(stages['parameterize:upload'] >= 1), `the parameterization finished before Cancel: ${JSON.stringify(stages)}`);
+    await expectReady(page, 'window.__straightest.cancels === 1');
+    const status = await page.textContent('#status');
+    assert(/cancelled/i.test(status) && status.includes('200704 vertices'), `status after Cancel: '${status.trim()}'`);
+    await page.waitForSelector('#progress-panel', { state: 'hidden' }); // it lingers a moment at 100%
+    assert(/cancelled/i.test(await page.textContent('#param-message')), 'the parameterization panel does not say cancelled');
+    const after = await page.evaluate(() => window.__straightest);
+    assert(after.param === null && after.parameterizations === parameterizations,
+      `a cancelled parameterization was shown: ${JSON.stringify(after.param)}`);
+    assert(after.lastInfo.vertices === BIG_GRID_VERTICES, `lastInfo.vertices is ${after.lastInfo.vertices}`);
+    assert((await page.textContent('#info-vertices')).trim() === String(BIG_GRID_VERTICES), 'info panel changed');
+    assert(await page.isHidden('#error-panel'), 'error panel is visible');
+    // The mesh is still drawn.
+    await page.waitForFunction(() => window.__straightest.renders > 0);
+    const background = await page.evaluate(() => window.__straightest.background);
+    const fraction = fractionDiffering(decodePng(await page.locator('#view-canvas').screenshot()), background);
+    assert(fraction > 0.05, `only ${(fraction * 100).toFixed(1)}% of the view differs from the background`);
+    // The new worker has the mesh: Reset traces its paths again.
+    await page.click('#reset-button');
+    await expectReady(page, `window.__straightest.traces > ${traces}`);
+    const paths = await page.evaluate(() => window.__straightest.paths);
+    assert(paths.count === 4 * (BIG_GRID_N - 1), `${paths.count} paths after the restart`);
+    const late = await page.evaluate(() => window.__straightest);
+    assert(late.param === null && late.parameterizations === parameterizations,
+      'a reply of the terminated worker reached the page');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+}, BIG_TEST_TIMEOUT_MS);
+
+test('a too_large error (WebAssembly allocation failed) shows a readable message', async ({ browser, baseUrl }) => {
+  // The worker answers every 'file' request as the npm package does when WASM memory runs out: a
+  // listener registered before worker.js's own (imported first) replies and stops the event.
+  const message = 'the mesh is too large for the available memory (WebAssembly allocation failed)';
+  const prelude = `self.addEventListener('message', (event) => {
+    if (event.data?.type !== 'file') return;
+    event.stopImmediatePropagation();
+    self.postMessage({ id: event.data.id, type: 'error', category: 'too_large', message: ${JSON.stringify(message)} });
+  });`;
+  const { page, context, problems } = await openPage(browser, baseUrl, (ctx) => ctx.route(
+    (url) => url.pathname === '/web/worker.js' && url.search === '',
+    (route) => route.fulfill({
+      contentType: 'text/javascript',
+      body: `import ${JSON.stringify(`data:text/javascript,${encodeURIComponent(prelude)}`)};\nimport './worker.js?real';\n`,
+    }),
+  ));
+  try {
+    await expectReady(page);
+    await page.setInputFiles('#file-input', { name: 'huge.obj', mimeType: 'text/plain', buffer: Buffer.from(QUAD_GRID_OBJ) });
+    const { state, lastError } = await settled(page, `document.body.dataset.state === 'error'`);
+    assert(state === 'error' && lastError?.category === 'too_large', `state '${state}', error ${JSON.stringify(lastError)}`);
+    assert(await page.isVisible('#error-panel'), 'error panel is not visible');
+    const title = (await page.textContent('#error-title')).trim();
+    assert(title.includes('huge.obj'), `error title '${title}'`);
+    assert((await page.textContent('#error-message')).includes(message), 'the core message is not shown');
+    assert((await page.textContent('#error-category')).trim() === 'too_large', 'category not shown');
+    const hint = await page.textContent('#error-hint');
+    assert(await page.isVisible('#error-hint') && /memory/i.test(hint) && /smaller/i.test(hint), `hint: '${hint}'`);
+    // The mesh on display stays.
+    assert((await page.textContent('#info-vertices')).trim() === '2500', 'the mountain is no longer listed');
+    expectNoProblems(problems);
+  } finally {
+    await context.close();
+  }
+});
+
 // ------------------------------------------------------------------ runner
 
 async function main() {
@@ -569,6 +773,7 @@ async function main() {
     console.log(`not ok - whole run: exceeded ${RUN_TIMEOUT_MS} ms`);
     console.log(`${passed} passed, ${failed + 1} failed`);
     server?.closeAllConnections();
+    removeBigGrid();
     await withTimeout(browser?.close() ?? Promise.resolve(), 3000, 'browser close').catch(() => {});
     process.exit(1);
   }, RUN_TIMEOUT_MS);
@@ -581,11 +786,11 @@ async function main() {
     });
     const env = { browser, port, baseUrl: `http://127.0.0.1:${port}` };
     const filter = process.env.TEST_FILTER ?? '';
-    for (const { name, fn } of tests.filter((t) => t.name.includes(filter))) {
+    for (const { name, fn, timeout } of tests.filter((t) => t.name.includes(filter))) {
       const start = Date.now();
       const took = () => `(${((Date.now() - start) / 1000).toFixed(1)} s)`;
       try {
-        await withTimeout(fn(env), TEST_TIMEOUT_MS, 'test');
+        await withTimeout(fn(env), timeout, 'test');
         passed++;
         console.log(`ok - ${name} ${took()}`);
       } catch (err) {
@@ -603,6 +808,7 @@ async function main() {
       await new Promise((resolve) => server.close(resolve));
     }
     clearTimeout(watchdog);
+    removeBigGrid();
   }
   console.log(`${passed} passed, ${failed} failed`);
   process.exit(failed > 0 ? 1 : 0);
