@@ -7,8 +7,12 @@
 // not a disk ⇒ Topology error; a result has one finite uv per vertex in [0, 1]², the boundary loop
 // of the mesh, its polygon at the loop's uv; stretch is finite iff the map is bijective
 // (no flipped, no degenerate triangle) and then L2 ≥ 1 and L∞ ≥ L2; with convex-combination weights
-// (not cotan) and a circle or measured boundary the map is bijective (Tutte/Floater): flipped == 0.
+// (not cotan) the uv solve u_i = Σ λ_ij u_j, and with a circle or measured boundary the map is bijective
+// (Tutte/Floater): flipped == 0.
 #include <fuzzer/FuzzedDataProvider.h>
+
+#include <cstdlib>
+#include <limits>
 
 #include "fuzz_meshes.hpp"
 #include "straightest/parameterize.hpp"
@@ -29,6 +33,67 @@ void checkMetrics(const TriMesh& m, const StretchMetrics& s, const char* what) {
   }
   FUZZ_CHECK(static_cast<int32_t>(s.faceStretch.size()) == m.numFaces(), "%s: faceStretch size", what);
   FUZZ_CHECK(!std::isnan(s.angleDistortionMean) && !std::isnan(s.areaDistortionMean), "%s: NaN distortion", what);
+}
+
+void dump(const TriMesh& m, const ParamOptions& o, const Expected<Parameterization>& r) {
+  std::fprintf(stderr, "mesh: %d vertices, %d faces\n", m.numVertices(), m.numFaces());
+  for (int32_t v = 0; v < m.numVertices(); ++v)
+    std::fprintf(stderr, "  v %d: %.17g %.17g %.17g%s\n", v, m.position(v).x, m.position(v).y, m.position(v).z,
+                 m.isBoundaryVertex(v) ? " (boundary)" : "");
+  for (int32_t f = 0; f < m.numFaces(); ++f)
+    std::fprintf(stderr, "  f %d: %d %d %d\n", f, m.triangle(f)[0], m.triangle(f)[1], m.triangle(f)[2]);
+  std::fprintf(stderr, "options: boundary %d, weights %s, autoSource %d, source kind %d index %d\n",
+               static_cast<int>(o.boundary), weightKindName(o.weights), o.autoSource, static_cast<int>(o.source.kind),
+               o.source.index);
+  if (!r.ok()) {
+    std::fprintf(stderr, "error %s: %s\n", errorCodeName(r.error().code), r.error().message.c_str());
+    return;
+  }
+  const Parameterization& p = r.value();
+  std::fprintf(stderr, "source t %.17g bary %.17g %.17g %.17g\n", p.source.t, p.source.bary[0], p.source.bary[1],
+               p.source.bary[2]);
+  std::fprintf(stderr, "result: boundary %s, source kind %d index %d, l2 %g, flipped %lld, degenerate %lld\n",
+               boundaryKindName(p.boundary), static_cast<int>(p.source.kind), p.source.index, p.metrics.l2,
+               (long long)p.metrics.flipped, (long long)p.metrics.degenerate);
+  for (size_t i = 0; i < p.boundaryLoop.size(); ++i)
+    std::fprintf(stderr, "  loop %zu: vertex %d -> (%.17g, %.17g)\n", i, p.boundaryLoop[i], p.boundaryPolygon[i][0],
+                 p.boundaryPolygon[i][1]);
+  for (int32_t v = 0; v < m.numVertices(); ++v)
+    std::fprintf(stderr, "  uv %d: %.17g %.17g\n", v, p.uv[v][0], p.uv[v][1]);
+  for (int32_t f = 0; f < m.numFaces(); ++f)
+    if (!(p.metrics.faceStretch[f] < std::numeric_limits<float>::infinity()))
+      std::fprintf(stderr, "  bad face %d: %d %d %d\n", f, m.triangle(f)[0], m.triangle(f)[1], m.triangle(f)[2]);
+}
+
+/// While the known bug is open (regressions/fuzz_param/), FUZZ_SKIP_KNOWN_BUGS=1 excuses a
+/// non-bijective measured boundary when a triangle with all three vertices on the boundary collapses
+/// in the measured polygon (area below 1e-9 of the polygon's size squared: two of its points nearly
+/// coincide; or all three collinear within a sine of 1e-9): convexify() neither separates points that land on the same spot nor bulges a hull edge
+/// whose end is a nearly straight (rounding-made) hull vertex. Also when a boundary vertex stays at the
+/// origin (radius 0: a source within 1e-6 of it is snapped onto it by the tracer), inside the polygon.
+bool knownMeasuredBug(const TriMesh& m, const SurfacePoint& source) {
+  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
+  if (!skip) return false;
+  auto b = measuredBoundary(m, source);
+  if (!b.ok()) return false;
+  const auto& q = b.value().polygon;
+  double size = 0;
+  for (const Vec2& x : q) size = std::max(size, std::hypot(x[0], x[1]));
+  for (size_t i = 0; i < q.size(); ++i) {
+    if (std::hypot(q[i][0], q[i][1]) <= 1e-9 * size) return true;  // a boundary vertex left at the source
+    for (size_t j = i + 1; j < q.size(); ++j)
+      if (std::hypot(q[i][0] - q[j][0], q[i][1] - q[j][1]) <= 1e-9 * size) return true;  // two points on one spot
+  }
+  std::vector<int32_t> at(m.numVertices(), -1);  // position of each boundary vertex in the loop
+  for (size_t i = 0; i < b.value().loop.size(); ++i) at[b.value().loop[i]] = static_cast<int32_t>(i);
+  for (const Triangle& t : m.triangles()) {
+    if (at[t[0]] < 0 || at[t[1]] < 0 || at[t[2]] < 0) continue;  // not all on the boundary
+    const Vec2 &a = q[at[t[0]]], &c1 = q[at[t[1]]], &c2 = q[at[t[2]]];
+    const double e1x = c1[0] - a[0], e1y = c1[1] - a[1], e2x = c2[0] - a[0], e2y = c2[1] - a[1];
+    const double l1 = std::hypot(e1x, e1y), l2 = std::hypot(e2x, e2y), cross = std::abs(e1x * e2y - e1y * e2x);
+    if (!(cross > 1e-9 * l1 * l2) || !(cross > 1e-9 * size * size)) return true;
+  }
+  return false;
 }
 
 bool isDisk(const TriMesh& m) {
@@ -73,6 +138,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
 
   auto result = parameterize(mesh, options);
+  if (std::getenv("FUZZ_VERBOSE")) {
+    dump(mesh, options, result);
+    if (options.boundary == BoundaryChoice::Auto)
+      for (BoundaryChoice b : {BoundaryChoice::Measured, BoundaryChoice::Circle}) {
+        ParamOptions o = options;
+        o.boundary = b;
+        dump(mesh, o, parameterize(mesh, o));
+      }
+  }
   const bool disk = isDisk(mesh);
   if (!result.ok()) {
     fuzz::checkError(result.error(), "parameterize");
@@ -115,14 +189,30 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   FUZZ_CHECK(p.fallbacks >= 0 && p.weightFallbacks >= 0, "negative fallback counts");
   const bool convexWeights = options.weights != WeightKind::Cotan;
   const char* weightName = weightKindName(options.weights);
+  FUZZ_CHECK(std::isfinite(p.residual) && p.residual >= 0, "residual %g", p.residual);
   if (convexWeights) {
-    FUZZ_CHECK(p.residual <= 1e-6, "%s weights: residual %g", weightName, p.residual);
+    // The uv solve the interior equations u_i = Σ λ_ij u_j (checked in the [0, 1]² frame: the reported
+    // relative residual is meaningless when the right-hand side is ~0, e.g. a measured boundary
+    // around a source that its weights reproduce exactly).
+    const InteriorWeights W = interiorWeights(mesh, options.weights);
+    for (size_t r = 0; r < W.rows.size(); ++r) {
+      double u = 0, v = 0;
+      for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
+        u += W.weight[k] * p.uv[W.neighbour[k]][0];
+        v += W.weight[k] * p.uv[W.neighbour[k]][1];
+      }
+      const Vec2& x = p.uv[W.rows[r]];
+      FUZZ_CHECK(std::hypot(x[0] - u, x[1] - v) <= 1e-8, "%s weights, %s solver: vertex %d is %.3g from the average of its neighbours",
+                 weightName, options.solver == LinearSolver::SparseLU ? "LU" : "BiCGSTAB", W.rows[r],
+                 std::hypot(x[0] - u, x[1] - v));
+    }
     for (const BoundaryCandidate& c : p.candidates)
-      if (c.kind == BoundaryKind::Circle || c.kind == BoundaryKind::Measured)
+      if (c.kind == BoundaryKind::Circle || (c.kind == BoundaryKind::Measured && !knownMeasuredBug(mesh, p.source)))
         FUZZ_CHECK(c.flipped == 0 && c.degenerate == 0,
                    "%s mesh, %s boundary, %s weights: %lld flipped and %lld degenerate triangles (must be bijective)",
                    gen.kind, boundaryKindName(c.kind), weightName, (long long)c.flipped, (long long)c.degenerate);
-    if (p.boundary == BoundaryKind::Circle || p.boundary == BoundaryKind::Measured)
+    if (p.boundary == BoundaryKind::Circle ||
+        (p.boundary == BoundaryKind::Measured && !knownMeasuredBug(mesh, p.source)))
       FUZZ_CHECK(p.metrics.bijective && p.metrics.flipped == 0, "%s boundary, %s weights: not bijective",
                  boundaryKindName(p.boundary), weightName);
   }

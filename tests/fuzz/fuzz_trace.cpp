@@ -8,8 +8,11 @@
 // length ≥ chord. DegeneratePlane exactly when cuttingPlane() has no plane. On a flat mesh with a
 // convex boundary every target is reached along the straight segment (length = chord). Tracing
 // without points gives the same status/length/count; traceStraightestPaths gives the same paths;
-// a small step bound is honoured. validateSurfacePoint keeps positions and rejects invalid points.
+// a small step bound is honoured; the tracer moves a source by at most 1e-6 (snapping it onto a
+// nearby edge or vertex). validateSurfacePoint keeps positions and rejects invalid points.
 #include <fuzzer/FuzzedDataProvider.h>
+
+#include <cstdlib>
 
 #include "fuzz_meshes.hpp"
 #include "straightest/straightest_path.hpp"
@@ -40,8 +43,55 @@ const char* kindName(const SurfacePoint& p) {
   return p.kind == SurfacePoint::Kind::Vertex ? "vertex" : p.kind == SurfacePoint::Kind::Edge ? "edge" : "face";
 }
 
+void describe(const TriMesh& m, const char* what, const SurfacePoint& p) {
+  const Vec3 x = position(m, p);
+  std::fprintf(stderr, "%s: %s %d t=%.17g bary=(%.17g, %.17g, %.17g) at (%.17g, %.17g, %.17g)\n", what, kindName(p),
+               p.index, p.t, p.bary[0], p.bary[1], p.bary[2], x.x, x.y, x.z);
+}
+
+void dump(const TriMesh& m, const StraightestPathTracer& tracer, const SurfacePoint& dst, const StraightestPath& p) {
+  std::fprintf(stderr, "mesh: %d vertices, %d faces, bbox diagonal %.17g\n", m.numVertices(), m.numFaces(),
+               m.summary().bbox.diagonal());
+  for (int32_t v = 0; v < m.numVertices(); ++v)
+    std::fprintf(stderr, "  v %d: %.17g %.17g %.17g\n", v, m.position(v).x, m.position(v).y, m.position(v).z);
+  for (int32_t f = 0; f < m.numFaces(); ++f)
+    std::fprintf(stderr, "  f %d: %d %d %d\n", f, m.triangle(f)[0], m.triangle(f)[1], m.triangle(f)[2]);
+  describe(m, "source", tracer.source());
+  describe(m, "target", dst);
+  const Vec3 n = tracer.base().normal;
+  std::fprintf(stderr, "base normal (%.17g, %.17g, %.17g)%s\n", n.x, n.y, n.z, tracer.base().fallback ? " (fallback)" : "");
+  std::fprintf(stderr, "status %s, length %.17g, %lld faces crossed, reversed %d, %zu points:\n", traceStatusName(p.status),
+               p.length, (long long)p.facesCrossed, p.reversed, p.points.size());
+  for (size_t i = 0; i < p.points.size(); ++i) describe(m, "  point", p.points[i]);
+}
+
+/// While the known miss is open (regressions/fuzz_trace/flat_target_near_vertex_missed),
+/// FUZZ_SKIP_KNOWN_BUGS=1 excuses an unreached target on a flat mesh that lies within
+/// 1e-6 · bbox diagonal of a mesh vertex: the walk snaps onto the vertex (on-plane tolerance
+/// 1e-9 · mean edge) and never enters the face holding the target.
+bool knownMiss(const TriMesh& m, const SurfacePoint& dst) {
+  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
+  if (!skip) return false;
+  const Vec3 D = position(m, dst);
+  for (const Vec3& x : m.positions())
+    if (norm(x - D) <= 1e-6 * m.summary().bbox.diagonal()) return true;
+  return false;
+}
+
+/// While the known issue is open (regressions/fuzz_trace/plane_ill_conditioned_near_base_normal),
+/// FUZZ_SKIP_KNOWN_BUGS=1 skips the on-plane check when D − S is within 1e-8 (relative) of the base
+/// normal: cuttingPlane() only refuses below 1e-12, where m = normalize(n × (D − S)) is mostly rounding
+/// and D itself is up to ~1e-6 off the plane.
+bool knownIllConditioned(const StraightestPathTracer& tracer, const Vec3& D) {
+  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
+  if (!skip) return false;
+  const Vec3 d = D - tracer.base().origin;
+  return norm(cross(tracer.base().normal, d)) <= 1e-8 * norm(d);
+}
+
 void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const SurfacePoint& dst, const StraightestPath& p,
                bool flatConvex, const char* meshKind) {
+  if (std::getenv("FUZZ_VERBOSE")) dump(m, tracer, dst, p);
   const double diag = m.summary().bbox.diagonal();
   const Vec3 S = position(m, tracer.source()), D = position(m, dst);
   const int st = static_cast<int>(p.status);
@@ -77,9 +127,13 @@ void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const Surf
   if (p.status == TraceStatus::DegeneratePlane) {
     FUZZ_CHECK(!plane, "degenerate_plane but cuttingPlane() has a plane");
     FUZZ_CHECK(p.points.size() == 1 && p.length == 0, "degenerate_plane with a path");
+  } else if (p.points.size() > 1 && !plane) {
+    // Source and target in one face are joined directly, even along the base normal (no plane).
+    FUZZ_CHECK(p.status == TraceStatus::Reached && p.points.size() == 2 && sharesFace(m, tracer.source(), dst),
+               "%s: a path without a cutting plane", name);
   } else if (p.points.size() > 1) {
     FUZZ_CHECK(plane.has_value(), "%s: a path without a cutting plane", name);
-    for (size_t i = 0; i < p.positions.size(); ++i) {
+    for (size_t i = 0; i < p.positions.size() && !knownIllConditioned(tracer, D); ++i) {
       const double off = std::abs(dot(plane->normal, p.positions[i] - S));
       FUZZ_CHECK(off <= 1e-7 * diag, "%s: point %zu is %.3g off the cutting plane (bbox diagonal %.3g)", name, i, off,
                  diag);
@@ -91,9 +145,13 @@ void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const Surf
     const double chord = norm(D - S);
     FUZZ_CHECK(norm(p.positions.back() - D) <= 1e-9 * diag, "reached, but the last point is %.3g from the target",
                norm(p.positions.back() - D));
-    FUZZ_CHECK(p.length >= chord * (1 - 1e-12) - 1e-12 * diag, "reached with length %.17g below the chord %.17g",
-               p.length, chord);
+    if (p.points.size() == 1)  // the target is at the source (within the tracer's tolerance)
+      FUZZ_CHECK(chord <= kOnPlaneRel * diag, "reached without moving, but the target is %.3g away", chord);
+    else
+      FUZZ_CHECK(p.length >= chord * (1 - 1e-12) - 1e-12 * diag, "reached with length %.17g below the chord %.17g",
+                 p.length, chord);
   }
+  if (flatConvex && !samePoint && p.status != TraceStatus::Reached && knownMiss(m, dst)) return;
   if (flatConvex && !samePoint) {
     FUZZ_CHECK(p.status == TraceStatus::Reached, "flat convex %s mesh: target not reached (%s)", meshKind, name);
     const double chord = norm(D - S);
@@ -145,6 +203,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (in.ConsumeBool()) targets.push_back(source);
 
   StraightestPathTracer tracer(mesh, source);
+  // The tracer may move a source lying within 1e-6 of an edge or vertex onto it; never farther.
+  FUZZ_CHECK(validateSurfacePoint(mesh, tracer.source()).ok(), "tracer source invalid");
+  FUZZ_CHECK(norm(position(mesh, tracer.source()) - position(mesh, source)) <= 2e-6 * diag,
+             "the tracer moved the source by %.3g (bbox diagonal %.3g)",
+             norm(position(mesh, tracer.source()) - position(mesh, source)), diag);
   const Vec3 n = tracer.base().normal;
   FUZZ_CHECK(isFinite(n) && (std::abs(norm(n) - 1) < 1e-9 || norm(n) == 0), "base normal %g %g %g", n.x, n.y, n.z);
   TraceOptions lean;

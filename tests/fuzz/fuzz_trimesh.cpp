@@ -13,6 +13,7 @@
 // known category and a message. Polygons split into exactly n−2 triangles over their own corners.
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <cstdlib>
 #include <limits>
 
 #include "fuzz_common.hpp"
@@ -166,7 +167,8 @@ void polygon(FuzzedDataProvider& in) {
   std::vector<Vec3> P;
   const int style = in.ConsumeIntegralInRange(0, 2);
   const int32_t nv = in.ConsumeIntegralInRange<int32_t>(3, 300);
-  for (int32_t v = 0; v < nv && (v < 3 || in.remaining_bytes() > 0); ++v) {
+  // A star polygon gets all its corners (radius 0.1 once the bytes run out) so it stays simple.
+  for (int32_t v = 0; v < nv && (v < 3 || style == 0 || in.remaining_bytes() > 0); ++v) {
     if (style == 0) {  // a star-shaped planar polygon with random radii
       const double a = 6.283185307179586 * v / nv, r = 0.1 + in.ConsumeProbability<double>();
       P.push_back({r * std::cos(a), r * std::sin(a), 0});
@@ -177,6 +179,11 @@ void polygon(FuzzedDataProvider& in) {
   std::vector<int32_t> poly(P.size());
   std::iota(poly.begin(), poly.end(), 0);
   if (style == 2 && in.ConsumeBool() && poly.size() > 3) poly[3] = poly[0];  // a repeated corner
+  if (std::getenv("FUZZ_VERBOSE")) {
+    std::fprintf(stderr, "polygon:");
+    for (int32_t v : poly) std::fprintf(stderr, " (%.17g, %.17g, %.17g)", P[v].x, P[v].y, P[v].z);
+    std::fprintf(stderr, "\n");
+  }
   std::vector<Triangle> out;
   triangulatePolygon(P, poly, out);
   FUZZ_CHECK(out.size() == poly.size() - 2, "polygon of %zu corners gave %zu triangles", poly.size(), out.size());
