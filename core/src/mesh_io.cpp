@@ -109,6 +109,20 @@ bool isPlainDecimal(std::string_view t) {
   return i == t.size();
 }
 
+/// True when some number on the line has an exponent of more than 4 digits ("1e-2147483648").
+bool longExponent(std::string_view line) {
+  for (size_t i = 1; i < line.size(); ++i) {
+    if ((line[i] != 'e' && line[i] != 'E') || !(std::isdigit(static_cast<unsigned char>(line[i - 1])) || line[i - 1] == '.'))
+      continue;
+    size_t j = i + 1;
+    if (j < line.size() && (line[j] == '+' || line[j] == '-')) ++j;
+    size_t digits = 0;
+    while (j < line.size() && std::isdigit(static_cast<unsigned char>(line[j]))) ++j, ++digits;
+    if (digits > 4) return true;
+  }
+  return false;
+}
+
 bool parseInt64(std::string_view token, int64_t& out) {
   if (token.empty() || token.size() > 19) return false;  // with a sign: at most 18 digits, no overflow
   size_t i = 0;
@@ -324,6 +338,11 @@ Expected<ObjScan> scanObj(std::string_view text) {
   forEachLine(text, [&](int64_t line, std::string_view raw) {
     size_t i = 0;
     while (i < raw.size() && isSpace(raw[i])) ++i;
+    if (i < raw.size() && raw[i] == 'v' && longExponent(raw)) {
+      // tinyobjloader's number reader overflows (undefined behaviour) on exponents this long.
+      error = parseError(line, "a number has an exponent with more than 4 digits");
+      return false;
+    }
     if (i + 1 >= raw.size() || !isSpace(raw[i + 1])) return true;  // only "v " and "f " lines matter here
     const char kind = raw[i];
     if (kind != 'v' && kind != 'f') return true;
