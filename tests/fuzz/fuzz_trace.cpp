@@ -5,7 +5,8 @@
 // source, are valid surface points, and consecutive points share a face; the length is the sum of
 // the segment lengths; facesCrossed == segments ≤ the step bound (+1); every point lies on the
 // cutting plane (|m·(p − S)| ≤ 1e-7 · bbox diagonal). When reached: the last point is the target and
-// length ≥ chord. DegeneratePlane exactly when cuttingPlane() has no plane. On a flat mesh with a
+// length ≥ chord. DegeneratePlane exactly when cuttingPlane() has no plane (except a target in a face
+// of the source, joined directly). On a flat mesh with a
 // convex boundary every target is reached along the straight segment (length = chord). Tracing
 // without points gives the same status/length/count; traceStraightestPaths gives the same paths;
 // a small step bound is honoured; the tracer moves a source by at most 1e-6 (snapping it onto a
