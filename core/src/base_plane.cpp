@@ -47,7 +47,7 @@ std::optional<CuttingPlane> cuttingPlane(const BasePlane& base, const Vec3& dest
   const Vec3 d = destination - base.origin;
   const Vec3 m = cross(base.normal, d);
   const double len = norm(d);
-  if (!(len > 0) || !(norm(m) > 1e-12 * len)) return std::nullopt;
+  if (!(len > 0) || !(norm(m) > kCuttingPlaneMinSine * len)) return std::nullopt;
   return CuttingPlane{base.origin, normalized(m)};
 }
 

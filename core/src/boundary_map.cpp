@@ -31,13 +31,22 @@ std::vector<double> arcLengthParameter(const TriMesh& mesh, const std::vector<in
 }
 
 /// Indices of the convex hull of pts, counter-clockwise, without collinear points (monotone chain).
+/// A turn whose sine is below kHullCollinear counts as straight: such a vertex (a rounding-made
+/// corner) would split a hull edge in two, hide a chord lying along it from the bulge and allow no
+/// lift there (a fuzzing finding); the points it drops are within 1e-9 of the edge's length outside
+/// the hull and convexify() projects them onto it.
+constexpr double kHullCollinear = 1e-9;
 std::vector<size_t> convexHull(const std::vector<Vec2>& pts) {
   std::vector<size_t> order(pts.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pts[a] < pts[b]; });
   std::vector<size_t> hull(2 * pts.size() + 1);
   size_t k = 0;
-  auto turn = [&](size_t o, size_t a, size_t b) { return cross2(sub(pts[a], pts[o]), sub(pts[b], pts[o])); };
+  auto turn = [&](size_t o, size_t a, size_t b) {
+    const Vec2 u = sub(pts[a], pts[o]), v = sub(pts[b], pts[o]);
+    const double c = cross2(u, v);
+    return c > kHullCollinear * len(u) * len(v) ? c : 0.0;
+  };
   for (size_t i : order) {
     while (k >= 2 && turn(hull[k - 2], hull[k - 1], i) <= 0) --k;
     hull[k++] = i;
@@ -96,7 +105,7 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
 
   // 1. Radial projection onto the hull; remember each point's hull edge and parameter along it.
   int64_t moved = 0;
-  std::vector<int64_t> edgeOf(n, -1);
+  std::vector<int64_t> edgeOf(n, -1), cornerOf(n, -1);  // hull edge (inside it) or hull vertex of each point
   std::vector<double> along(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
     Vec2& p = points[i];
@@ -109,32 +118,37 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
     const Vec2 E = sub(hull[(j + 1) % h], A);
     const Vec2 d{p[0] / r, p[1] / r};
     const double rHull = cross2(A, E) / cross2(d, E);  // distance along the ray to the edge's line
-    if (r < rHull * (1 - 1e-12)) {
-      p = {d[0] * rHull, d[1] * rHull};
-      ++moved;
-    }
+    // Every point goes exactly onto the hull: those inside move out (counted), and those the
+    // collinearity tolerance left a hair outside move in.
+    if (r < rHull * (1 - 1e-12)) ++moved;
+    p = {d[0] * rHull, d[1] * rHull};
     const double L2 = E[0] * E[0] + E[1] * E[1];
     const double t = ((p[0] - A[0]) * E[0] + (p[1] - A[1]) * E[1]) / L2;
     const double off = std::abs(cross2(E, sub(p, A))) / std::sqrt(L2);
-    if (t > 1e-9 && t < 1 - 1e-9 && off <= 1e-9 * std::sqrt(L2)) {
+    if (off > 1e-9 * std::sqrt(L2)) continue;
+    if (t > 1e-9 && t < 1 - 1e-9) {
       edgeOf[i] = static_cast<int64_t>(j);
       along[i] = t;
+    } else if (t <= 1e-9 && t > -1e-9) {
+      cornerOf[i] = static_cast<int64_t>(j);
+    } else if (t >= 1 - 1e-9 && t < 1 + 1e-9) {
+      cornerOf[i] = static_cast<int64_t>((j + 1) % h);
     }
   }
   // 2. Hull edges along which an interior edge of the mesh joining two boundary vertices (a chord)
   //    would lie: its triangles would collapse. A point at a hull vertex lies on both adjacent edges.
+  //    (Both ends may be hull corners, with the chord's third triangle corner inside the edge.)
   std::vector<uint8_t> bulgeEdge(h, 0);
-  auto onEdge = [&](int32_t i, size_t j) {
-    if (edgeOf[i] == static_cast<int64_t>(j)) return true;
-    for (size_t end : {j, (j + 1) % h})
-      if (len(sub(points[i], hull[end])) <= 1e-12 * len(hull[end])) return true;
-    return false;
+  auto onEdge = [&](int32_t i, int64_t j) {
+    return edgeOf[i] == j || cornerOf[i] == j || cornerOf[i] == (j + 1) % static_cast<int64_t>(h);
   };
-  for (const auto& c : chords)
-    for (int32_t k : {c[0], c[1]}) {
-      const int64_t j = edgeOf[k];
+  const int64_t hullSize = static_cast<int64_t>(h);
+  for (const auto& c : chords) {
+    const int64_t corner = cornerOf[c[0]];
+    const int64_t candidates[3] = {edgeOf[c[0]], corner, corner >= 0 ? (corner + hullSize - 1) % hullSize : -1};
+    for (int64_t j : candidates)
       if (j >= 0 && onEdge(c[0], j) && onEdge(c[1], j)) bulgeEdge[j] = 1;
-    }
+  }
   // 3. Lift the points of those edges onto a parabola; its end slopes stay below a third of the
   //    hull's turning angle at each end, so the polygon stays convex.
   auto turnAngle = [&](size_t j) {
@@ -159,14 +173,23 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
   map.loop = mesh.boundaryLoops().at(0);
   const size_t n = map.loop.size();
   const Vec3 S = position(mesh, source);
-  std::vector<double> cumulative(n, 0.0);
+  std::vector<double> increment(n), cumulative(n, 0.0);
   double total = 0;
   for (size_t i = 0; i < n; ++i) {
-    cumulative[i] = total;
     const Vec3 a = mesh.position(map.loop[i]) - S, b = mesh.position(map.loop[(i + 1) % n]) - S;
-    total += std::atan2(norm(cross(a, b)), dot(a, b));
+    increment[i] = std::atan2(norm(cross(a, b)), dot(a, b));
+    total += increment[i];
   }
   if (!(total > 0)) return Error{ErrorCode::Topology, "the boundary subtends no angle at the source"};
+  // Every step of the polar angle is at least kMinAngleStep of the mean step: a boundary edge that
+  // points at the source subtends no angle, and its two ends would land on one ray and then on one
+  // point of the hull, collapsing their triangles (a fuzzing finding).
+  const double minStep = kMinAngleStep * total / static_cast<double>(n);
+  total = 0;
+  for (size_t i = 0; i < n; ++i) {
+    cumulative[i] = total;
+    total += std::max(increment[i], minStep);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), false, progress);
   if (batch.cancelled) return Error{ErrorCode::Cancelled, "cancelled while tracing the boundary"};

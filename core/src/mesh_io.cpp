@@ -1,7 +1,8 @@
 // Mesh readers. OFF: our own strict line-based parser. OBJ: tinyobjloader, preceded by one linear
 // scan of our own that finds what tinyobjloader would silently accept or report without a line number
 // (non-numeric or non-finite coordinates, faces with fewer than 3 corners, index 0) so every error
-// names its line. Both formats share triangulatePolygon() and TriMesh::build().
+// names its line; tinyobjloader then reads only those checked "v"/"f" lines and the two readings
+// must agree. Both formats share triangulatePolygon() and TriMesh::build().
 #include "straightest/mesh_io.hpp"
 
 #include <algorithm>
@@ -329,6 +330,10 @@ struct ObjScan {
   std::vector<int64_t> corners;      // resolved vertex index per corner
   std::vector<int64_t> faceStart{0};  // corners of face f: [faceStart[f], faceStart[f+1])
   std::vector<int64_t> faceLines;
+  /// The checked "v" and "f" lines, reduced to what both readers must agree on (three coordinates;
+  /// the vertex index of each corner), for tinyobjloader. It never sees the rest of the file: its
+  /// readers of other statements ("vw", "vt", "l", "mtllib", ...) have overflowed on fuzzed input.
+  std::string forTinyobj;
 };
 
 Expected<ObjScan> scanObj(std::string_view text) {
@@ -337,15 +342,16 @@ Expected<ObjScan> scanObj(std::string_view text) {
   Tokens tokens;
   forEachLine(text, [&](int64_t line, std::string_view raw) {
     size_t i = 0;
-    while (i < raw.size() && isSpace(raw[i])) ++i;
-    if (i < raw.size() && raw[i] == 'v' && longExponent(raw)) {
+    while (i < raw.size() && (raw[i] == ' ' || raw[i] == '\t')) ++i;  // as tinyobjloader: space and tab only
+    // Only "v " and "f " lines matter here; like tinyobjloader, only a space or tab ends the keyword.
+    if (i + 1 >= raw.size() || (raw[i + 1] != ' ' && raw[i + 1] != '\t')) return true;
+    const char kind = raw[i];
+    if (kind != 'v' && kind != 'f') return true;
+    if (kind == 'v' && longExponent(raw)) {
       // tinyobjloader's number reader overflows (undefined behaviour) on exponents this long.
       error = parseError(line, "a number has an exponent with more than 4 digits");
       return false;
     }
-    if (i + 1 >= raw.size() || !isSpace(raw[i + 1])) return true;  // only "v " and "f " lines matter here
-    const char kind = raw[i];
-    if (kind != 'v' && kind != 'f') return true;
     tokenize(stripComment(raw.substr(i + 2)), tokens, 4);
     const int64_t vertex = static_cast<int64_t>(scan.positions.size());
     if (kind == 'v') {
@@ -369,6 +375,9 @@ Expected<ObjScan> scanObj(std::string_view text) {
         }
       }
       scan.positions.push_back({c[0], c[1], c[2]});
+      scan.forTinyobj += 'v';
+      for (int k = 0; k < 3; ++k) (scan.forTinyobj += ' ') += tokens.items[k];
+      scan.forTinyobj += '\n';
       return true;
     }
     const int64_t face = static_cast<int64_t>(scan.faceLines.size());
@@ -378,9 +387,12 @@ Expected<ObjScan> scanObj(std::string_view text) {
       return false;
     }
     tokenize(stripComment(raw.substr(i + 2)), tokens, tokens.count);
+    scan.forTinyobj += 'f';
     for (std::string_view corner : tokens.items) {
       int64_t index = 0;
-      if (!parseInt64(corner.substr(0, corner.find('/')), index)) {
+      const std::string_view vertexIndex = corner.substr(0, corner.find('/'));
+      (scan.forTinyobj += ' ') += vertexIndex;
+      if (!parseInt64(vertexIndex, index)) {
         error = parseError(line, "face " + std::to_string(face) + ": vertex index " + quoted(corner) +
                                      " is not an integer (or too large)");
         return false;
@@ -396,6 +408,7 @@ Expected<ObjScan> scanObj(std::string_view text) {
       }
       scan.corners.push_back(resolved);
     }
+    scan.forTinyobj += '\n';
     scan.faceStart.push_back(static_cast<int64_t>(scan.corners.size()));
     scan.faceLines.push_back(line);
     return true;
@@ -404,7 +417,7 @@ Expected<ObjScan> scanObj(std::string_view text) {
   return scan;
 }
 
-/// tinyobjloader parses the file; our scan read the same numbers independently. Any disagreement (a
+/// tinyobjloader parses the file's checked v/f lines; our scan read the same numbers independently. Any disagreement (a
 /// number one of them reads differently) is a parse error rather than a silently different mesh.
 Expected<PolygonSoup> parseObj(std::string_view text, const BuildLimits& limits) {
   auto scanned = scanObj(text);
@@ -419,7 +432,7 @@ Expected<PolygonSoup> parseObj(std::string_view text, const BuildLimits& limits)
   config.triangulate = false;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(std::string(text), std::string(), config)) {
+  if (!reader.ParseFromString(scan.forTinyobj, std::string(), config)) {
     std::string message = reader.Error();
     while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back()))) message.pop_back();
     return Error{ErrorCode::Parse, "OBJ: " + (message.empty() ? std::string("cannot parse") : message)};

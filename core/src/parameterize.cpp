@@ -11,6 +11,7 @@
 
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/multigrid.hpp"
+#include "straightest/straightest_path.hpp"
 
 namespace straightest {
 namespace {
@@ -176,13 +177,18 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   } else {
     auto p = validateSurfacePoint(mesh, options.source);
     if (!p) return p.error();
-    result.source = p.value();
-    const bool onBoundary =
-        (p.value().kind == SurfacePoint::Kind::Vertex && mesh.isBoundaryVertex(p.value().index)) ||
-        (p.value().kind == SurfacePoint::Kind::Edge && mesh.twin(p.value().index) < 0);
+    // The tracer moves a source within kSnapSource of an edge or vertex onto it; check the point it
+    // will really use (a point 2e-8 from the boundary would otherwise become a boundary vertex).
+    result.source = snapSource(mesh, p.value());
+    const SurfacePoint& s = result.source;
+    const bool onBoundary = (s.kind == SurfacePoint::Kind::Vertex && mesh.isBoundaryVertex(s.index)) ||
+                            (s.kind == SurfacePoint::Kind::Edge && mesh.twin(s.index) < 0);
     if (onBoundary && needsSource)
-      return Error{ErrorCode::InvalidArgument, "the source must be an interior point: vertex " +
-                                                   std::to_string(p.value().index) + " is on the boundary"};
+      return Error{ErrorCode::InvalidArgument,
+                   std::string("the source must be an interior point: ") +
+                       (s.kind == SurfacePoint::Kind::Vertex ? "vertex " : "edge ") + std::to_string(s.index) +
+                       " is on the boundary" +
+                       (s.kind != p.value().kind ? " (the given point is within 1e-6 of it)" : "")};
   }
   result.timingsMs.source = msSince(t);
 

@@ -40,7 +40,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
       return err(ErrorCode::NonFinite, "vertex " + std::to_string(v) + " has a non-finite coordinate " + str(p));
     if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate)
       return err(ErrorCode::NonFinite, "vertex " + std::to_string(v) + " has a coordinate too large to compute with " +
-                                           str(p) + " (|x| > 1e150 overflows)");
+                                           str(p) + " (|x| > 1e50 overflows)");
   }
 
   for (int64_t f = 0; f < nf; ++f) {

@@ -360,21 +360,9 @@ inline Verdict judge(const std::vector<Vec3>& P, const std::vector<Triangle>& T)
   return {{}, "valid"};
 }
 
-/// While the known bug is open (regressions/fuzz_off/huge_coordinates_*), FUZZ_SKIP_KNOWN_BUGS=1 skips
-/// meshes with a coordinate above 1e75: kMaxCoordinate (1e150) lets norm(cross(e1, e2)) overflow
-/// (it squares products of coordinates), so an accepted mesh can have a face of infinite area.
-inline bool knownHugeCoordinates(const std::vector<Vec3>& P) {
-  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
-  if (!skip) return false;
-  for (const Vec3& p : P)
-    if (std::abs(p.x) > 1e75 || std::abs(p.y) > 1e75 || std::abs(p.z) > 1e75) return true;
-  return false;
-}
-
 /// Checks a build result against the oracle (and, on success, every mesh invariant).
 inline void checkBuildResult(const std::vector<Vec3>& P, const std::vector<Triangle>& T, const Expected<TriMesh>& r,
                              const char* where) {
-  if (knownHugeCoordinates(P)) return;
   const Verdict v = judge(P, T);
   if (r.ok()) {
     FUZZ_CHECK(v.allowed.empty(), "%s: build accepted a mesh the oracle rejects (%s)", where, v.why.c_str());

@@ -48,19 +48,11 @@ ObjLines readObjLines(std::string_view text) {
   return out;
 }
 
-/// While a known core bug is open, FUZZ_SKIP_KNOWN_BUGS=1 skips inputs that trigger it, so a long run
-/// can find other problems (the regression inputs in regressions/fuzz_obj/ keep failing until fixed).
-/// Open: tinyobjloader's `vw` lines convert a joint id ≥ 2^31 to int (UB).
-bool skipKnownBug(std::string_view text) {
-  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
-  return skip && text.find("vw") != std::string_view::npos;
-}
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  if (skipKnownBug(text)) return 0;
   fuzz::checkParse(text, MeshFormat::Obj);
 
   auto soup = parsePolygonSoup(text, MeshFormat::Obj);

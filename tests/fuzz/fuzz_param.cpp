@@ -65,37 +65,6 @@ void dump(const TriMesh& m, const ParamOptions& o, const Expected<Parameterizati
       std::fprintf(stderr, "  bad face %d: %d %d %d\n", f, m.triangle(f)[0], m.triangle(f)[1], m.triangle(f)[2]);
 }
 
-/// While the known bug is open (regressions/fuzz_param/), FUZZ_SKIP_KNOWN_BUGS=1 excuses a
-/// non-bijective measured boundary when a triangle with all three vertices on the boundary collapses
-/// in the measured polygon (area below 1e-9 of the polygon's size squared: two of its points nearly
-/// coincide; or all three collinear within a sine of 1e-9): convexify() neither separates points that land on the same spot nor bulges a hull edge
-/// whose end is a nearly straight (rounding-made) hull vertex. Also when a boundary vertex stays at the
-/// origin (radius 0: a source within 1e-6 of it is snapped onto it by the tracer), inside the polygon.
-bool knownMeasuredBug(const TriMesh& m, const SurfacePoint& source) {
-  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
-  if (!skip) return false;
-  auto b = measuredBoundary(m, source);
-  if (!b.ok()) return false;
-  const auto& q = b.value().polygon;
-  double size = 0;
-  for (const Vec2& x : q) size = std::max(size, std::hypot(x[0], x[1]));
-  for (size_t i = 0; i < q.size(); ++i) {
-    if (std::hypot(q[i][0], q[i][1]) <= 1e-9 * size) return true;  // a boundary vertex left at the source
-    for (size_t j = i + 1; j < q.size(); ++j)
-      if (std::hypot(q[i][0] - q[j][0], q[i][1] - q[j][1]) <= 1e-9 * size) return true;  // two points on one spot
-  }
-  std::vector<int32_t> at(m.numVertices(), -1);  // position of each boundary vertex in the loop
-  for (size_t i = 0; i < b.value().loop.size(); ++i) at[b.value().loop[i]] = static_cast<int32_t>(i);
-  for (const Triangle& t : m.triangles()) {
-    if (at[t[0]] < 0 || at[t[1]] < 0 || at[t[2]] < 0) continue;  // not all on the boundary
-    const Vec2 &a = q[at[t[0]]], &c1 = q[at[t[1]]], &c2 = q[at[t[2]]];
-    const double e1x = c1[0] - a[0], e1y = c1[1] - a[1], e2x = c2[0] - a[0], e2y = c2[1] - a[1];
-    const double l1 = std::hypot(e1x, e1y), l2 = std::hypot(e2x, e2y), cross = std::abs(e1x * e2y - e1y * e2x);
-    if (!(cross > 1e-9 * l1 * l2) || !(cross > 1e-9 * size * size)) return true;
-  }
-  return false;
-}
-
 bool isDisk(const TriMesh& m) {
   const MeshSummary& s = m.summary();
   return s.boundaryLoopSizes.size() == 1 && s.eulerCharacteristic == 1 && s.components == 1;
@@ -207,12 +176,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                  std::hypot(x[0] - u, x[1] - v));
     }
     for (const BoundaryCandidate& c : p.candidates)
-      if (c.kind == BoundaryKind::Circle || (c.kind == BoundaryKind::Measured && !knownMeasuredBug(mesh, p.source)))
+      if (c.kind == BoundaryKind::Circle || c.kind == BoundaryKind::Measured)
         FUZZ_CHECK(c.flipped == 0 && c.degenerate == 0,
                    "%s mesh, %s boundary, %s weights: %lld flipped and %lld degenerate triangles (must be bijective)",
                    gen.kind, boundaryKindName(c.kind), weightName, (long long)c.flipped, (long long)c.degenerate);
-    if (p.boundary == BoundaryKind::Circle ||
-        (p.boundary == BoundaryKind::Measured && !knownMeasuredBug(mesh, p.source)))
+    if (p.boundary == BoundaryKind::Circle || p.boundary == BoundaryKind::Measured)
       FUZZ_CHECK(p.metrics.bijective && p.metrics.flipped == 0, "%s boundary, %s weights: not bijective",
                  boundaryKindName(p.boundary), weightName);
   }

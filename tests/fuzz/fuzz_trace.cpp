@@ -66,30 +66,6 @@ void dump(const TriMesh& m, const StraightestPathTracer& tracer, const SurfacePo
   for (size_t i = 0; i < p.points.size(); ++i) describe(m, "  point", p.points[i]);
 }
 
-/// While the known miss is open (regressions/fuzz_trace/flat_target_near_vertex_missed),
-/// FUZZ_SKIP_KNOWN_BUGS=1 excuses an unreached target on a flat mesh that lies within
-/// 1e-6 · bbox diagonal of a mesh vertex: the walk snaps onto the vertex (on-plane tolerance
-/// 1e-9 · mean edge) and never enters the face holding the target.
-bool knownMiss(const TriMesh& m, const SurfacePoint& dst) {
-  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
-  if (!skip) return false;
-  const Vec3 D = position(m, dst);
-  for (const Vec3& x : m.positions())
-    if (norm(x - D) <= 1e-6 * m.summary().bbox.diagonal()) return true;
-  return false;
-}
-
-/// While the known issue is open (regressions/fuzz_trace/plane_ill_conditioned_near_base_normal),
-/// FUZZ_SKIP_KNOWN_BUGS=1 skips the on-plane check when D − S is within 1e-8 (relative) of the base
-/// normal: cuttingPlane() only refuses below 1e-12, where m = normalize(n × (D − S)) is mostly rounding
-/// and D itself is up to ~1e-6 off the plane.
-bool knownIllConditioned(const StraightestPathTracer& tracer, const Vec3& D) {
-  static const bool skip = std::getenv("FUZZ_SKIP_KNOWN_BUGS") != nullptr;
-  if (!skip) return false;
-  const Vec3 d = D - tracer.base().origin;
-  return norm(cross(tracer.base().normal, d)) <= 1e-8 * norm(d);
-}
-
 void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const SurfacePoint& dst, const StraightestPath& p,
                bool flatConvex, const char* meshKind) {
   if (std::getenv("FUZZ_VERBOSE")) dump(m, tracer, dst, p);
@@ -134,7 +110,7 @@ void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const Surf
                "%s: a path without a cutting plane", name);
   } else if (p.points.size() > 1) {
     FUZZ_CHECK(plane.has_value(), "%s: a path without a cutting plane", name);
-    for (size_t i = 0; i < p.positions.size() && !knownIllConditioned(tracer, D); ++i) {
+    for (size_t i = 0; i < p.positions.size(); ++i) {
       const double off = std::abs(dot(plane->normal, p.positions[i] - S));
       FUZZ_CHECK(off <= 1e-7 * diag, "%s: point %zu is %.3g off the cutting plane (bbox diagonal %.3g)", name, i, off,
                  diag);
@@ -152,7 +128,6 @@ void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const Surf
       FUZZ_CHECK(p.length >= chord * (1 - 1e-12) - 1e-12 * diag, "reached with length %.17g below the chord %.17g",
                  p.length, chord);
   }
-  if (flatConvex && !samePoint && p.status != TraceStatus::Reached && knownMiss(m, dst)) return;
   if (flatConvex && !samePoint) {
     FUZZ_CHECK(p.status == TraceStatus::Reached, "flat convex %s mesh: target not reached (%s)", meshKind, name);
     const double chord = norm(D - S);

@@ -9,7 +9,9 @@
 // and `fallback` says so. Closed meshes: the area-weighted normal at S.
 //
 // Cutting plane for D: through S with normal m = normalize(n × (D − S)); undefined (nullopt) when
-// D − S is parallel to n (|n × (D − S)| <= 1e-12 · |D − S|) or D == S.
+// D == S or D − S is within kCuttingPlaneMinSine of the base normal (|n × (D − S)| <= 1e-8 · |D − S|):
+// m's rounding error is ~1e-16 / sin, so below 1e-8 the plane would miss D (and carry the path off
+// its own plane) by more than 1e-8 of |D − S| — fuzzing found a 1e-12 threshold leaving D 8e-7 off.
 #pragma once
 #include <optional>
 #include <string>
@@ -19,6 +21,7 @@
 namespace straightest {
 
 inline constexpr double kBaseNormalCancel = 0.05;
+inline constexpr double kCuttingPlaneMinSine = 1e-8;
 
 struct BasePlane {
   Vec3 origin;      // S

@@ -1,10 +1,12 @@
 // boundary_map.hpp — where the boundary loop of a disk goes in the parameter plane (DESIGN §3).
 //
 //  - measured: boundary vertex b_i goes to r_i (cos θ_i, sin θ_i), θ_i = 2π · (cumulative 3D angle
-//    ∠(b_j − S, b_j+1 − S), j < i) / (sum over the loop), r_i = straightest distance S → b_i. A failed
+//    ∠(b_j − S, b_j+1 − S), j < i) / (sum over the loop), each angle raised to at least kMinAngleStep
+//    of the mean (an edge pointing at S would otherwise put two points on one ray), r_i = straightest
+//    distance S → b_i. A failed
 //    trace gets the edge-graph (Dijkstra) distance from S instead and is counted as a fallback.
 //    Then the polygon is made convex: a point strictly inside the convex hull moves radially outward
-//    onto the hull. Where an interior mesh edge joining two boundary vertices (a chord) would then lie
+//    onto the hull (a hull corner turning by a sine below 1e-9 counts as straight). Where an interior mesh edge joining two boundary vertices (a chord) would then lie
 //    on one straight hull edge (its triangles collapse: the map could not be bijective; Floater's
 //    condition for weakly convex boundaries), the points on that edge are lifted
 //    onto a shallow parabola over it (sagitta ≤ kBulge · edge length / 4, limited by the hull's turning
@@ -26,6 +28,7 @@
 namespace straightest {
 
 inline constexpr double kBulge = 0.05;  // end slope of the parabola (sagitta = kBulge · L / 4)
+inline constexpr double kMinAngleStep = 0.01;  // measured: least polar-angle step, as a fraction of the mean
 
 enum class BoundaryKind { Measured, Circle, Square };
 const char* boundaryKindName(BoundaryKind k);

@@ -16,7 +16,7 @@ enum class ErrorCode {
   Parse,              // syntax error: bad token, bad header, truncated file, line too long
   Empty,              // no vertices or no faces
   TooLarge,           // over the configured caps (or a header claims more than the file can hold)
-  NonFinite,          // NaN or Inf coordinate, or one so large (> 1e150) that products overflow
+  NonFinite,          // NaN or Inf coordinate, or one so large (> 1e50) that products overflow
   IndexOutOfRange,    // face refers to a vertex that does not exist (or index 0 in OBJ)
   InvalidFace,        // fewer than 3 vertices, or a vertex repeated inside one face
   DuplicateFace,      // two faces with the same vertex set

@@ -53,6 +53,11 @@ struct StraightestPath {
   std::vector<Vec3> positions;       // their 3D positions
 };
 
+/// Barycentric coordinates / edge parameter below which a source is moved onto the edge or vertex.
+inline constexpr double kSnapSource = 1e-6;
+/// The source point a tracer really starts from: p moved onto an edge or vertex within kSnapSource.
+SurfacePoint snapSource(const TriMesh& mesh, SurfacePoint p);
+
 /// Traces straightest paths from one source; reuse it for many destinations (shared setup).
 class StraightestPathTracer {
  public:
