@@ -3,11 +3,13 @@
 #   native   — native build + ctest (GoogleTest suite + CLI contract)
 #   wasm     — WASM build + ctest running the same GoogleTest sources under Node
 #   sanitize — the native suite again under AddressSanitizer + UndefinedBehaviorSanitizer
+#   fuzz     — every libFuzzer harness (tests/fuzz): its saved regression inputs, then a smoke run of
+#              FUZZ_SECONDS (default 30) seconds each; one result per harness
 #   js       — node --test on the npm API (tests/js), including installing the packed package
 #   browser  — the page in headless Chromium (tests/e2e)
 # Exits non-zero if any layer fails. Set LAYERS="native wasm" to run a subset.
 source "$(dirname "$0")/common.sh"
-LAYERS="${LAYERS:-native wasm sanitize js browser}"
+LAYERS="${LAYERS:-native wasm sanitize fuzz js browser}"
 LOG_DIR="$ROOT/build/test-logs"
 mkdir -p "$LOG_DIR"
 
@@ -65,13 +67,17 @@ for layer in $LAYERS; do
       if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
       record js "$p" "$f" "$(elapsed "$t")"
       ;;
-    browser)
-      run_layer browser node tests/e2e/browser.test.mjs
-      line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$LOG_DIR/browser.log" | tail -1 || true)
+    fuzz|browser)
+      if [ "$layer" = fuzz ]; then
+        run_layer fuzz bash scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
+      else
+        run_layer browser node tests/e2e/browser.test.mjs
+      fi
+      line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$LOG_DIR/$layer.log" | tail -1 || true)
       p=$(echo "$line" | awk '{print $1}'); f=$(echo "$line" | awk '{print $3}')
       p=${p:-0}; f=${f:-1}
       if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
-      record browser "$p" "$f" "$(elapsed "$t")"
+      record "$layer" "$p" "$f" "$(elapsed "$t")"
       ;;
     *) echo "unknown layer '$layer'" >&2; exit 2 ;;
   esac
