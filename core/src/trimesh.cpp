@@ -239,19 +239,23 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   mesh.faceAreas_.resize(nf);
   mesh.degenerate_.assign(nf, 0);
   int64_t degenerate = 0;
+  double edgeLengthSum = 0;  // an interior edge is seen from both faces: half from each
   for (int32_t f = 0; f < nf; ++f) {
     const Triangle& t = mesh.triangles_[f];
     const Vec3 e1 = mesh.positions_[t[1]] - mesh.positions_[t[0]];
     const Vec3 e2 = mesh.positions_[t[2]] - mesh.positions_[t[0]];
+    const double lengths[3] = {norm(e1), norm(mesh.positions_[t[2]] - mesh.positions_[t[1]]), norm(e2)};
+    for (int k = 0; k < 3; ++k) edgeLengthSum += mesh.twin_[3 * f + k] < 0 ? lengths[k] : 0.5 * lengths[k];
     const Vec3 c = cross(e1, e2);
     const double twiceArea = norm(c);
     mesh.faceAreas_[f] = 0.5 * twiceArea;
-    const bool isDegenerate = !(twiceArea > kDegenerateRel * norm(e1) * norm(e2)) || !std::isfinite(twiceArea);
+    const bool isDegenerate = !(twiceArea > kDegenerateRel * lengths[0] * lengths[2]) || !std::isfinite(twiceArea);
     mesh.degenerate_[f] = isDegenerate;
     degenerate += isDegenerate;
     mesh.faceNormals_[f] = isDegenerate ? Vec3{} : c / twiceArea;
   }
 
+  if (edges > 0 && edgeLengthSum > 0) mesh.meanEdgeLength_ = edgeLengthSum / static_cast<double>(edges);
   if (degenerate == nf)
     return err(ErrorCode::Degenerate, "every face (" + std::to_string(nf) + ") has zero area: the vertices of each "
                                       "face are collinear or coincide");
@@ -271,6 +275,10 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     s.bbox.min = {std::min(s.bbox.min.x, p.x), std::min(s.bbox.min.y, p.y), std::min(s.bbox.min.z, p.z)};
     s.bbox.max = {std::max(s.bbox.max.x, p.x), std::max(s.bbox.max.y, p.y), std::max(s.bbox.max.z, p.z)};
   }
+  mesh.adjacency_.resize(nf);
+  for (int32_t f = 0; f < nf; ++f)
+    mesh.adjacency_[f] = {mesh.triangles_[f], {mesh.twin_[3 * f], mesh.twin_[3 * f + 1], mesh.twin_[3 * f + 2]}};
+  std::vector<int32_t>().swap(mesh.twin_);
   s.problems = std::move(notes);
   if (reoriented > 0)
     s.problems.push_back(std::to_string(reoriented) + " faces had the opposite orientation of their neighbours "

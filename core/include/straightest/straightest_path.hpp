@@ -11,9 +11,13 @@
 //  - stop at D. If the walk hits the boundary, returns to S, revisits a crossing (loop) or exceeds the
 //    step bound, walk the other way along the same section from S (leaving on the −t side); if neither
 //    reaches D, return the first walk's status and partial path.
-// Cost is output-sensitive: O(faces crossed) per destination after an O(V + F) setup per tracer
-// (stamps for loop detection); no allocation per step (the point buffers are reused).
+// Cost is output-sensitive: O(faces crossed) per destination, and the tracer's setup is O(faces around
+// S) (plus one O(V) stamp array, allocated at the first walk through a vertex); no allocation per step
+// (the point buffers are reused). Loops need no per-edge stamps: between two vertex passings the
+// section is a 1-manifold, so a walk that cycles there first comes back to the piece's first crossed
+// edge; vertex passings are stamped.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -78,6 +82,21 @@ class StraightestPathTracer {
             StraightestPath& out);
   double signedDistance(int32_t v) const;
 
+  /// A few faces (those around a point), tested per step without touching per-face memory: most
+  /// faces fail the index-range check; the rest are compared one by one (or by binary search).
+  struct FaceSet {
+    std::vector<int32_t> faces;  // sorted
+    int32_t lo = 0, hi = -1;
+    void assign(const std::vector<int32_t>& f);
+    bool contains(int32_t f) const {
+      if (f < lo || f > hi) return false;
+      if (faces.size() > 16) return std::binary_search(faces.begin(), faces.end(), f);
+      for (int32_t x : faces)
+        if (x == f) return true;
+      return false;
+    }
+  };
+
   const TriMesh& mesh_;
   SurfacePoint source_;
   Vec3 sourcePosition_;
@@ -88,13 +107,11 @@ class StraightestPathTracer {
   int64_t maxSteps_ = 0;
   std::vector<int32_t> sourceFaces_;
   std::vector<int32_t> targetFaces_;
-  std::vector<uint8_t> sourceFace_;     // per face: contains the source
-  std::vector<uint32_t> targetStamp_;   // per face: == targetEpoch_ when it contains the destination
-  uint32_t targetEpoch_ = 0;
-  bool isSourceFace(int32_t f) const { return f >= 0 && sourceFace_[f]; }
-  bool isTargetFace(int32_t f) const { return f >= 0 && targetStamp_[f] == targetEpoch_; }
+  FaceSet sourceSet_, targetSet_;
+  bool isSourceFace(int32_t f) const { return sourceSet_.contains(f); }
+  bool isTargetFace(int32_t f) const { return targetSet_.contains(f); }
   std::vector<int32_t> fan_;  // scratch: faces around the current vertex
-  std::vector<uint32_t> edgeStamp_, vertexStamp_;
+  std::vector<uint32_t> vertexStamp_;  // == epoch_ for vertices passed in the current walk
   uint32_t epoch_ = 0;
   CuttingPlane plane_{};
   StraightestPath result_, second_;

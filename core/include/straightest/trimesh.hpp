@@ -24,6 +24,13 @@ namespace straightest {
 
 using Triangle = std::array<int32_t, 3>;
 
+/// One face's corners and the twins of its three halfedges, side by side (24 bytes): a walk across
+/// faces reads both for every face it enters, so they come in one cache line instead of two.
+struct FaceAdjacency {
+  Triangle corners;
+  std::array<int32_t, 3> twins;
+};
+
 struct BuildLimits {
   int64_t maxVertices = 50'000'000;
   int64_t maxFaces = 100'000'000;
@@ -67,10 +74,12 @@ class TriMesh {
   static int32_t face(int32_t h) { return h / 3; }
   static int32_t next(int32_t h) { return h - h % 3 + (h % 3 + 1) % 3; }
   static int32_t prev(int32_t h) { return h - h % 3 + (h % 3 + 2) % 3; }
-  int32_t twin(int32_t h) const { return twin_[h]; }
+  int32_t twin(int32_t h) const { return adjacency_[h / 3].twins[h % 3]; }
+  const FaceAdjacency& adjacency(int32_t f) const { return adjacency_[f]; }
+  const FaceAdjacency* adjacencyData() const { return adjacency_.data(); }
   int32_t tail(int32_t h) const { return triangles_[h / 3][h % 3]; }
   int32_t head(int32_t h) const { return triangles_[h / 3][(h % 3 + 1) % 3]; }
-  bool isBoundaryHalfedge(int32_t h) const { return twin_[h] < 0; }
+  bool isBoundaryHalfedge(int32_t h) const { return twin(h) < 0; }
   /// An outgoing halfedge of v (tail(h) == v), -1 if v is unreferenced. For a boundary vertex it is
   /// the outgoing boundary halfedge, so rotating counter-clockwise with h = twin(prev(h)) from it visits
   /// the whole fan (until -1); for an interior vertex the rotation comes back to where it started.
@@ -81,6 +90,8 @@ class TriMesh {
   /// Unit normal of face f (zero for a degenerate face) and its area.
   const Vec3& faceNormal(int32_t f) const { return faceNormals_[f]; }
   double faceArea(int32_t f) const { return faceAreas_[f]; }
+  /// Mean length of the mesh's edges (each counted once), the scale of its relative tolerances.
+  double meanEdgeLength() const { return meanEdgeLength_; }
   bool isDegenerateFace(int32_t f) const { return degenerate_[f] != 0; }
 
   const MeshSummary& summary() const { return summary_; }
@@ -89,13 +100,15 @@ class TriMesh {
   TriMesh() = default;
   std::vector<Vec3> positions_;
   std::vector<Triangle> triangles_;
-  std::vector<int32_t> twin_;
+  std::vector<int32_t> twin_;               // during build only; then moved into adjacency_
+  std::vector<FaceAdjacency> adjacency_;
   std::vector<int32_t> vertexHalfedge_;
   std::vector<uint8_t> isBoundaryVertex_;
   std::vector<std::vector<int32_t>> boundaryLoops_;
   std::vector<Vec3> faceNormals_;
   std::vector<double> faceAreas_;
   std::vector<uint8_t> degenerate_;
+  double meanEdgeLength_ = 1;
   MeshSummary summary_;
 };
 
