@@ -168,9 +168,14 @@ struct StraightestPathTracer::Walk {
   }
 
   /// The exit from point P (at vertex atVertex, or -1) through the given faces, best aligned with
-  /// dir (unit) and with cosine > minCos; faces ex1/ex2 are skipped (the way we came).
-  Exit bestExit(const Vec3& P, int32_t atVertex, const std::vector<int32_t>& faces, int32_t ex1, int32_t ex2,
-                const Vec3& dir, double minCos) const {
+  /// dir (unit) and with cosine > minCos; faces ex1/ex2 are skipped (the way we came). A P inside an
+  /// edge passes halfedge onEdge (else -1): the plane crosses that edge at P itself, so its crossing is
+  /// no exit. (Computed, it lands up to ~1e-6 away from P when the plane is within ~1e-7 rad of the
+  /// edge, far enough to pass for a step and send the walk back through the edge to S: a fuzzing
+  /// finding.)
+  Exit bestExit(const Vec3& P, int32_t atVertex, int32_t onEdge, const std::vector<int32_t>& faces, int32_t ex1,
+                int32_t ex2, const Vec3& dir, double minCos) const {
+    const int32_t onTwin = onEdge >= 0 ? mesh.twin(onEdge) : -1;
     Exit best;
     double bestCos = minCos;
     auto consider = [&](Exit e) {
@@ -206,7 +211,9 @@ struct StraightestPathTracer::Walk {
           consider(e);
         }
         const int k1 = (k + 1) % 3;
-        if ((d[k] < 0 && d[k1] > 0) || (d[k] > 0 && d[k1] < 0)) consider(crossing(3 * f + k, f));
+        const int32_t h = 3 * f + k;
+        if (h == onEdge || h == onTwin) continue;
+        if ((d[k] < 0 && d[k1] > 0) || (d[k] > 0 && d[k1] < 0)) consider(crossing(h, f));
       }
     }
     return best;
@@ -218,7 +225,8 @@ struct StraightestPathTracer::Walk {
     Vec3 P = tr.sourcePosition_;
     const int32_t sourceVertex = tr.source_.kind == SurfacePoint::Kind::Vertex ? tr.source_.index : -1;
     // Leave S on D's side (strictly positive cosine with the direction).
-    Exit e = bestExit(P, sourceVertex, tr.sourceFaces_, -1, -1, startDir, 0.0);
+    const int32_t sourceEdge = tr.source_.kind == SurfacePoint::Kind::Edge ? tr.source_.index : -1;
+    Exit e = bestExit(P, sourceVertex, sourceEdge, tr.sourceFaces_, -1, -1, startDir, 0.0);
     if (!e.valid) {
       out.status = sourceOnBoundary() ? TraceStatus::HitBoundary : TraceStatus::NoExit;
       return;
@@ -248,7 +256,7 @@ struct StraightestPathTracer::Walk {
         P = Q;
         incidentFaces(mesh, SurfacePoint::vertex(e.vertex), tr.fan_);
         const int32_t v = e.vertex;
-        e = bestExit(P, v, tr.fan_, e.face, e.face2, dirIn, -std::numeric_limits<double>::infinity());
+        e = bestExit(P, v, -1, tr.fan_, e.face, e.face2, dirIn, -std::numeric_limits<double>::infinity());
         if (!e.valid) {
           out.status = mesh.isBoundaryVertex(v) ? TraceStatus::HitBoundary : TraceStatus::NoExit;
           return;

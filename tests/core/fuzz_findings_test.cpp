@@ -15,6 +15,7 @@ namespace {
 
 using testing::buildOrFail;
 using testing::flatGrid;
+using testing::grid;
 using testing::GridPattern;
 
 TEST(FuzzFindings, ObjStatementsOtherThanVAndFNeverReachTinyobjloader) {
@@ -64,6 +65,51 @@ TEST(FuzzFindings, TargetNextToAVertexOnThePathIsReached) {
     EXPECT_NEAR(path.length, norm(position(mesh, target) - mesh.position(s)), 2 * t + 1e-12) << "t = " << t;
     EXPECT_EQ(path.points.back().kind, SurfacePoint::Kind::Edge);
   }
+}
+
+TEST(FuzzFindings, SourceOnAnEdgeWithThePlaneAlmostAlongTheEdgeLeavesThroughAFace) {
+  // Flat 10 × 10 grids, rotated and moved far from the origin; S at the midpoint of a diagonal edge,
+  // D at t ≤ 1e-7 on an edge of the grid vertex one more cell along the diagonal, so the plane crosses
+  // the source edge at S at an angle below ~5e-8. The computed crossing of that edge landed up to ~1e-6
+  // from S (rounding at coordinates ~1000), was taken as the first step, and led the walk back through
+  // the edge to S (returned_to_source; hit_boundary in another run). Each target must be reached along
+  // the straight segment.
+  int checked = 0, n = 10;
+  for (double angle : {0.0, 0.3, 1.1, 2.5})
+    for (const Vec3& offset : {Vec3{1000, -500, 250}, Vec3{-3000, 7000, 1}}) {
+      const double c = std::cos(angle), s = std::sin(angle);
+      const TriMesh mesh = grid(n, GridPattern::Regular,
+                                [&](double x, double y) { return offset + Vec3{c * x - s * y, s * x + c * y, 0}; });
+      auto find = [&](int32_t a, int32_t b) {
+        for (int32_t k = 0; k < 3 * mesh.numFaces(); ++k)
+          if (mesh.tail(k) == a && mesh.head(k) == b) return k;
+        return -1;
+      };
+      for (int i = 2; i <= 5; ++i)
+        for (int j = 2; j <= 5; ++j) {
+          // The diagonal of square (i, j), in whichever direction the grid splits it, and the vertex one
+          // more cell along it (grid vertex (i, j) has index j n + i).
+          int32_t a = j * n + i, b = a + n + 1, far = b + n + 1, di = 1;
+          if (find(a, b) < 0) a = j * n + i + 1, b = a + n - 1, far = b + n - 1, di = -1;
+          const int32_t h = find(a, b);
+          ASSERT_GE(h, 0) << "no diagonal edge in square " << i << ", " << j;
+          const Vec3 S = (mesh.position(a) + mesh.position(b)) * 0.5;
+          StraightestPathTracer tracer(mesh, SurfacePoint::edge(h, 0.5));
+          for (double t : {1e-7, 3e-8, 1e-9})
+            for (int32_t next : {far - di, far - n}) {  // the edges from far back toward the diagonal's side
+              const int32_t e = find(far, next);
+              ASSERT_GE(e, 0);
+              const SurfacePoint target = SurfacePoint::edge(e, t);
+              const StraightestPath& path = tracer.trace(target);
+              ++checked;
+              ASSERT_EQ(path.status, TraceStatus::Reached)
+                  << "angle " << angle << ", square " << i << ", " << j << ", t " << t << ": "
+                  << traceStatusName(path.status);
+              EXPECT_NEAR(path.length, norm(position(mesh, target) - S), 1e-9);
+            }
+        }
+    }
+  EXPECT_EQ(checked, 4 * 2 * 16 * 3 * 2);
 }
 
 TEST(FuzzFindings, DestinationAlmostAlongTheBaseNormalHasNoPlane) {
