@@ -2,9 +2,11 @@
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
-#include <queue>
 #include <stdexcept>
 #include <string>
 
@@ -28,40 +30,121 @@ void sourceWeights(const TriMesh& mesh, const SurfacePoint& p, std::vector<std::
   }
 }
 
+/// Monotone priority queue of (distance, vertex) for Dijkstra: a radix heap (Ahuja, Mehlhorn, Orlin,
+/// Tarjan 1990) on the bit patterns of the distances (non-negative doubles order like their patterns
+/// as unsigned integers). An item sits in the bucket of the highest bit in which its key differs from
+/// the last key popped; popping refills bucket 0 from the first non-empty bucket, and an item moves
+/// down a bucket at a time, so it is touched a few times in all instead of log(queue) times per
+/// operation. Pushed keys must not be below the last popped key, which Dijkstra guarantees.
+/// Which of equal keys comes first does not matter: every vertex's final distance is the minimum
+/// over its neighbours settled before it, whatever the order.
+class RadixHeap {
+ public:
+  bool empty() const { return size_ == 0; }
+  void push(double key, int32_t v) {
+    const uint64_t k = bits(key);
+    buckets_[bucket(k)].push_back({k, v});
+    ++size_;
+  }
+  std::pair<double, int32_t> pop() {
+    if (buckets_[0].empty()) {
+      int b = 1;
+      while (buckets_[b].empty()) ++b;
+      std::vector<Item>& from = buckets_[b];
+      last_ = from.front().first;
+      for (const Item& it : from) last_ = std::min(last_, it.first);
+      for (const Item& it : from) buckets_[bucket(it.first)].push_back(it);  // all land below b
+      from.clear();
+    }
+    const Item it = buckets_[0].back();
+    buckets_[0].pop_back();
+    --size_;
+    double key;
+    std::memcpy(&key, &it.first, sizeof key);
+    return {key, it.second};
+  }
+
+ private:
+  using Item = std::pair<uint64_t, int32_t>;
+  static uint64_t bits(double key) {
+    key += 0.0;  // −0 → +0
+    uint64_t k;
+    std::memcpy(&k, &key, sizeof k);
+    return k;
+  }
+  int bucket(uint64_t k) const { return k == last_ ? 0 : 64 - __builtin_clzll(k ^ last_); }
+
+  std::vector<Item> buckets_[65];
+  uint64_t last_ = 0;
+  size_t size_ = 0;
+};
+
+/// The edge graph in compressed rows: neighbours of v and the edge lengths, in the order of a rotation
+/// around v (on a boundary vertex the rotation's last neighbour too).
+struct EdgeGraph {
+  std::vector<int32_t> start, neighbour;
+  std::vector<double> length;
+};
+
+EdgeGraph edgeGraph(const TriMesh& mesh) {
+  EdgeGraph g;
+  const int32_t nv = mesh.numVertices();
+  g.start.resize(static_cast<size_t>(nv) + 1);
+  // Every neighbour in a rotation is one face corner, plus one at a boundary vertex: 3·faces + nv is
+  // enough for a valid mesh. Entries are written in place (no push_back: in WebAssembly a possible
+  // reallocation per entry doubled this loop's time); the capacity check only guards the bound.
+  size_t capacity = 3 * static_cast<size_t>(mesh.numFaces()) + nv, used = 0;
+  g.neighbour.resize(capacity);
+  g.length.resize(capacity);
+  for (int32_t v = 0; v < nv; ++v) {
+    g.start[v] = static_cast<int32_t>(used);
+    const Vec3& pv = mesh.position(v);
+    auto add = [&](int32_t w) {
+      if (used == capacity) {
+        capacity = 2 * capacity + 16;
+        g.neighbour.resize(capacity);
+        g.length.resize(capacity);
+      }
+      g.neighbour[used] = w;
+      g.length[used++] = norm(mesh.position(w) - pv);
+    };
+    const int32_t first = mesh.vertexHalfedge(v);
+    for (int32_t h = first; h >= 0;) {
+      add(mesh.head(h));
+      const int32_t p = TriMesh::prev(h);
+      if (mesh.twin(p) < 0) add(mesh.tail(p));
+      h = mesh.twin(p);
+      if (h == first) break;
+    }
+  }
+  g.start[nv] = static_cast<int32_t>(used);
+  return g;
+}
+
+/// Dijkstra on the edge graph. The graph is gathered first, in vertex order: the search's wavefront
+/// visits vertices all over the mesh, and walking the half-edge structure there cost a cache miss
+/// per triangle, twin and position (at 1M vertices, most of the time); the gathered rows are
+/// contiguous per vertex. Lengths and sums are the same expressions as on the mesh, so distances
+/// are bit for bit those of a search on the half-edges.
 std::vector<double> dijkstraFrom(const TriMesh& mesh, const std::vector<std::pair<int32_t, double>>& seeds) {
   std::vector<double> dist(mesh.numVertices(), kInf);
-  using Item = std::pair<double, int32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  const EdgeGraph g = edgeGraph(mesh);
+  RadixHeap queue;
   for (const auto& [v, d] : seeds)
     if (d < dist[v]) {
       dist[v] = d;
-      queue.push({d, v});
+      queue.push(d, v);
     }
   while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
+    const auto [d, v] = queue.pop();
     if (d > dist[v]) continue;
-    const int32_t start = mesh.vertexHalfedge(v);
-    int32_t h = start;
-    // Rotate around v; on a boundary vertex also visit the last neighbour (head of the final prev).
-    while (h >= 0) {
-      const int32_t w = mesh.head(h);
-      const double nd = d + norm(mesh.position(w) - mesh.position(v));
+    for (int32_t k = g.start[v]; k < g.start[v + 1]; ++k) {
+      const int32_t w = g.neighbour[k];
+      const double nd = d + g.length[k];
       if (nd < dist[w]) {
         dist[w] = nd;
-        queue.push({nd, w});
+        queue.push(nd, w);
       }
-      const int32_t p = TriMesh::prev(h);
-      if (mesh.twin(p) < 0) {
-        const int32_t u = mesh.tail(p);
-        const double nu = d + norm(mesh.position(u) - mesh.position(v));
-        if (nu < dist[u]) {
-          dist[u] = nu;
-          queue.push({nu, u});
-        }
-      }
-      h = mesh.twin(p);
-      if (h == start) break;
     }
   }
   return dist;

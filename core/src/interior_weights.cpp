@@ -38,6 +38,12 @@ const char* weightKindName(WeightKind k) {
 
 InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
   InteriorWeights W;
+  // Reserve once: every interior vertex's ring has one neighbour per face corner at it, so 3·faces
+  // bounds the neighbour count (growing 6M-entry vectors by doubling costs copies and page faults).
+  W.rows.reserve(mesh.numVertices());
+  W.start.reserve(static_cast<size_t>(mesh.numVertices()) + 1);
+  W.neighbour.reserve(3 * static_cast<size_t>(mesh.numFaces()));
+  W.weight.reserve(3 * static_cast<size_t>(mesh.numFaces()));
   W.start.push_back(0);
   std::vector<int32_t> ring;
   std::vector<Vec3> e;
@@ -66,8 +72,11 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
       l[k] = norm(e[k]);
       ok = l[k] > 0 && std::isfinite(l[k]);
     }
+    // Ring indices wrap with a compare, not `%`: an integer division per access was a noticeable part
+    // of this loop's cost.
+    auto next = [d](size_t k) { return k + 1 == d ? 0 : k + 1; };
     for (size_t k = 0; k < d && ok; ++k) {
-      theta[k] = angleBetween(e[k], e[(k + 1) % d]);  // angle at v in face (v, k, k+1)
+      theta[k] = angleBetween(e[k], e[next(k)]);  // angle at v in face (v, k, k+1)
       thetaSum += theta[k];
     }
     ok = ok && thetaSum > 0;
@@ -78,13 +87,13 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
           break;
         case WeightKind::MeanValue:
           for (size_t k = 0; k < d; ++k)
-            w[k] = (std::tan(theta[(k + d - 1) % d] / 2) + std::tan(theta[k] / 2)) / l[k];
+            w[k] = (std::tan(theta[k == 0 ? d - 1 : k - 1] / 2) + std::tan(theta[k] / 2)) / l[k];
           break;
         case WeightKind::Cotan:
           for (size_t k = 0; k < d; ++k) {
             const Vec3& pk = mesh.position(ring[k]);
-            const Vec3& pn = mesh.position(ring[(k + 1) % d]);      // third vertex of face (v, k, k+1)
-            const Vec3& pp = mesh.position(ring[(k + d - 1) % d]);  // third vertex of face (v, k-1, k)
+            const Vec3& pn = mesh.position(ring[next(k)]);                // third vertex of face (v, k, k+1)
+            const Vec3& pp = mesh.position(ring[k == 0 ? d - 1 : k - 1]);  // third vertex of face (v, k-1, k)
             w[k] = cotAngle(p - pn, pk - pn) + cotAngle(p - pp, pk - pp);
           }
           break;
@@ -98,8 +107,8 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
           }
           for (size_t k = 0; k < d && ok; ++k) {
             bool found = false;
-            for (size_t s = 1; s + 1 < d && !found; ++s) {
-              const size_t a = (k + s) % d, b = (k + s + 1) % d;
+            for (size_t s = 1, a = next(k); s + 1 < d && !found; ++s, a = next(a)) {
+              const size_t b = next(a);  // the segment (q_a, q_b), a = k + s
               double mu[3];
               if (!originBarycentric(q[k].data(), q[a].data(), q[b].data(), mu)) continue;
               if (mu[0] >= -1e-12 && mu[1] >= -1e-12 && mu[2] >= -1e-12) {

@@ -19,85 +19,145 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-/// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; one factorization, two right-hand
-/// sides. Returns the relative residual.
+/// The system I − W of the interior rows (row r = interior vertex W.rows[r]) in compressed rows, and
+/// its two right-hand sides (the fixed boundary's contribution, u and v interleaved). Built straight
+/// from W's rows: a row is its diagonal then its interior neighbours, no triplet sort needed.
+void assembleInterior(const InteriorWeights& W, const std::vector<int32_t>& index, const std::vector<Vec2>& uv,
+                      CsrMatrix& A, std::vector<double>& rhs) {
+  const auto n = static_cast<int32_t>(W.rows.size());
+  A.rows = A.cols = n;
+  A.start.assign(1, 0);
+  A.start.reserve(static_cast<size_t>(n) + 1);
+  A.col.clear();
+  A.value.clear();
+  A.col.reserve(W.neighbour.size() + n);
+  A.value.reserve(W.neighbour.size() + n);
+  rhs.assign(2 * static_cast<size_t>(n), 0.0);
+  for (int32_t r = 0; r < n; ++r) {
+    A.col.push_back(r);
+    A.value.push_back(1.0);
+    for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
+      const int32_t j = W.neighbour[k];
+      if (index[j] >= 0) {
+        A.col.push_back(index[j]);
+        A.value.push_back(-W.weight[k]);
+      } else {
+        rhs[2 * r] += W.weight[k] * uv[j][0];
+        rhs[2 * r + 1] += W.weight[k] * uv[j][1];
+      }
+    }
+    A.start.push_back(static_cast<int32_t>(A.col.size()));
+  }
+}
+
+/// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; u and v together (one multigrid
+/// hierarchy or one factorization, two right-hand sides). Returns the relative residual.
 double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const BoundaryMap& boundary, LinearSolver solver,
                      std::vector<Vec2>& uv, const Progress& progress, bool& cancelled) {
   const int32_t nv = mesh.numVertices();
   uv.assign(nv, Vec2{0, 0});
   for (size_t i = 0; i < boundary.loop.size(); ++i) uv[boundary.loop[i]] = boundary.polygon[i];
-  const auto n = static_cast<Eigen::Index>(W.rows.size());
+  const auto n = static_cast<int32_t>(W.rows.size());
   if (n == 0) return 0;
   std::vector<int32_t> index(nv, -1);
-  for (Eigen::Index r = 0; r < n; ++r) index[W.rows[r]] = static_cast<int32_t>(r);
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(W.neighbour.size() + n);
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
-  for (Eigen::Index r = 0; r < n; ++r) {
-    triplets.emplace_back(r, r, 1.0);
-    for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
-      const int32_t j = W.neighbour[k];
-      if (index[j] >= 0) {
-        triplets.emplace_back(r, index[j], -W.weight[k]);
-      } else {
-        rhs(r, 0) += W.weight[k] * uv[j][0];
-        rhs(r, 1) += W.weight[k] * uv[j][1];
-      }
-    }
-  }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> A(n, n);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  A.makeCompressed();
-  Eigen::MatrixXd x(n, 2);
+  for (int32_t r = 0; r < n; ++r) index[W.rows[r]] = r;
+  CsrMatrix system;
+  std::vector<double> rhs;
+  assembleInterior(W, index, uv, system, rhs);
   // Initial guess for iterative solvers: the boundary's centroid (inside the convex polygon).
-  Eigen::MatrixXd guess(n, 2);
+  std::vector<double> x(2 * static_cast<size_t>(n));
   double cx = 0, cy = 0;
   for (const Vec2& q : boundary.polygon) { cx += q[0]; cy += q[1]; }
-  guess.col(0).setConstant(cx / boundary.polygon.size());
-  guess.col(1).setConstant(cy / boundary.polygon.size());
-  // Iterations run in chunks of 10 so progress can be reported (and cancelled) as the residual falls.
+  for (int32_t r = 0; r < n; ++r) {
+    x[2 * r] = cx / boundary.polygon.size();
+    x[2 * r + 1] = cy / boundary.polygon.size();
+  }
   constexpr double kTolerance = 1e-10;
-  auto iterate = [&](auto& it) {
-    it.setTolerance(kTolerance);
-    it.setMaxIterations(10);
-    it.compute(A);
-    if (it.info() != Eigen::Success) return false;
-    for (int c = 0; c < 2; ++c) {
-      Eigen::VectorXd xc = guess.col(c);
-      const double r0 = std::max((A * xc - rhs.col(c)).norm() / std::max(rhs.col(c).norm(), 1e-300), 1e-300);
-      for (int chunk = 0;; ++chunk) {
-        xc = it.solveWithGuess(rhs.col(c), xc);
-        if (it.info() == Eigen::Success) break;
-        if (chunk >= 100 || !std::isfinite(it.error())) return false;  // 1000 iterations: give up, use LU
-        const double done = std::log(r0 / std::max(it.error(), kTolerance)) / std::log(r0 / kTolerance);
-        if (!report(progress, "solve", 0.5 * c + 0.5 * std::clamp(done, 0.0, 1.0))) {
-          cancelled = true;
-          return false;
-        }
-      }
-      x.col(c) = xc;
-    }
-    return true;
+  constexpr int kMaxIterations = 1000;  // then give up and use LU
+  // Progress of the solve stage: the multigrid setup is its first kSetupShare, the iterations the rest
+  // (by the logarithm of the residual's fall). Reported fractions never go back.
+  constexpr double kSetupShare = 0.2;
+  double reported = 0;
+  auto reportSolve = [&](double fraction) {
+    reported = std::max(reported, std::clamp(fraction, 0.0, 1.0));
+    if (!report(progress, "solve", reported)) cancelled = true;
+    return !cancelled;
   };
   bool solved = false;
+  AggregationMultigrid multigrid;
+  const CsrMatrix* A = &system;
   if (solver == LinearSolver::Multigrid) {
-    Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, AggregationMultigrid> it;
-    solved = iterate(it);
+    const bool built = multigrid.compute(std::move(system), [&](double f) { return reportSolve(kSetupShare * f); });
+    A = &multigrid.matrix();
+    if (cancelled) return 0;
+    if (built) {
+      std::vector<double> r0(2 * static_cast<size_t>(n));
+      A->multiply2(x.data(), r0.data());
+      double r0Norm2 = 0, bNorm2 = 0;
+      for (size_t i = 0; i < r0.size(); ++i) {
+        r0Norm2 += (rhs[i] - r0[i]) * (rhs[i] - r0[i]);
+        bNorm2 += rhs[i] * rhs[i];
+      }
+      const double start = std::max(std::sqrt(r0Norm2 / std::max(bNorm2, 1e-300)), 2 * kTolerance);
+      const KrylovStats stats =
+          solveTwoColumns(*A, multigrid, rhs, x, kTolerance, kMaxIterations, [&](int, double residual) {
+            const double done = std::log(start / std::max(residual, kTolerance)) / std::log(start / kTolerance);
+            return reportSolve(kSetupShare + (1 - kSetupShare) * done);
+          });
+      if (cancelled) return 0;
+      solved = stats.converged;
+    }
   } else if (solver == LinearSolver::BiCGSTAB) {
+    // Eigen's BiCGSTAB with incomplete LU, one column at a time; iterations in chunks of 10 so
+    // progress can be reported (and cancelled) as the residual falls.
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> M = system.toEigen();
     Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::IncompleteLUT<double>> it;
     it.preconditioner().setFillfactor(4);
-    solved = iterate(it);
+    it.setTolerance(kTolerance);
+    it.setMaxIterations(10);
+    it.compute(M);
+    solved = it.info() == Eigen::Success;
+    for (int c = 0; c < 2 && solved; ++c) {
+      Eigen::VectorXd b(n), xc(n);
+      for (int32_t r = 0; r < n; ++r) {
+        b[r] = rhs[2 * r + c];
+        xc[r] = x[2 * r + c];
+      }
+      const double r0 = std::max((M * xc - b).norm() / std::max(b.norm(), 1e-300), 1e-300);
+      for (int chunk = 0;; ++chunk) {
+        xc = it.solveWithGuess(b, xc);
+        if (it.info() == Eigen::Success) break;
+        if (chunk >= kMaxIterations / 10 || !std::isfinite(it.error())) {
+          solved = false;
+          break;
+        }
+        const double done = std::log(r0 / std::max(it.error(), kTolerance)) / std::log(r0 / kTolerance);
+        if (!reportSolve(0.5 * c + 0.5 * done)) return 0;
+      }
+      for (int32_t r = 0; r < n; ++r) x[2 * r + c] = xc[r];
+    }
   }
-  if (cancelled) return 0;
   if (!solved) {
     Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-    lu.compute(Eigen::SparseMatrix<double>(A));
+    lu.compute(A->toEigen());
     if (lu.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
-    x = lu.solve(rhs);
+    Eigen::MatrixXd b(n, 2);
+    for (int32_t r = 0; r < n; ++r) b.row(r) << rhs[2 * r], rhs[2 * r + 1];
+    const Eigen::MatrixXd sol = lu.solve(b);
+    for (int32_t r = 0; r < n; ++r) {
+      x[2 * r] = sol(r, 0);
+      x[2 * r + 1] = sol(r, 1);
+    }
   }
-  for (Eigen::Index r = 0; r < n; ++r) uv[W.rows[r]] = {x(r, 0), x(r, 1)};
-  const double bnorm = rhs.norm();
-  return bnorm > 0 ? (A * x - rhs).norm() / bnorm : (A * x - rhs).norm();
+  for (int32_t r = 0; r < n; ++r) uv[W.rows[r]] = {x[2 * r], x[2 * r + 1]};
+  std::vector<double> Ax(x.size());
+  A->multiply2(x.data(), Ax.data());
+  double res2 = 0, b2 = 0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    res2 += (Ax[i] - rhs[i]) * (Ax[i] - rhs[i]);
+    b2 += rhs[i] * rhs[i];
+  }
+  return b2 > 0 ? std::sqrt(res2 / b2) : std::sqrt(res2);
 }
 
 /// Scales uv (and the polygon) into [0, 1]² keeping the aspect ratio, over referenced vertices.
