@@ -8,6 +8,8 @@
 #
 #   scripts/fuzz.sh [SECONDS]            every harness
 #   FUZZ_HARNESSES="fuzz_obj fuzz_off" scripts/fuzz.sh 600
+#   FUZZ_SEED=1 scripts/fuzz.sh          fixed libFuzzer seed (npm test uses 1, so CI's smoke run
+#                                        explores the same inputs first every time); default random
 #
 # Needs clang, libclang-rt-14-dev, cmake, Eigen and tinyobjloader (scripts/setup.sh installs them).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -84,6 +86,7 @@ for h in "${HARNESSES[@]}"; do
   # 2. Fuzzing over a scratch copy of the seed corpus (plus the passing regression inputs).
   cp -R "$FUZZ_DIR/corpus/$h/." "$WORK/$h/corpus/" 2>/dev/null || true
   dict=()
+  [ -n "${FUZZ_SEED:-}" ] && dict+=("-seed=$FUZZ_SEED")
   [ -f "$FUZZ_DIR/${h#fuzz_}.dict" ] && dict=("-dict=$FUZZ_DIR/${h#fuzz_}.dict")
   echo "fuzz: $h: $regressions regression inputs ($regressions_failed failing), fuzzing ${SECONDS_EACH} s"
   touch "$WORK/$h/started"

@@ -4,7 +4,8 @@
 #   wasm     — WASM build + ctest running the same GoogleTest sources under Node
 #   sanitize — the native suite again under AddressSanitizer + UndefinedBehaviorSanitizer
 #   fuzz     — every libFuzzer harness (tests/fuzz): its saved regression inputs, then a smoke run of
-#              FUZZ_SECONDS (default 30) seconds each; one result per harness
+#              FUZZ_SECONDS (default 30) seconds each with libFuzzer seed FUZZ_SEED (default 1, so
+#              every run starts from the same inputs); one result per harness
 #   js       — node --test on the npm API (tests/js), including installing the packed package
 #   browser  — the page in headless Chromium (tests/e2e)
 # Exits non-zero if any layer fails. Set LAYERS="native wasm" to run a subset.
@@ -69,7 +70,7 @@ for layer in $LAYERS; do
       ;;
     fuzz|browser)
       if [ "$layer" = fuzz ]; then
-        run_layer fuzz bash scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
+        FUZZ_SEED="${FUZZ_SEED:-1}" run_layer fuzz bash scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
       else
         run_layer browser node tests/e2e/browser.test.mjs
       fi
