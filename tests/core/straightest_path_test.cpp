@@ -277,6 +277,37 @@ TEST(StraightestPathTracer, ThousandRandomPairsOnABumpyMeshAllTerminateWithAStat
   EXPECT_GT(reached, 500);  // most pairs on a face-like disk are reachable
 }
 
+TEST(TraceStraightestPaths, WithoutPointsGivesEverySingleTraceBitForBit) {
+  // The samples and an L-shape give walks of very different lengths and endings (reached,
+  // hit_boundary after both walks, same face, the source itself).
+  for (const TriMesh& mesh : {makeSample("face").value(), makeSample("saddle").value(), makeSample("cap").value(),
+                              makeSample("mountain").value(), testing::lShape(6)}) {
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int32_t> vertex(0, mesh.numVertices() - 1);
+    for (int s = 0; s < 6; ++s) {
+      const SurfacePoint source = s % 2 ? SurfacePoint::vertex(vertex(rng)) : randomFacePoints(mesh, 1, 300 + s)[0];
+      auto targets = randomFacePoints(mesh, 40, 400 + s);
+      for (int i = 0; i < 60; ++i) targets.push_back(SurfacePoint::vertex(vertex(rng)));
+      targets.push_back(source);
+      const PathBatch batch = traceStraightestPaths(mesh, source, targets, false);
+      ASSERT_EQ(batch.status.size(), targets.size());
+      EXPECT_TRUE(batch.points.empty());
+      StraightestPathTracer tracer(mesh, source);
+      std::set<TraceStatus> kinds;
+      for (size_t i = 0; i < targets.size(); ++i) {
+        const StraightestPath& path = tracer.trace(targets[i]);
+        ASSERT_EQ(batch.status[i], path.status) << "target " << i;
+        EXPECT_EQ(batch.length[i], path.length) << "target " << i;
+        EXPECT_EQ(batch.facesCrossed[i], path.facesCrossed) << "target " << i;
+        EXPECT_EQ(batch.reversed[i] != 0, path.reversed) << "target " << i;
+        kinds.insert(path.status);
+      }
+      EXPECT_TRUE(kinds.count(TraceStatus::Reached));
+      if (mesh.numVertices() < 300) EXPECT_GE(kinds.size(), 2u) << "the L-shape has unreachable targets";
+    }
+  }
+}
+
 TEST(TraceStraightestPaths, PacksEveryPathWithItsOffsets) {
   const TriMesh mesh = makeSample("mountain").value();
   const SurfacePoint source = SurfacePoint::vertex(centerVertex(mesh));

@@ -8,7 +8,8 @@
 // length ≥ chord. DegeneratePlane exactly when cuttingPlane() has no plane (except a target in a face
 // of the source, joined directly). On a flat mesh with a
 // convex boundary every target is reached along the straight segment (length = chord). Tracing
-// without points gives the same status/length/count; traceStraightestPaths gives the same paths;
+// without points gives the same status/length/count; traceStraightestPaths gives the same paths, and
+// without points the same status/length/count;
 // a small step bound is honoured; the tracer moves a source by at most 1e-6 (snapping it onto a
 // nearby edge or vertex). validateSurfacePoint keeps positions and rejects invalid points.
 #include <fuzzer/FuzzedDataProvider.h>
@@ -231,6 +232,20 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
   }
   FUZZ_CHECK(batch.reached() == reached, "batch.reached()");
+  // Lengths only (as the measured boundary traces): every single trace's result, bit for bit, also
+  // when the targets repeat.
+  std::vector<SurfacePoint> many;
+  for (int r = 0; r < 3; ++r) many.insert(many.end(), targets.begin(), targets.end());
+  const PathBatch lengths = traceStraightestPaths(mesh, source, many, false);
+  FUZZ_CHECK(lengths.status.size() == many.size() && lengths.offsets.size() == many.size() + 1 && lengths.points.empty(),
+             "lengths-only batch sizes");
+  for (size_t i = 0; i < many.size(); ++i) {
+    const Copy& c = paths[i % targets.size()];
+    FUZZ_CHECK(lengths.status[i] == c.status && lengths.length[i] == c.length && lengths.facesCrossed[i] == c.facesCrossed &&
+                   (lengths.reversed[i] != 0) == c.reversed,
+               "lengths-only batch path %zu differs from the single trace (%s vs %s, length %.17g vs %.17g)", i,
+               traceStatusName(lengths.status[i]), traceStatusName(c.status), lengths.length[i], c.length);
+  }
   // Tracing again from the same tracer is deterministic (the stamps are reused).
   for (size_t i = 0; i < targets.size(); ++i) {
     const StraightestPath& p = tracer.trace(targets[i]);
