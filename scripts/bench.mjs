@@ -63,9 +63,49 @@ for (const { mesh, native, wasm } of results) {
   const rate = (r) => (r.faces_crossed / r.stages_ms.traces / 1000).toFixed(1);
   text += `| ${name(mesh)} | ${native.paths} | ${native.reached} | ${native.faces_crossed} | ${rate(native)} | ${rate(wasm)} | ${native.l2.toFixed(4)} | ${native.bijective} |\n`;
 }
+// The issue's targets, checked against the numbers above (and the CGAL run's JSON lines).
+const big = results.find((r) => r.mesh === 'heightfield:1000');
+const cgalRows = existsSync(join(root, 'build/bench/cgal.jsonl'))
+  ? readFileSync(join(root, 'build/bench/cgal.jsonl'), 'utf8').trim().split('\n').filter(Boolean).map((l) => JSON.parse(l))
+  : [];
+const targets = [];
+const check = (what, value, goal, ok) => targets.push(`| ${what} | ${value} | ${goal} | ${ok ? 'met' : '**missed**'} |`);
+if (big) {
+  const n = big.native.stages_ms;
+  const rate = big.native.faces_crossed / n.traces / 1000;
+  check('trace throughput, 1M height field, native', `${rate.toFixed(1)} M faces/s`, '≥ 30 M faces/s', rate >= 30);
+  check('all-boundary traces, 1M height field, native', `${f(n.traces)} ms`, '< 100 ms', n.traces < 100);
+  check('measured-boundary parameterization, 1M height field, native (param_total)', `${f(n.param_total)} ms, bijective: ${big.native.bijective}`,
+    '< 3000 ms, bijective', n.param_total < 3000 && big.native.bijective);
+  check('peak WASM memory, 1M parameterization', `${f(big.wasm.peak_memory_mb, 0)} MB`, '≤ 1536 MB', big.wasm.peak_memory_mb <= 1536);
+}
+let worst = { ratio: 0 };
+for (const { mesh, native, wasm } of results)
+  for (const s of stages)
+    if (native.stages_ms[s] > 10 && wasm.stages_ms[s] / native.stages_ms[s] > worst.ratio)
+      worst = { ratio: wasm.stages_ms[s] / native.stages_ms[s], where: `${s} on ${name(mesh)}` };
+if (worst.where) check('WASM / native, worst stage over 10 ms', `${worst.ratio.toFixed(2)} (${worst.where})`, '≤ 1.5', worst.ratio <= 1.5);
+const cgalBig = cgalRows.filter((r) => r.vertices >= 5000 && r.cgal_circle_mean_value?.ms && r.ours_circle_mean_value?.timings_ms);
+if (cgalBig.length) {
+  let least = { speedup: Infinity };
+  let l2 = 0;
+  for (const r of cgalBig) {
+    const speedup = r.cgal_circle_mean_value.ms / r.ours_circle_mean_value.timings_ms.total;
+    if (speedup < least.speedup) least = { speedup, mesh: r.mesh };
+    l2 = Math.max(l2, r.l2_relative_difference_cgal_vs_ours_circle_mean_value ?? Infinity);
+  }
+  check(`CGAL circle + mean value ÷ ours, least over the ${cgalBig.length} meshes of ≥ 5k vertices`,
+    `${least.speedup.toFixed(1)}× (${least.mesh})`, '≥ 3×', least.speedup >= 3);
+  check('L2 stretch, CGAL vs ours (circle + mean value), largest relative difference', l2.toExponential(1), '≤ 1e-6', l2 <= 1e-6);
+}
+if (targets.length) {
+  text += `\n## Targets\n\n| target | measured | goal | |\n|---|---|---|---|\n${targets.join('\n')}\n`;
+}
 const cgalFile = join(root, 'build/bench/cgal.md');
 if (existsSync(cgalFile)) {
-  text += `\n## Against CGAL 5.5 (scripts/bench-cgal.sh, native)\n\n${readFileSync(cgalFile, 'utf8')}\n`;
+  const cgal = readFileSync(cgalFile, 'utf8');
+  const version = cgal.match(/^## straightest vs CGAL (\S+)/)?.[1] ?? '5.5';
+  text += `\n## Against CGAL ${version} (scripts/bench-cgal.sh, native)\n\n${cgal.replace(/^## .*\n\n?/, '')}\n`;
 } else {
   text += '\n## Against CGAL 5.5\n\nNot run (scripts/bench-cgal.sh did not produce build/bench/cgal.md).\n';
 }
