@@ -51,8 +51,12 @@ int main(int argc, char** argv) {
   int64_t vertices = 0, faces = 0, paths = 0, reached = 0, crossed = 0;
   double l2 = 0;
   bool bijective = false;
-  // One extra run first, not counted: it warms caches and, in WASM, lets the engine tier up from its
-  // baseline compiler to the optimizing one.
+  // Warm-up runs first, not counted: for at least 1.5 s (at least one run). They warm caches and, in
+  // WASM, let the engine tier every hot function up from its baseline compiler to the optimizing one
+  // (V8 does that in the background, by call counts: one short warm-up run left small meshes measured
+  // partly in baseline code, 2-3x slow and different from run to run).
+  int warmups = 0;
+  const auto warmStart = Clock::now();
   for (int r = -1; r < repeats; ++r) {
     auto t = Clock::now();
     auto loaded = open(spec);
@@ -95,7 +99,10 @@ int main(int argc, char** argv) {
     const ParamTimings& pt = p.value().timingsMs;
     l2 = p.value().metrics.l2;
     bijective = p.value().metrics.bijective;
-    if (r < 0) continue;
+    if (r < 0) {
+      if (++warmups < 200 && msSince(warmStart) < 1500) --r;  // stay in the warm-up
+      continue;
+    }
     stage["boundary"].push_back(pt.boundary);
     stage["weights"].push_back(pt.weights);
     stage["solve"].push_back(pt.solve);
