@@ -144,4 +144,34 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
   return W;
 }
 
+void assembleInteriorSystem(const InteriorWeights& W, const std::vector<Vec2>& fixed, CsrMatrix& A,
+                            std::vector<double>& rhs) {
+  const auto n = static_cast<int32_t>(W.rows.size());
+  std::vector<int32_t> index(fixed.size(), -1);  // vertex → interior row
+  for (int32_t r = 0; r < n; ++r) index[W.rows[r]] = r;
+  A.rows = A.cols = n;
+  A.start.assign(1, 0);
+  A.start.reserve(static_cast<size_t>(n) + 1);
+  A.col.clear();
+  A.value.clear();
+  A.col.reserve(W.neighbour.size() + n);
+  A.value.reserve(W.neighbour.size() + n);
+  rhs.assign(2 * static_cast<size_t>(n), 0.0);
+  for (int32_t r = 0; r < n; ++r) {
+    A.col.push_back(r);
+    A.value.push_back(1.0);
+    for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
+      const int32_t j = W.neighbour[k];
+      if (index[j] >= 0) {
+        A.col.push_back(index[j]);
+        A.value.push_back(-W.weight[k]);
+      } else {
+        rhs[2 * r] += W.weight[k] * fixed[j][0];
+        rhs[2 * r + 1] += W.weight[k] * fixed[j][1];
+      }
+    }
+    A.start.push_back(static_cast<int32_t>(A.col.size()));
+  }
+}
+
 }  // namespace straightest

@@ -19,37 +19,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-/// The system I − W of the interior rows (row r = interior vertex W.rows[r]) in compressed rows, and
-/// its two right-hand sides (the fixed boundary's contribution, u and v interleaved). Built straight
-/// from W's rows: a row is its diagonal then its interior neighbours, no triplet sort needed.
-void assembleInterior(const InteriorWeights& W, const std::vector<int32_t>& index, const std::vector<Vec2>& uv,
-                      CsrMatrix& A, std::vector<double>& rhs) {
-  const auto n = static_cast<int32_t>(W.rows.size());
-  A.rows = A.cols = n;
-  A.start.assign(1, 0);
-  A.start.reserve(static_cast<size_t>(n) + 1);
-  A.col.clear();
-  A.value.clear();
-  A.col.reserve(W.neighbour.size() + n);
-  A.value.reserve(W.neighbour.size() + n);
-  rhs.assign(2 * static_cast<size_t>(n), 0.0);
-  for (int32_t r = 0; r < n; ++r) {
-    A.col.push_back(r);
-    A.value.push_back(1.0);
-    for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
-      const int32_t j = W.neighbour[k];
-      if (index[j] >= 0) {
-        A.col.push_back(index[j]);
-        A.value.push_back(-W.weight[k]);
-      } else {
-        rhs[2 * r] += W.weight[k] * uv[j][0];
-        rhs[2 * r + 1] += W.weight[k] * uv[j][1];
-      }
-    }
-    A.start.push_back(static_cast<int32_t>(A.col.size()));
-  }
-}
-
 /// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; u and v together (one multigrid
 /// hierarchy or one factorization, two right-hand sides). Returns the relative residual.
 double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const BoundaryMap& boundary, LinearSolver solver,
@@ -59,11 +28,9 @@ double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const Bounda
   for (size_t i = 0; i < boundary.loop.size(); ++i) uv[boundary.loop[i]] = boundary.polygon[i];
   const auto n = static_cast<int32_t>(W.rows.size());
   if (n == 0) return 0;
-  std::vector<int32_t> index(nv, -1);
-  for (int32_t r = 0; r < n; ++r) index[W.rows[r]] = r;
   CsrMatrix system;
   std::vector<double> rhs;
-  assembleInterior(W, index, uv, system, rhs);
+  assembleInteriorSystem(W, uv, system, rhs);
   // Initial guess for iterative solvers: the boundary's centroid (inside the convex polygon).
   std::vector<double> x(2 * static_cast<size_t>(n));
   double cx = 0, cy = 0;

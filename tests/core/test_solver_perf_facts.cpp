@@ -26,25 +26,7 @@ void circleSystem(const TriMesh& mesh, CsrMatrix& A, std::vector<double>& rhs) {
   const BoundaryMap boundary = circleBoundary(mesh);
   std::vector<Vec2> uv(mesh.numVertices(), Vec2{0, 0});
   for (size_t i = 0; i < boundary.loop.size(); ++i) uv[boundary.loop[i]] = boundary.polygon[i];
-  std::vector<int32_t> index(mesh.numVertices(), -1);
-  for (size_t r = 0; r < W.rows.size(); ++r) index[W.rows[r]] = static_cast<int32_t>(r);
-  A.rows = A.cols = static_cast<int32_t>(W.rows.size());
-  rhs.assign(2 * W.rows.size(), 0.0);
-  for (size_t r = 0; r < W.rows.size(); ++r) {
-    A.col.push_back(static_cast<int32_t>(r));
-    A.value.push_back(1.0);
-    for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
-      const int32_t j = W.neighbour[k];
-      if (index[j] >= 0) {
-        A.col.push_back(index[j]);
-        A.value.push_back(-W.weight[k]);
-      } else {
-        rhs[2 * r] += W.weight[k] * uv[j][0];
-        rhs[2 * r + 1] += W.weight[k] * uv[j][1];
-      }
-    }
-    A.start.push_back(static_cast<int32_t>(A.col.size()));
-  }
+  assembleInteriorSystem(W, uv, A, rhs);
 }
 
 TEST(SolverFacts, TwoColumnMultigridBiCGSTABMatchesSparseLUInFewIterations) {

@@ -14,6 +14,7 @@
 #pragma once
 #include <vector>
 
+#include "straightest/multigrid.hpp"
 #include "straightest/trimesh.hpp"
 
 namespace straightest {
@@ -33,5 +34,13 @@ struct InteriorWeights {
 
 /// Weights for every interior (non-boundary, referenced) vertex of a mesh with boundary.
 InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind);
+
+/// The linear system the weights define, u_i − Σ_j λ_ij u_j = 0 over the interior rows (row r = vertex
+/// W.rows[r]), with the vertices outside W.rows fixed at `fixed` (one entry per mesh vertex; only the
+/// boundary's are read). A = I − W restricted to the interior, in compressed rows (a row is its
+/// diagonal, then its interior neighbours); rhs = the fixed neighbours' contribution, u and v
+/// interleaved (2 values per row).
+void assembleInteriorSystem(const InteriorWeights& W, const std::vector<Vec2>& fixed, CsrMatrix& A,
+                            std::vector<double>& rhs);
 
 }  // namespace straightest
