@@ -85,14 +85,14 @@ for h in "${HARNESSES[@]}"; do
 
   # 2. Fuzzing over a scratch copy of the seed corpus (plus the passing regression inputs).
   cp -R "$FUZZ_DIR/corpus/$h/." "$WORK/$h/corpus/" 2>/dev/null || true
-  dict=()
-  [ -n "${FUZZ_SEED:-}" ] && dict+=("-seed=$FUZZ_SEED")
-  [ -f "$FUZZ_DIR/${h#fuzz_}.dict" ] && dict=("-dict=$FUZZ_DIR/${h#fuzz_}.dict")
+  options=()
+  [ -n "${FUZZ_SEED:-}" ] && options+=("-seed=$FUZZ_SEED")
+  [ -f "$FUZZ_DIR/${h#fuzz_}.dict" ] && options+=("-dict=$FUZZ_DIR/${h#fuzz_}.dict")
   echo "fuzz: $h: $regressions regression inputs ($regressions_failed failing), fuzzing ${SECONDS_EACH} s"
   touch "$WORK/$h/started"
   set +e
   "$bin" -max_total_time="$SECONDS_EACH" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    -artifact_prefix="$artifacts/" "${dict[@]}" "$WORK/$h/corpus" >"$WORK/$h/fuzz.log" 2>&1
+    -artifact_prefix="$artifacts/" "${options[@]}" "$WORK/$h/corpus" >"$WORK/$h/fuzz.log" 2>&1
   rc=$?
   set -e
   runs=$(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$WORK/$h/fuzz.log" | grep -o '[0-9]*$' || true)
