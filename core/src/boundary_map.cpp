@@ -39,7 +39,7 @@ constexpr double kHullCollinear = 1e-9;
 std::vector<size_t> convexHull(const std::vector<Vec2>& pts) {
   std::vector<size_t> order(pts.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pts[a] < pts[b]; });
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pts[a].x < pts[b].x || (pts[a].x == pts[b].x && pts[a].y < pts[b].y); });
   std::vector<size_t> hull(2 * pts.size() + 1);
   size_t k = 0;
   auto turn = [&](size_t o, size_t a, size_t b) {

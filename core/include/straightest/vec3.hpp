@@ -1,4 +1,4 @@
-// vec3.hpp — a small 3D vector of doubles with the handful of operations the geometry needs.
+// vec3.hpp — small 2D and 3D vectors of doubles with the handful of operations the geometry needs.
 // A plain value type (no alignment requirements) so positions can live in flat std::vector<Vec3>
 // and be copied to JS as one contiguous block of doubles.
 #pragma once
@@ -7,8 +7,35 @@
 
 namespace straightest {
 
-/// A point in the parameter plane (u, v).
-using Vec2 = std::array<double, 2>;
+/// A point or vector in the parameter plane (u, v). Indexable ([0] is u) so loops over both
+/// coordinates stay loops.
+struct Vec2 {
+  double x = 0, y = 0;
+
+  constexpr Vec2() = default;
+  constexpr Vec2(double x_, double y_) : x(x_), y(y_) {}
+
+  constexpr Vec2 operator+(const Vec2& o) const { return {x + o.x, y + o.y}; }
+  constexpr Vec2 operator-(const Vec2& o) const { return {x - o.x, y - o.y}; }
+  constexpr Vec2 operator-() const { return {-x, -y}; }
+  constexpr Vec2 operator*(double s) const { return {x * s, y * s}; }
+  constexpr Vec2 operator/(double s) const { return {x / s, y / s}; }
+  Vec2& operator+=(const Vec2& o) { x += o.x; y += o.y; return *this; }
+  Vec2& operator-=(const Vec2& o) { x -= o.x; y -= o.y; return *this; }
+  Vec2& operator*=(double s) { x *= s; y *= s; return *this; }
+  constexpr bool operator==(const Vec2& o) const { return x == o.x && y == o.y; }
+  constexpr bool operator!=(const Vec2& o) const { return !(*this == o); }
+  double& operator[](int i) { return i == 0 ? x : y; }
+  constexpr double operator[](int i) const { return i == 0 ? x : y; }
+};
+
+inline constexpr Vec2 operator*(double s, const Vec2& v) { return v * s; }
+inline constexpr double dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
+/// The z component of the 3D cross product: twice the signed area of the triangle (0, a, b).
+inline constexpr double cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
+inline double norm(const Vec2& a) { return std::hypot(a.x, a.y); }
+inline constexpr double squaredNorm(const Vec2& a) { return dot(a, a); }
+inline bool isFinite(const Vec2& a) { return std::isfinite(a.x) && std::isfinite(a.y); }
 
 struct Vec3 {
   double x = 0, y = 0, z = 0;
