@@ -40,11 +40,11 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
   InteriorWeights W;
   // Reserve once: every interior vertex's ring has one neighbour per face corner at it, so 3·faces
   // bounds the neighbour count (growing 6M-entry vectors by doubling costs copies and page faults).
+  CsrMatrix& M = W.weights;
   W.rows.reserve(mesh.numVertices());
-  W.start.reserve(static_cast<size_t>(mesh.numVertices()) + 1);
-  W.neighbour.reserve(3 * static_cast<size_t>(mesh.numFaces()));
-  W.weight.reserve(3 * static_cast<size_t>(mesh.numFaces()));
-  W.start.push_back(0);
+  M.start.reserve(static_cast<size_t>(mesh.numVertices()) + 1);
+  M.col.reserve(3 * static_cast<size_t>(mesh.numFaces()));
+  M.value.reserve(3 * static_cast<size_t>(mesh.numFaces()));
   std::vector<int32_t> ring;
   std::vector<Vec3> e;
   std::vector<double> l, theta, w;
@@ -136,42 +136,47 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
     }
     W.rows.push_back(v);
     for (size_t k = 0; k < d; ++k) {
-      W.neighbour.push_back(ring[k]);
-      W.weight.push_back(w[k] / sum);
+      M.col.push_back(ring[k]);
+      M.value.push_back(w[k] / sum);
     }
-    W.start.push_back(static_cast<int64_t>(W.neighbour.size()));
+    // int32 is enough: a TriMesh numbers its 3·faces halfedges in int32, and a row holds one entry
+    // per halfedge leaving its vertex.
+    M.start.push_back(static_cast<int32_t>(M.col.size()));
   }
+  M.rows = static_cast<int32_t>(W.rows.size());
+  M.cols = mesh.numVertices();
   return W;
 }
 
-void assembleInteriorSystem(const InteriorWeights& W, const std::vector<Vec2>& fixed, CsrMatrix& A,
-                            std::vector<double>& rhs) {
+InteriorSystem assembleInteriorSystem(const InteriorWeights& W, const std::vector<Vec2>& fixed) {
   const auto n = static_cast<int32_t>(W.rows.size());
+  const CsrMatrix& M = W.weights;
   std::vector<int32_t> index(fixed.size(), -1);  // vertex → interior row
   for (int32_t r = 0; r < n; ++r) index[W.rows[r]] = r;
+  InteriorSystem system;
+  CsrMatrix& A = system.A;
+  std::vector<double>& rhs = system.rhs;
   A.rows = A.cols = n;
-  A.start.assign(1, 0);
   A.start.reserve(static_cast<size_t>(n) + 1);
-  A.col.clear();
-  A.value.clear();
-  A.col.reserve(W.neighbour.size() + n);
-  A.value.reserve(W.neighbour.size() + n);
+  A.col.reserve(M.col.size() + n);
+  A.value.reserve(M.col.size() + n);
   rhs.assign(2 * static_cast<size_t>(n), 0.0);
   for (int32_t r = 0; r < n; ++r) {
     A.col.push_back(r);
     A.value.push_back(1.0);
-    for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
-      const int32_t j = W.neighbour[k];
+    for (int32_t k = M.start[r]; k < M.start[r + 1]; ++k) {
+      const int32_t j = M.col[k];
       if (index[j] >= 0) {
         A.col.push_back(index[j]);
-        A.value.push_back(-W.weight[k]);
+        A.value.push_back(-M.value[k]);
       } else {
-        rhs[2 * r] += W.weight[k] * fixed[j][0];
-        rhs[2 * r + 1] += W.weight[k] * fixed[j][1];
+        rhs[2 * r] += M.value[k] * fixed[j][0];
+        rhs[2 * r + 1] += M.value[k] * fixed[j][1];
       }
     }
     A.start.push_back(static_cast<int32_t>(A.col.size()));
   }
+  return system;
 }
 
 }  // namespace straightest

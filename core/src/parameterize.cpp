@@ -1,16 +1,11 @@
 #include "straightest/parameterize.hpp"
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/Sparse>
-#include <Eigen/OrderingMethods>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "straightest/geodesic_distance.hpp"
-#include "straightest/multigrid.hpp"
 #include "straightest/straightest_path.hpp"
 
 namespace straightest {
@@ -19,18 +14,16 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-/// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; u and v together (one multigrid
-/// hierarchy or one factorization, two right-hand sides). Returns the relative residual.
-double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const BoundaryMap& boundary, LinearSolver solver,
-                     std::vector<Vec2>& uv, const Progress& progress, bool& cancelled) {
+/// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; u and v together. Returns the
+/// relative residual.
+Expected<double> solveInterior(const TriMesh& mesh, const InteriorWeights& W, const BoundaryMap& boundary,
+                               LinearSolver solver, std::vector<Vec2>& uv, const Progress& progress) {
   const int32_t nv = mesh.numVertices();
   uv.assign(nv, Vec2{0, 0});
   for (size_t i = 0; i < boundary.loop.size(); ++i) uv[boundary.loop[i]] = boundary.polygon[i];
   const auto n = static_cast<int32_t>(W.rows.size());
-  if (n == 0) return 0;
-  CsrMatrix system;
-  std::vector<double> rhs;
-  assembleInteriorSystem(W, uv, system, rhs);
+  if (n == 0) return 0.0;
+  InteriorSystem system = assembleInteriorSystem(W, uv);
   // Initial guess for iterative solvers: the boundary's centroid (inside the convex polygon).
   std::vector<double> x(2 * static_cast<size_t>(n));
   double cx = 0, cy = 0;
@@ -39,92 +32,10 @@ double solveInterior(const TriMesh& mesh, const InteriorWeights& W, const Bounda
     x[2 * r] = cx / boundary.polygon.size();
     x[2 * r + 1] = cy / boundary.polygon.size();
   }
-  constexpr double kTolerance = 1e-10;
-  constexpr int kMaxIterations = 1000;  // then give up and use LU
-  // Progress of the solve stage: the multigrid setup is its first kSetupShare, the iterations the rest
-  // (by the logarithm of the residual's fall). Reported fractions never go back.
-  constexpr double kSetupShare = 0.2;
-  double reported = 0;
-  auto reportSolve = [&](double fraction) {
-    reported = std::max(reported, std::clamp(fraction, 0.0, 1.0));
-    if (!report(progress, "solve", reported)) cancelled = true;
-    return !cancelled;
-  };
-  bool solved = false;
-  AggregationMultigrid multigrid;
-  const CsrMatrix* A = &system;
-  if (solver == LinearSolver::Multigrid) {
-    const bool built = multigrid.compute(std::move(system), [&](double f) { return reportSolve(kSetupShare * f); });
-    A = &multigrid.matrix();
-    if (cancelled) return 0;
-    if (built) {
-      std::vector<double> r0(2 * static_cast<size_t>(n));
-      A->multiply2(x.data(), r0.data());
-      double r0Norm2 = 0, bNorm2 = 0;
-      for (size_t i = 0; i < r0.size(); ++i) {
-        r0Norm2 += (rhs[i] - r0[i]) * (rhs[i] - r0[i]);
-        bNorm2 += rhs[i] * rhs[i];
-      }
-      const double start = std::max(std::sqrt(r0Norm2 / std::max(bNorm2, 1e-300)), 2 * kTolerance);
-      const KrylovStats stats =
-          solveTwoColumns(*A, multigrid, rhs, x, kTolerance, kMaxIterations, [&](int, double residual) {
-            const double done = std::log(start / std::max(residual, kTolerance)) / std::log(start / kTolerance);
-            return reportSolve(kSetupShare + (1 - kSetupShare) * done);
-          });
-      if (cancelled) return 0;
-      solved = stats.converged;
-    }
-  } else if (solver == LinearSolver::BiCGSTAB) {
-    // Eigen's BiCGSTAB with incomplete LU, one column at a time; iterations in chunks of 10 so
-    // progress can be reported (and cancelled) as the residual falls.
-    const Eigen::SparseMatrix<double, Eigen::RowMajor> M = system.toEigen();
-    Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::IncompleteLUT<double>> it;
-    it.preconditioner().setFillfactor(4);
-    it.setTolerance(kTolerance);
-    it.setMaxIterations(10);
-    it.compute(M);
-    solved = it.info() == Eigen::Success;
-    for (int c = 0; c < 2 && solved; ++c) {
-      Eigen::VectorXd b(n), xc(n);
-      for (int32_t r = 0; r < n; ++r) {
-        b[r] = rhs[2 * r + c];
-        xc[r] = x[2 * r + c];
-      }
-      const double r0 = std::max((M * xc - b).norm() / std::max(b.norm(), 1e-300), 1e-300);
-      for (int chunk = 0;; ++chunk) {
-        xc = it.solveWithGuess(b, xc);
-        if (it.info() == Eigen::Success) break;
-        if (chunk >= kMaxIterations / 10 || !std::isfinite(it.error())) {
-          solved = false;
-          break;
-        }
-        const double done = std::log(r0 / std::max(it.error(), kTolerance)) / std::log(r0 / kTolerance);
-        if (!reportSolve(0.5 * c + 0.5 * done)) return 0;
-      }
-      for (int32_t r = 0; r < n; ++r) x[2 * r + c] = xc[r];
-    }
-  }
-  if (!solved) {
-    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-    lu.compute(A->toEigen());
-    if (lu.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
-    Eigen::MatrixXd b(n, 2);
-    for (int32_t r = 0; r < n; ++r) b.row(r) << rhs[2 * r], rhs[2 * r + 1];
-    const Eigen::MatrixXd sol = lu.solve(b);
-    for (int32_t r = 0; r < n; ++r) {
-      x[2 * r] = sol(r, 0);
-      x[2 * r + 1] = sol(r, 1);
-    }
-  }
+  auto solved = solve(std::move(system.A), system.rhs, x, solver, progress);
+  if (!solved) return solved.error();
   for (int32_t r = 0; r < n; ++r) uv[W.rows[r]] = {x[2 * r], x[2 * r + 1]};
-  std::vector<double> Ax(x.size());
-  A->multiply2(x.data(), Ax.data());
-  double res2 = 0, b2 = 0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    res2 += (Ax[i] - rhs[i]) * (Ax[i] - rhs[i]);
-    b2 += rhs[i] * rhs[i];
-  }
-  return b2 > 0 ? std::sqrt(res2 / b2) : std::sqrt(res2);
+  return solved.value().residual;
 }
 
 /// Scales uv (and the polygon) into [0, 1]² keeping the aspect ratio, over referenced vertices.
@@ -156,13 +67,6 @@ Expected<BoundaryChoice> parseBoundaryChoice(const std::string& name) {
   if (name == "square") return BoundaryChoice::Square;
   if (name == "auto") return BoundaryChoice::Auto;
   return Error{ErrorCode::InvalidArgument, "unknown boundary '" + name + "' (use measured, circle, square or auto)"};
-}
-
-Expected<LinearSolver> parseLinearSolver(const std::string& name) {
-  if (name == "multigrid") return LinearSolver::Multigrid;
-  if (name == "lu") return LinearSolver::SparseLU;
-  if (name == "bicgstab") return LinearSolver::BiCGSTAB;
-  return Error{ErrorCode::InvalidArgument, "unknown solver '" + name + "' (use multigrid, lu or bicgstab)"};
 }
 
 Expected<WeightKind> parseWeightKind(const std::string& name) {
@@ -248,9 +152,9 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   for (BoundaryMap& boundary : boundaries) {
     t = Clock::now();
     std::vector<Vec2> uv;
-    bool stopped = false;
-    const double residual = solveInterior(mesh, W, boundary, options.solver, uv, progress, stopped);
-    if (stopped) return cancelled;
+    const auto solved = solveInterior(mesh, W, boundary, options.solver, uv, progress);
+    if (!solved) return solved.error().code == ErrorCode::Cancelled ? cancelled : solved.error();
+    const double residual = solved.value();
     result.timingsMs.solve += msSince(t);
     if (!report(progress, "metrics", 0)) return cancelled;
     t = Clock::now();

@@ -166,9 +166,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const InteriorWeights W = interiorWeights(mesh, options.weights);
     for (size_t r = 0; r < W.rows.size(); ++r) {
       double u = 0, v = 0;
-      for (int64_t k = W.start[r]; k < W.start[r + 1]; ++k) {
-        u += W.weight[k] * p.uv[W.neighbour[k]][0];
-        v += W.weight[k] * p.uv[W.neighbour[k]][1];
+      for (int32_t k = W.weights.start[r]; k < W.weights.start[r + 1]; ++k) {
+        u += W.weights.value[k] * p.uv[W.weights.col[k]][0];
+        v += W.weights.value[k] * p.uv[W.weights.col[k]][1];
       }
       const Vec2& x = p.uv[W.rows[r]];
       FUZZ_CHECK(std::hypot(x[0] - u, x[1] - v) <= 1e-8, "%s weights, %s solver: vertex %d is %.3g from the average of its neighbours",

@@ -14,7 +14,7 @@
 #pragma once
 #include <vector>
 
-#include "straightest/multigrid.hpp"
+#include "straightest/csr_matrix.hpp"
 #include "straightest/trimesh.hpp"
 
 namespace straightest {
@@ -23,24 +23,23 @@ enum class WeightKind { ShapePreserving, MeanValue, Cotan, Uniform };
 const char* weightKindName(WeightKind k);
 
 struct InteriorWeights {
-  // CSR rows for the interior vertices in `rows` order: neighbours and weights of row r are
-  // [start[r], start[r+1]).
-  std::vector<int32_t> rows;
-  std::vector<int64_t> start;
-  std::vector<int32_t> neighbour;
-  std::vector<double> weight;
+  std::vector<int32_t> rows;  // the interior vertices: row r of `weights` belongs to vertex rows[r]
+  CsrMatrix weights;          // rows.size() × vertices: row r holds λ_rj at column j, one entry per neighbour
   int64_t uniformFallbacks = 0;
 };
 
 /// Weights for every interior (non-boundary, referenced) vertex of a mesh with boundary.
 InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind);
 
-/// The linear system the weights define, u_i − Σ_j λ_ij u_j = 0 over the interior rows (row r = vertex
-/// W.rows[r]), with the vertices outside W.rows fixed at `fixed` (one entry per mesh vertex; only the
-/// boundary's are read). A = I − W restricted to the interior, in compressed rows (a row is its
-/// diagonal, then its interior neighbours); rhs = the fixed neighbours' contribution, u and v
-/// interleaved (2 values per row).
-void assembleInteriorSystem(const InteriorWeights& W, const std::vector<Vec2>& fixed, CsrMatrix& A,
-                            std::vector<double>& rhs);
+/// The linear system the weights define: u_i − Σ_j λ_ij u_j = 0 over the interior rows (row r = vertex
+/// W.rows[r]), with the vertices outside W.rows fixed.
+struct InteriorSystem {
+  CsrMatrix A;              // I − W restricted to the interior (a row is its diagonal, then its interior neighbours)
+  std::vector<double> rhs;  // the fixed neighbours' contribution, u and v interleaved (2 values per row)
+};
+
+/// Assembles the system with the vertices outside W.rows fixed at `fixed` (one entry per mesh vertex;
+/// only the boundary's are read).
+InteriorSystem assembleInteriorSystem(const InteriorWeights& W, const std::vector<Vec2>& fixed);
 
 }  // namespace straightest

@@ -1,6 +1,7 @@
 // parameterize.hpp — a disk mesh mapped to the plane: a boundary map (measured, circle, square, or
 // auto: all three, keeping the one with the lowest L2 stretch) and interior convex-combination
-// weights, solved with Eigen (one factorization for u and v); judged with texture stretch.
+// weights, solved for u and v together (linear_solve.hpp: multigrid by default); judged with texture
+// stretch.
 //
 // Topology: a single connected disk (one boundary loop, Euler characteristic 1); anything else is a
 // Topology error naming what was found. The source (measured boundary) must be an interior point.
@@ -12,17 +13,12 @@
 
 #include "straightest/boundary_map.hpp"
 #include "straightest/interior_weights.hpp"
+#include "straightest/linear_solve.hpp"
 #include "straightest/texture_stretch.hpp"
 
 namespace straightest {
 
 enum class BoundaryChoice { Measured, Circle, Square, Auto };
-/// Multigrid (default): BiCGSTAB preconditioned by smoothed-aggregation multigrid (multigrid.hpp).
-/// SparseLU: Eigen's direct LU (COLAMD). BiCGSTAB: preconditioned by incomplete LU (ILUT).
-/// An iterative solve that does not converge falls back to SparseLU.
-enum class LinearSolver { Multigrid, SparseLU, BiCGSTAB };
-Expected<LinearSolver> parseLinearSolver(const std::string& name);
-
 Expected<BoundaryChoice> parseBoundaryChoice(const std::string& name);
 Expected<WeightKind> parseWeightKind(const std::string& name);
 

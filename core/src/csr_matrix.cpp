@@ -1,0 +1,92 @@
+// csr_matrix.cpp — the compressed-row kernels: two-column product, transpose, matrix product, row
+// sorting, diagonal.
+#include "straightest/csr_matrix.hpp"
+
+#include "row_accumulator.hpp"
+
+namespace straightest {
+
+void CsrMatrix::multiply2(const double* x, double* y) const {
+  for (int32_t r = 0; r < rows; ++r) {
+    double s0 = 0, s1 = 0;
+    for (int32_t k = start[r]; k < start[r + 1]; ++k) {
+      const double a = value[k];
+      const int32_t j = col[k];
+      s0 += a * x[2 * j];
+      s1 += a * x[2 * j + 1];
+    }
+    y[2 * r] = s0;
+    y[2 * r + 1] = s1;
+  }
+}
+
+CsrMatrix transpose(const CsrMatrix& m) {
+  CsrMatrix t;
+  t.rows = m.cols;
+  t.cols = m.rows;
+  t.start.assign(static_cast<size_t>(t.rows) + 1, 0);
+  for (int32_t c : m.col) ++t.start[c + 1];
+  for (int32_t r = 0; r < t.rows; ++r) t.start[r + 1] += t.start[r];
+  t.col.resize(m.col.size());
+  t.value.resize(m.value.size());
+  std::vector<int32_t> next(t.start.begin(), t.start.end() - 1);
+  for (int32_t r = 0; r < m.rows; ++r)
+    for (int32_t k = m.start[r]; k < m.start[r + 1]; ++k) {
+      const int32_t at = next[m.col[k]]++;
+      t.col[at] = r;
+      t.value[at] = m.value[k];
+    }
+  return t;
+}
+
+CsrMatrix multiply(const CsrMatrix& a, const CsrMatrix& b, size_t expectedNonZeros) {
+  CsrMatrix c;
+  c.rows = a.rows;
+  c.cols = b.cols;
+  c.start.reserve(static_cast<size_t>(a.rows) + 1);
+  c.col.reserve(expectedNonZeros);
+  c.value.reserve(expectedNonZeros);
+  RowAccumulator acc(b.cols);
+  for (int32_t r = 0; r < a.rows; ++r) {
+    for (int32_t k = a.start[r]; k < a.start[r + 1]; ++k) {
+      const int32_t j = a.col[k];
+      const double v = a.value[k];
+      for (int32_t kk = b.start[j]; kk < b.start[j + 1]; ++kk) acc.add(b.col[kk], v * b.value[kk]);
+    }
+    acc.flushInto(c, false);
+  }
+  return c;
+}
+
+std::vector<int32_t> sortRows(CsrMatrix& m) {
+  // Insertion sort: rows are short (a one ring, or a coarse row of a few dozen entries).
+  std::vector<int32_t> split(m.rows);
+  for (int32_t r = 0; r < m.rows; ++r) {
+    const int32_t b = m.start[r], e = m.start[r + 1];
+    for (int32_t k = b + 1; k < e; ++k) {
+      const int32_t c = m.col[k];
+      const double v = m.value[k];
+      int32_t q = k;
+      for (; q > b && m.col[q - 1] > c; --q) {
+        m.col[q] = m.col[q - 1];
+        m.value[q] = m.value[q - 1];
+      }
+      m.col[q] = c;
+      m.value[q] = v;
+    }
+    int32_t k = b;
+    while (k < e && m.col[k] < r) ++k;
+    split[r] = k;
+  }
+  return split;
+}
+
+std::vector<double> diagonal(const CsrMatrix& m) {
+  std::vector<double> d(m.rows, 0.0);
+  for (int32_t i = 0; i < m.rows; ++i)
+    for (int32_t k = m.start[i]; k < m.start[i + 1]; ++k)
+      if (m.col[k] == i) d[i] += m.value[k];
+  return d;
+}
+
+}  // namespace straightest

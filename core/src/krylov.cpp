@@ -1,0 +1,160 @@
+// krylov.cpp — the two-column lockstep BiCGSTAB.
+#include "straightest/krylov.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solve_progress.hpp"
+
+namespace straightest {
+
+Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPreconditioner& M,
+                                      const std::vector<double>& b, std::vector<double>& x, double tolerance,
+                                      int maxIterations, const Progress& progress) {
+  KrylovStats stats;
+  const size_t n = static_cast<size_t>(A.rows);
+  const size_t m = 2 * n;
+  // Loops over the interleaved vectors go two entries at a time with one scalar accumulator per
+  // column: an accumulator array indexed by i & 1 lived in memory, which WebAssembly paid dearly for.
+  double bNorm2[2] = {0, 0};
+  for (size_t i = 0; i < m; i += 2) {
+    bNorm2[0] += b[i] * b[i];
+    bNorm2[1] += b[i + 1] * b[i + 1];
+  }
+  for (int c = 0; c < 2; ++c)
+    if (bNorm2[c] == 0)
+      for (size_t i = c; i < m; i += 2) x[i] = 0;  // the exact solution
+  std::vector<double> r(m), r0(m), p(m, 0.0), v(m, 0.0), y(m), z(m), s(m), t(m);
+  A.multiply2(x.data(), t.data());
+  double rNorm2[2] = {0, 0};
+  for (size_t i = 0; i < m; ++i) r[i] = r0[i] = b[i] - t[i];
+  for (size_t i = 0; i < m; i += 2) {
+    rNorm2[0] += r[i] * r[i];
+    rNorm2[1] += r[i + 1] * r[i + 1];
+  }
+  double r0Norm2[2] = {rNorm2[0], rNorm2[1]};
+  double rho[2] = {1, 1}, alpha[2] = {1, 1}, omega[2] = {1, 1};
+  bool active[2];
+  // Σ u_i w_i per column.
+  auto dot2 = [m](const std::vector<double>& u, const std::vector<double>& w, double out[2]) {
+    double d0 = 0, d1 = 0;
+    for (size_t i = 0; i < m; i += 2) {
+      d0 += u[i] * w[i];
+      d1 += u[i + 1] * w[i + 1];
+    }
+    out[0] = d0;
+    out[1] = d1;
+  };
+  auto relative = [&](int c) { return bNorm2[c] > 0 ? std::sqrt(rNorm2[c] / bNorm2[c]) : 0.0; };
+  auto update = [&]() {
+    for (int c = 0; c < 2; ++c) {
+      stats.relativeResidual[c] = relative(c);
+      active[c] = stats.relativeResidual[c] > tolerance;
+    }
+  };
+  update();
+  auto largerResidual = [&]() { return std::max(stats.relativeResidual[0], stats.relativeResidual[1]); };
+  ResidualProgress reportResidual(progress, largerResidual(), tolerance);
+  constexpr double eps2 = std::numeric_limits<double>::epsilon() * std::numeric_limits<double>::epsilon();
+  while (active[0] || active[1]) {
+    if (stats.iterations >= maxIterations) return stats;
+    ++stats.iterations;
+    // A column that has converged keeps x and r: its α, ω and β are 0, so x += 0, s = r, r = s and
+    // p = r (finite, unlike whatever its stale recurrences would give).
+    double beta[2], rhoOld[2] = {rho[0], rho[1]};
+    double dot[2];
+    dot2(r0, r, dot);
+    for (int c = 0; c < 2; ++c) {
+      rho[c] = dot[c];
+      if (active[c] && std::abs(rho[c]) < eps2 * r0Norm2[c]) {
+        // r has become orthogonal to r0: restart this column's recurrence from its true residual.
+        A.multiply2(x.data(), t.data());
+        double norm2 = 0;
+        for (size_t i = c; i < m; i += 2) {
+          r[i] = r0[i] = b[i] - t[i];
+          norm2 += r[i] * r[i];
+        }
+        rho[c] = r0Norm2[c] = norm2;
+      }
+      beta[c] = active[c] ? (rho[c] / rhoOld[c]) * (alpha[c] / omega[c]) : 0.0;
+    }
+    const double w0 = active[0] ? omega[0] : 0.0, w1 = active[1] ? omega[1] : 0.0;
+    const double b0 = beta[0], b1 = beta[1];
+    for (size_t i = 0; i < m; i += 2) {
+      p[i] = r[i] + b0 * (p[i] - w0 * v[i]);
+      p[i + 1] = r[i + 1] + b1 * (p[i + 1] - w1 * v[i + 1]);
+    }
+    M(p.data(), y.data());
+    A.multiply2(y.data(), v.data());
+    dot2(r0, v, dot);
+    for (int c = 0; c < 2; ++c) alpha[c] = active[c] ? rho[c] / dot[c] : 0.0;
+    double sNorm2[2];
+    {
+      const double al0 = alpha[0], al1 = alpha[1];
+      double n0 = 0, n1 = 0;
+      for (size_t i = 0; i < m; i += 2) {
+        s[i] = r[i] - al0 * v[i];
+        s[i + 1] = r[i + 1] - al1 * v[i + 1];
+        n0 += s[i] * s[i];
+        n1 += s[i + 1] * s[i + 1];
+      }
+      sNorm2[0] = n0;
+      sNorm2[1] = n1;
+    }
+    // Half-step exit: a column whose s is already small enough takes x += α y and stops here, which
+    // often saves the last iteration's second V-cycle.
+    for (int c = 0; c < 2; ++c) {
+      if (!active[c] || !std::isfinite(alpha[c]) || sNorm2[c] > tolerance * tolerance * bNorm2[c]) continue;
+      for (size_t i = c; i < m; i += 2) {
+        x[i] += alpha[c] * y[i];
+        r[i] = s[i];
+      }
+      rNorm2[c] = sNorm2[c];
+      stats.relativeResidual[c] = relative(c);
+      active[c] = false;
+      alpha[c] = omega[c] = 1;  // finite values for the skipped recurrences, as below
+    }
+    if (!active[0] && !active[1]) {
+      reportResidual(largerResidual());
+      break;  // done: a cancellation now would gain nothing
+    }
+    M(s.data(), z.data());
+    A.multiply2(z.data(), t.data());
+    double tt[2], ts[2];
+    dot2(t, t, tt);
+    dot2(t, s, ts);
+    for (int c = 0; c < 2; ++c)
+      if (active[c]) omega[c] = tt[c] > 0 ? ts[c] / tt[c] : 0.0;
+    // Inactive columns (converged before or at the half step) get coefficients 0: x and r stay.
+    const double a0 = active[0] ? alpha[0] : 0.0, a1 = active[1] ? alpha[1] : 0.0;
+    const double o0 = active[0] ? omega[0] : 0.0, o1 = active[1] ? omega[1] : 0.0;
+    double n0 = 0, n1 = 0;
+    for (size_t i = 0; i < m; i += 2) {
+      x[i] += a0 * y[i] + o0 * z[i];
+      x[i + 1] += a1 * y[i + 1] + o1 * z[i + 1];
+      r[i] = s[i] - o0 * t[i];
+      r[i + 1] = s[i + 1] - o1 * t[i + 1];
+      n0 += r[i] * r[i];
+      n1 += r[i + 1] * r[i + 1];
+    }
+    rNorm2[0] = n0;
+    rNorm2[1] = n1;
+    for (int c = 0; c < 2; ++c) {
+      if (!active[c]) continue;
+      if (!std::isfinite(rNorm2[c]) || !std::isfinite(alpha[c]) || !std::isfinite(omega[c])) return stats;
+      // ω = 0 would make the next β divide by zero: the method has broken down for this column.
+      if (omega[c] == 0 && rNorm2[c] > tolerance * tolerance * bNorm2[c]) return stats;
+    }
+    // Keep a converged column's ω and α at values that leave the (skipped) recurrences finite.
+    const bool wasActive[2] = {active[0], active[1]};
+    update();
+    for (int c = 0; c < 2; ++c)
+      if (wasActive[c] && !active[c]) alpha[c] = omega[c] = 1;
+    if (!reportResidual(largerResidual())) return cancelledError("linear solve");
+  }
+  stats.converged = true;
+  return stats;
+}
+
+}  // namespace straightest

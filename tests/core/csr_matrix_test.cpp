@@ -1,0 +1,132 @@
+// The compressed-row kernels agree with the dense matrices they stand for; the interior weights and
+// their system are such matrices.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+#include <utility>
+
+#include "solver_systems.hpp"
+#include "straightest/csr_matrix.hpp"
+#include "straightest/samples.hpp"
+
+namespace straightest {
+namespace {
+
+using testing::Dense;
+using testing::fromRows;
+using testing::toDense;
+
+/// A random rows × cols matrix with unsorted rows and some repeated columns (which count as a sum).
+CsrMatrix randomMatrix(int32_t rows, int32_t cols, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int32_t> column(0, cols - 1), length(0, 5);
+  std::uniform_real_distribution<double> value(-2, 2);
+  std::vector<std::vector<std::pair<int32_t, double>>> entries(rows);
+  for (auto& row : entries) {
+    for (int32_t k = length(rng); k > 0; --k) row.push_back({column(rng), value(rng)});
+    if (!row.empty()) row.push_back({row.front().first, value(rng)});  // a repeated column
+  }
+  return fromRows(cols, entries);
+}
+
+void expectNear(const Dense& a, const Dense& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t r = 0; r < a.size(); ++r) {
+    ASSERT_EQ(a[r].size(), b[r].size());
+    for (size_t c = 0; c < a[r].size(); ++c) EXPECT_NEAR(a[r][c], b[r][c], 1e-12) << r << "," << c;
+  }
+}
+
+TEST(CsrMatrix, TwoColumnProductIsTheDenseProductOfEachColumn) {
+  const CsrMatrix a = randomMatrix(13, 9, 1);
+  const Dense d = toDense(a);
+  std::vector<double> x(2 * 9), y(2 * 13);
+  for (size_t i = 0; i < x.size(); ++i) x[i] = std::sin(1.0 + i);
+  a.multiply2(x.data(), y.data());
+  for (int32_t r = 0; r < 13; ++r)
+    for (int c = 0; c < 2; ++c) {
+      double s = 0;
+      for (int32_t j = 0; j < 9; ++j) s += d[r][j] * x[2 * j + c];
+      EXPECT_NEAR(y[2 * r + c], s, 1e-12);
+    }
+}
+
+TEST(CsrMatrix, TransposeSwapsRowsAndColumnsAndSortsThem) {
+  const CsrMatrix a = randomMatrix(11, 7, 2);
+  const CsrMatrix t = transpose(a);
+  ASSERT_EQ(t.rows, 7);
+  ASSERT_EQ(t.cols, 11);
+  EXPECT_EQ(t.nonZeros(), a.nonZeros());
+  const Dense da = toDense(a), dt = toDense(t);
+  for (int32_t r = 0; r < 11; ++r)
+    for (int32_t c = 0; c < 7; ++c) EXPECT_EQ(dt[c][r], da[r][c]);
+  for (int32_t r = 0; r < t.rows; ++r)
+    for (int32_t k = t.start[r] + 1; k < t.start[r + 1]; ++k) EXPECT_LE(t.col[k - 1], t.col[k]);
+}
+
+TEST(CsrMatrix, ProductIsTheDenseProduct) {
+  const CsrMatrix a = randomMatrix(10, 8, 3), b = randomMatrix(8, 12, 4);
+  const CsrMatrix c = multiply(a, b);
+  ASSERT_EQ(c.rows, 10);
+  ASSERT_EQ(c.cols, 12);
+  const Dense da = toDense(a), db = toDense(b);
+  Dense expected(10, std::vector<double>(12, 0.0));
+  for (int32_t i = 0; i < 10; ++i)
+    for (int32_t k = 0; k < 8; ++k)
+      for (int32_t j = 0; j < 12; ++j) expected[i][j] += da[i][k] * db[k][j];
+  expectNear(toDense(c), expected);
+  // Each row holds a column at most once.
+  for (int32_t r = 0; r < c.rows; ++r)
+    for (int32_t k = c.start[r]; k < c.start[r + 1]; ++k)
+      for (int32_t q = k + 1; q < c.start[r + 1]; ++q) EXPECT_NE(c.col[k], c.col[q]);
+}
+
+TEST(CsrMatrix, SortedRowsKeepTheMatrixAndSplitAtTheDiagonal) {
+  CsrMatrix a = randomMatrix(15, 15, 5);
+  const Dense before = toDense(a);
+  const std::vector<int32_t> split = sortRows(a);
+  EXPECT_EQ(toDense(a), before);
+  ASSERT_EQ(split.size(), 15u);
+  for (int32_t r = 0; r < a.rows; ++r) {
+    for (int32_t k = a.start[r] + 1; k < a.start[r + 1]; ++k) EXPECT_LE(a.col[k - 1], a.col[k]);
+    for (int32_t k = a.start[r]; k < a.start[r + 1]; ++k) EXPECT_EQ(k < split[r], a.col[k] < r) << r;
+  }
+}
+
+TEST(CsrMatrix, DiagonalSumsTheDiagonalEntriesOfEachRow) {
+  const CsrMatrix a = fromRows(3, {{{0, 2.0}, {1, 5.0}, {0, 0.5}}, {{2, 1.0}}, {{2, -3.0}, {0, 4.0}}});
+  EXPECT_EQ(diagonal(a), (std::vector<double>{2.5, 0.0, -3.0}));
+}
+
+TEST(InteriorWeights, AreRowsOfOneRingNeighboursSummingToOneAndTheirSystemKeepsConstants) {
+  const TriMesh mesh = makeSample("face").value();
+  std::set<std::pair<int32_t, int32_t>> edges;
+  for (const Triangle& t : mesh.triangles())
+    for (int k = 0; k < 3; ++k) edges.insert({t[k], t[(k + 1) % 3]}), edges.insert({t[(k + 1) % 3], t[k]});
+  for (WeightKind kind : {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Cotan, WeightKind::Uniform}) {
+    const InteriorWeights W = interiorWeights(mesh, kind);
+    ASSERT_EQ(W.weights.rows, static_cast<int32_t>(W.rows.size()));
+    ASSERT_EQ(W.weights.cols, mesh.numVertices());
+    for (int32_t r = 0; r < W.weights.rows; ++r) {
+      double sum = 0;
+      for (int32_t k = W.weights.start[r]; k < W.weights.start[r + 1]; ++k) {
+        sum += W.weights.value[k];
+        EXPECT_TRUE(edges.count({W.rows[r], W.weights.col[k]})) << "not a neighbour";
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-12) << weightKindName(kind);
+    }
+    // Every vertex fixed at (c, d) outside: the interior at (c, d) solves the system exactly.
+    const std::vector<Vec2> fixed(mesh.numVertices(), Vec2{0.3, -1.7});
+    const InteriorSystem s = assembleInteriorSystem(W, fixed);
+    ASSERT_EQ(s.A.rows, W.weights.rows);
+    ASSERT_EQ(s.A.cols, W.weights.rows);
+    std::vector<double> x(2 * static_cast<size_t>(s.A.rows)), Ax(x.size());
+    for (size_t i = 0; i < x.size(); i += 2) x[i] = 0.3, x[i + 1] = -1.7;
+    s.A.multiply2(x.data(), Ax.data());
+    for (size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(Ax[i], s.rhs[i], 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace straightest
