@@ -1,5 +1,5 @@
-// csr_matrix.cpp — the compressed-row kernels: two-column product, transpose, matrix product, row
-// sorting, diagonal.
+// csr_matrix.cpp — the compressed-row kernels: shape check, two-column product, transpose, matrix
+// product, row sorting, diagonal.
 #include "straightest/csr_matrix.hpp"
 
 #include "row_accumulator.hpp"
@@ -18,6 +18,17 @@ void CsrMatrix::multiply2(const double* x, double* y) const {
     y[2 * r] = s0;
     y[2 * r + 1] = s1;
   }
+}
+
+bool wellFormed(const CsrMatrix& m) {
+  if (m.rows < 0 || m.cols < 0 || m.start.size() != static_cast<size_t>(m.rows) + 1 || m.start.front() != 0 ||
+      m.start.back() < 0 || static_cast<size_t>(m.start.back()) != m.col.size() || m.value.size() != m.col.size())
+    return false;
+  for (int32_t r = 0; r < m.rows; ++r)
+    if (m.start[r + 1] < m.start[r]) return false;
+  for (int32_t c : m.col)
+    if (c < 0 || c >= m.cols) return false;
+  return true;
 }
 
 CsrMatrix transpose(const CsrMatrix& m) {

@@ -6,8 +6,10 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseLU>
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "eigen_bridge.hpp"
 #include "solve_progress.hpp"
@@ -106,12 +108,11 @@ Expected<LinearSolver> parseLinearSolver(const std::string& name) {
 
 Expected<LinearSolveStats> solve(CsrMatrix A, const std::vector<double>& rhs, std::vector<double>& x,
                                  LinearSolver solver, const Progress& progress) {
-  const size_t unknowns = 2 * static_cast<size_t>(A.rows);
-  if (A.rows != A.cols || A.rows < 0 || A.start.size() != static_cast<size_t>(A.rows) + 1 ||
-      rhs.size() != unknowns || x.size() != unknowns)
+  const size_t unknowns = 2 * static_cast<size_t>(std::max(A.rows, 0));
+  if (!wellFormed(A) || A.rows != A.cols || rhs.size() != unknowns || x.size() != unknowns)
     return Error{ErrorCode::InvalidArgument,
-                 "linear solve: needs a square matrix and two values per row in the right-hand side and the "
-                 "solution (" + std::to_string(A.rows) + "×" + std::to_string(A.cols) + ", " +
+                 "linear solve: needs a well-formed square matrix and two values per row in the right-hand side "
+                 "and the solution (got " + std::to_string(A.rows) + " by " + std::to_string(A.cols) + ", " +
                      std::to_string(rhs.size()) + " and " + std::to_string(x.size()) + " values)"};
   LinearSolveStats stats;
   stats.used = solver;

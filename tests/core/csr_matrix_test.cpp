@@ -94,6 +94,25 @@ TEST(CsrMatrix, SortedRowsKeepTheMatrixAndSplitAtTheDiagonal) {
   }
 }
 
+TEST(CsrMatrix, WellFormedTellsArraysThatDescribeAMatrixFromOnesThatDoNot) {
+  CsrMatrix a = randomMatrix(6, 4, 6);
+  EXPECT_TRUE(wellFormed(a));
+  EXPECT_TRUE(wellFormed(CsrMatrix{}));  // 0 × 0
+  CsrMatrix outside = a;
+  outside.col.back() = 4;  // column 4 of a 4-column matrix
+  EXPECT_FALSE(wellFormed(outside));
+  CsrMatrix backwards = fromRows(3, {{{0, 1.0}}, {{1, 1.0}}, {{2, 1.0}}});
+  ASSERT_TRUE(wellFormed(backwards));
+  backwards.start[1] = 3;  // rows [0, 3) and [3, 2)
+  EXPECT_FALSE(wellFormed(backwards));
+  CsrMatrix short_ = a;
+  short_.value.pop_back();
+  EXPECT_FALSE(wellFormed(short_));
+  CsrMatrix rows = a;
+  rows.rows = 7;
+  EXPECT_FALSE(wellFormed(rows));
+}
+
 TEST(CsrMatrix, DiagonalSumsTheDiagonalEntriesOfEachRow) {
   const CsrMatrix a = fromRows(3, {{{0, 2.0}, {1, 5.0}, {0, 0.5}}, {{2, 1.0}}, {{2, -3.0}, {0, 4.0}}});
   EXPECT_EQ(diagonal(a), (std::vector<double>{2.5, 0.0, -3.0}));

@@ -140,7 +140,7 @@ TEST(LinearSolve, StoppingInTheSetupOrInTheIterationsIsACancelledError) {
   }
 }
 
-TEST(LinearSolve, SizesThatDoNotFitAreAnInvalidArgument) {
+TEST(LinearSolve, AMalformedMatrixOrSizesThatDoNotFitAreAnInvalidArgument) {
   const CsrMatrix A = testing::fromRows(2, {{{0, 1.0}}, {{1, 1.0}}});
   std::vector<double> x(4, 0.0);
   auto wrongRhs = solve(A, std::vector<double>(3, 1.0), x, LinearSolver::SparseLU);
@@ -148,6 +148,11 @@ TEST(LinearSolve, SizesThatDoNotFitAreAnInvalidArgument) {
   EXPECT_EQ(wrongRhs.error().code, ErrorCode::InvalidArgument);
   const CsrMatrix notSquare = testing::fromRows(3, {{{0, 1.0}}, {{1, 1.0}}});
   EXPECT_FALSE(solve(notSquare, std::vector<double>(4, 1.0), x, LinearSolver::Multigrid).ok());
+  CsrMatrix outside = A;
+  outside.col[1] = 2;  // column 2 of a 2 × 2 matrix
+  auto malformed = solve(outside, std::vector<double>(4, 1.0), x, LinearSolver::Multigrid);
+  ASSERT_FALSE(malformed.ok());
+  EXPECT_EQ(malformed.error().code, ErrorCode::InvalidArgument);
 }
 
 TEST(LinearSolve, BackendNamesParseAndUnknownOnesAreRefused) {

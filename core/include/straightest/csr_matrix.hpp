@@ -25,6 +25,10 @@ struct CsrMatrix {
   void multiply2(const double* x, double* y) const;
 };
 
+/// True when the arrays describe a rows × cols matrix: start runs from 0 to nonZeros() without going
+/// back, col and value have one entry per non-zero, and every column lies in [0, cols).
+bool wellFormed(const CsrMatrix& a);
+
 /// Aᵀ (rows of the result in column order of A, so every row comes out sorted).
 CsrMatrix transpose(const CsrMatrix& a);
 

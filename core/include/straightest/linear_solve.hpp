@@ -36,7 +36,8 @@ struct LinearSolveStats {
 /// Solves A X = B for square A and two interleaved columns: rhs and x have 2·A.rows entries, x the
 /// iterative backends' initial guess on entry and the solution on return. A is taken by value (move
 /// it in: the multigrid keeps it as its finest level). When every backend fails (a singular A), x is
-/// all zeros and the residual +∞. Sizes that do not fit are an InvalidArgument error.
+/// all zeros and the residual +∞. A malformed matrix or sizes that do not fit are an InvalidArgument
+/// error.
 Expected<LinearSolveStats> solve(CsrMatrix A, const std::vector<double>& rhs, std::vector<double>& x,
                                  LinearSolver solver, const Progress& progress = {});
 
