@@ -95,12 +95,12 @@ struct StraightestPathTracer::Walk {
     out.positions.push_back(x);
   }
 
-  /// X lies on segment PQ, within tol = 1e-6 · mean edge length along and across it (absolute, so a
-  /// very short last segment still finds a target that rounding put just past its end).
+  /// X lies on segment PQ, within tol = kOnSegmentRel · mean edge length along and across it (absolute,
+  /// so a very short last segment still finds a target that rounding put just past its end).
   bool onSegment(const Vec3& X, const Vec3& P, const Vec3& Q) const {
     const Vec3 v = Q - P;
     const double length = norm(v);
-    const double tol = 1e-6 * meanEdge;
+    const double tol = kOnSegmentRel * meanEdge;
     if (!(length > 0)) return norm(X - P) <= tol;
     const double along = dot(X - P, v) / length;
     if (along < -tol || along > length + tol) return false;
@@ -134,7 +134,7 @@ struct StraightestPathTracer::Walk {
   /// exactly and may continue through two faces of v that do not hold D (a fuzzing finding: D at
   /// t = 8e-11 on an edge of v was missed).
   bool endsNextToVertex(int32_t v, const Vec3& Q) {
-    if (dest.kind == SurfacePoint::Kind::Vertex || !(norm(D - Q) <= 1e-6 * meanEdge)) return false;
+    if (dest.kind == SurfacePoint::Kind::Vertex || !(norm(D - Q) <= kOnSegmentRel * meanEdge)) return false;
     bool adjacent = false;
     for (int32_t f : tr.targetFaces_) {
       const Triangle& t = mesh.triangle(f);

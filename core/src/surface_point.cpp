@@ -5,10 +5,6 @@
 
 namespace straightest {
 
-namespace {
-constexpr double kSnap = 1e-12;  // coordinates closer than this to 0 snap to a simpler kind
-}
-
 Vec3 position(const TriMesh& mesh, const SurfacePoint& p) {
   switch (p.kind) {
     case SurfacePoint::Kind::Vertex: return mesh.position(p.index);
@@ -35,10 +31,10 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
     case SurfacePoint::Kind::Edge: {
       if (p.index < 0 || p.index >= 3 * mesh.numFaces())
         return invalid("halfedge " + std::to_string(p.index) + " is out of range");
-      if (!std::isfinite(p.t) || p.t < -kSnap || p.t > 1 + kSnap)
+      if (!std::isfinite(p.t) || p.t < -kExactSnap || p.t > 1 + kExactSnap)
         return invalid("edge parameter " + std::to_string(p.t) + " is outside [0, 1]");
-      if (p.t <= kSnap) return SurfacePoint::vertex(mesh.tail(p.index));
-      if (p.t >= 1 - kSnap) return SurfacePoint::vertex(mesh.head(p.index));
+      if (p.t <= kExactSnap) return SurfacePoint::vertex(mesh.tail(p.index));
+      if (p.t >= 1 - kExactSnap) return SurfacePoint::vertex(mesh.head(p.index));
       return p;
     }
     case SurfacePoint::Kind::Face: {
@@ -47,15 +43,15 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
                        std::to_string(mesh.numFaces()) + " faces)");
       double sum = 0;
       for (double b : p.bary) {
-        if (!std::isfinite(b) || b < -kSnap)
+        if (!std::isfinite(b) || b < -kExactSnap)
           return invalid("barycentric coordinates must be finite and non-negative");
         sum += b;
       }
-      if (std::abs(sum - 1) > 1e-9) return invalid("barycentric coordinates must sum to 1");
+      if (std::abs(sum - 1) > kBarycentricSumTolerance) return invalid("barycentric coordinates must sum to 1");
       std::array<double, 3> b{};
       int zeros = 0, nonzero = 0;
       for (int k = 0; k < 3; ++k) {
-        b[k] = p.bary[k] <= kSnap ? 0.0 : p.bary[k] / sum;
+        b[k] = p.bary[k] <= kExactSnap ? 0.0 : p.bary[k] / sum;
         if (b[k] == 0) ++zeros; else nonzero = k;
       }
       if (zeros == 2) return SurfacePoint::vertex(mesh.triangle(p.index)[nonzero]);

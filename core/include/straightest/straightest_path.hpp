@@ -40,9 +40,6 @@ enum class TraceStatus : uint8_t {
 const char* traceStatusName(TraceStatus s);
 inline constexpr int kTraceStatusCount = 7;
 
-/// Relative tolerance for "the plane passes through this vertex" (times the mean edge length).
-inline constexpr double kOnPlaneRel = 1e-9;
-
 struct TraceOptions {
   bool keepPoints = true;   // store the path's surface points and positions
   int64_t maxSteps = 0;     // 0: 2·faces + vertices + 16 (more than any simple walk can take)
@@ -57,8 +54,6 @@ struct StraightestPath {
   std::vector<Vec3> positions;       // their 3D positions
 };
 
-/// Barycentric coordinates / edge parameter below which a source is moved onto the edge or vertex.
-inline constexpr double kSnapSource = 1e-6;
 /// The source point a tracer really starts from: p moved onto an edge or vertex within kSnapSource.
 SurfacePoint snapSource(const TriMesh& mesh, SurfacePoint p);
 

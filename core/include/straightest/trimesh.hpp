@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "straightest/error.hpp"
+#include "straightest/tolerances.hpp"
 #include "straightest/vec3.hpp"
 
 namespace straightest {
@@ -117,14 +118,5 @@ class TriMesh {
 /// non-negative integer before TriMesh::build does the rest.
 Expected<TriMesh> meshFromFlatArrays(const std::vector<double>& xyz, const std::vector<double>& indices,
                                      const BuildLimits& limits = {});
-
-/// Largest accepted |coordinate|. The algorithms form products of up to four coordinates (a face's
-/// squared area, |e1 × e2|²); with |x| <= 1e50 these stay below ~1e202, far from overflow, while 1e100
-/// already gave faces of infinite area (a fuzzing finding). No real mesh comes near either bound.
-inline constexpr double kMaxCoordinate = 1e50;
-
-/// Relative threshold below which a face counts as degenerate: |e1 × e2| <= kDegenerateRel * |e1| * |e2|
-/// (the sine of the face's angle at its first corner is below it) or an edge has zero length.
-inline constexpr double kDegenerateRel = 1e-12;
 
 }  // namespace straightest
