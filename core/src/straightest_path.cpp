@@ -60,27 +60,6 @@ inline void prefetch(const T* p) {
 
 }  // namespace
 
-/// A source within kSnapSource (barycentric or edge parameter) of an edge or a vertex is moved onto
-/// it: leaving a point 1e-9 away from an edge, the walk's first crossing would be closer than its
-/// rounding tolerance and could be missed.
-SurfacePoint snapSource(const TriMesh& mesh, SurfacePoint p) {
-  if (p.kind == SurfacePoint::Kind::Edge) {
-    if (p.t < kSnapSource) return SurfacePoint::vertex(mesh.tail(p.index));
-    if (p.t > 1 - kSnapSource) return SurfacePoint::vertex(mesh.head(p.index));
-    return p;
-  }
-  if (p.kind != SurfacePoint::Kind::Face) return p;
-  if (std::min({p.bary[0], p.bary[1], p.bary[2]}) >= kSnapSource) return p;
-  double sum = 0;
-  for (double& b : p.bary) {
-    if (b < kSnapSource) b = 0;
-    sum += b;
-  }
-  for (double& b : p.bary) b /= sum;
-  auto snapped = validateSurfacePoint(mesh, p);  // turns zero coordinates into an edge or a vertex
-  return snapped ? snapped.value() : p;
-}
-
 struct StraightestPathTracer::Walk {
   StraightestPathTracer& tr;
   const TriMesh& mesh;
@@ -319,7 +298,7 @@ struct StraightestPathTracer::Walk {
 
 StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source,
                                              const TraceOptions& options)
-    : mesh_(mesh), source_(snapSource(mesh, source)), options_(options) {
+    : mesh_(mesh), source_(canonical(mesh, source, kSnapSource)), options_(options) {
   sourcePosition_ = position(mesh, source_);
   base_ = basePlane(mesh, source_);
   meanEdge_ = mesh.meanEdgeLength();

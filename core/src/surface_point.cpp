@@ -1,3 +1,4 @@
+// Surface points: positions, the canonical form with its one snapping rule, validation, incident faces.
 #include "straightest/surface_point.hpp"
 
 #include <cmath>
@@ -18,6 +19,39 @@ Vec3 position(const TriMesh& mesh, const SurfacePoint& p) {
   return {};
 }
 
+SurfacePoint canonical(const TriMesh& mesh, SurfacePoint p, double snapTolerance) {
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: return p;
+    case SurfacePoint::Kind::Edge: {
+      if (p.t <= snapTolerance) return SurfacePoint::vertex(mesh.tail(p.index));
+      if (p.t >= 1 - snapTolerance) return SurfacePoint::vertex(mesh.head(p.index));
+      const int32_t twin = mesh.twin(p.index);
+      if (twin >= 0 && twin < p.index) return SurfacePoint::edge(twin, 1 - p.t);
+      return p;
+    }
+    case SurfacePoint::Kind::Face: {
+      const std::array<double, 3>& b = p.bary;
+      if (b[0] > snapTolerance && b[1] > snapTolerance && b[2] > snapTolerance) return p;
+      const double sum = b[0] + b[1] + b[2];
+      std::array<double, 3> kept{};
+      int zeros = 0, nonzero = 0;
+      for (int k = 0; k < 3; ++k) {
+        kept[k] = b[k] <= snapTolerance ? 0.0 : b[k] / sum;
+        if (kept[k] == 0) ++zeros; else nonzero = k;
+      }
+      if (zeros == 2) return SurfacePoint::vertex(mesh.triangle(p.index)[nonzero]);
+      if (zeros == 1)
+        for (int k = 0; k < 3; ++k)
+          if (kept[k] == 0) {  // on the edge opposite corner k: halfedge from corner k+1 to corner k+2
+            const int a = (k + 1) % 3, c = (k + 2) % 3;
+            return canonical(mesh, SurfacePoint::edge(3 * p.index + a, kept[c] / (kept[a] + kept[c])), 0.0);
+          }
+      return p;  // every coordinate zero: not a point (validateSurfacePoint refuses it before)
+    }
+  }
+  return p;
+}
+
 Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePoint& p) {
   auto invalid = [](const std::string& m) { return Error{ErrorCode::InvalidArgument, m}; };
   switch (p.kind) {
@@ -33,9 +67,7 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
         return invalid("halfedge " + std::to_string(p.index) + " is out of range");
       if (!std::isfinite(p.t) || p.t < -kExactSnap || p.t > 1 + kExactSnap)
         return invalid("edge parameter " + std::to_string(p.t) + " is outside [0, 1]");
-      if (p.t <= kExactSnap) return SurfacePoint::vertex(mesh.tail(p.index));
-      if (p.t >= 1 - kExactSnap) return SurfacePoint::vertex(mesh.head(p.index));
-      return p;
+      return canonical(mesh, p, kExactSnap);
     }
     case SurfacePoint::Kind::Face: {
       if (p.index < 0 || p.index >= mesh.numFaces())
@@ -48,21 +80,10 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
         sum += b;
       }
       if (std::abs(sum - 1) > kBarycentricSumTolerance) return invalid("barycentric coordinates must sum to 1");
-      std::array<double, 3> b{};
-      int zeros = 0, nonzero = 0;
-      for (int k = 0; k < 3; ++k) {
-        b[k] = p.bary[k] <= kExactSnap ? 0.0 : p.bary[k] / sum;
-        if (b[k] == 0) ++zeros; else nonzero = k;
-      }
-      if (zeros == 2) return SurfacePoint::vertex(mesh.triangle(p.index)[nonzero]);
-      if (zeros == 1) {
-        for (int k = 0; k < 3; ++k)
-          if (b[k] == 0) {  // on the edge opposite corner k: halfedge from corner k+1 to corner k+2
-            const int a = (k + 1) % 3, c = (k + 2) % 3;
-            return SurfacePoint::edge(3 * p.index + a, b[c] / (b[a] + b[c]));
-          }
-      }
-      return SurfacePoint::face(p.index, b);
+      SurfacePoint q = canonical(mesh, p, kExactSnap);
+      if (q.kind == SurfacePoint::Kind::Face)
+        for (double& b : q.bary) b /= sum;
+      return q;
     }
   }
   return invalid("unknown surface point kind");

@@ -54,14 +54,13 @@ struct StraightestPath {
   std::vector<Vec3> positions;       // their 3D positions
 };
 
-/// The source point a tracer really starts from: p moved onto an edge or vertex within kSnapSource.
-SurfacePoint snapSource(const TriMesh& mesh, SurfacePoint p);
-
 /// Traces straightest paths from one source; reuse it for many destinations (shared setup).
 class StraightestPathTracer {
  public:
-  /// The source must be a valid surface point (see validateSurfacePoint). A source within 1e-6
-  /// (barycentric or edge parameter) of an edge or vertex is moved onto it; source() is the point used.
+  /// The source must be a valid surface point (see validateSurfacePoint). It is moved onto an edge or
+  /// vertex within kSnapSource (barycentric or edge parameter): source() is canonical(mesh, source,
+  /// kSnapSource), the point used. (Leaving a point 1e-9 away from an edge, the walk's first crossing
+  /// would be closer than its on-segment tolerance and could be missed.)
   StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options = {});
 
   const BasePlane& base() const { return base_; }
