@@ -52,12 +52,7 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
     if (mesh.vertexHalfedge(v) < 0 || mesh.isBoundaryVertex(v)) continue;
     // One ring in counter-clockwise order: neighbours k and k+1 span face(h_k).
     ring.clear();
-    const int32_t start = mesh.vertexHalfedge(v);
-    int32_t h = start;
-    do {
-      ring.push_back(mesh.head(h));
-      h = mesh.twin(TriMesh::prev(h));
-    } while (h >= 0 && h != start && ring.size() <= static_cast<size_t>(mesh.numFaces()));
+    for (int32_t w : mesh.vertexNeighbours(v)) ring.push_back(w);
     const size_t d = ring.size();
     const Vec3 p = mesh.position(v);
     e.resize(d);

@@ -92,16 +92,9 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
 void incidentFaces(const TriMesh& mesh, const SurfacePoint& p, std::vector<int32_t>& out) {
   out.clear();
   switch (p.kind) {
-    case SurfacePoint::Kind::Vertex: {
-      const int32_t start = mesh.vertexHalfedge(p.index);
-      int32_t h = start;
-      while (h >= 0) {
-        out.push_back(TriMesh::face(h));
-        h = mesh.twin(TriMesh::prev(h));
-        if (h == start) break;
-      }
+    case SurfacePoint::Kind::Vertex:
+      for (int32_t f : mesh.vertexFaces(p.index)) out.push_back(f);
       break;
-    }
     case SurfacePoint::Kind::Edge:
       out.push_back(TriMesh::face(p.index));
       if (mesh.twin(p.index) >= 0) out.push_back(TriMesh::face(mesh.twin(p.index)));
