@@ -60,8 +60,52 @@ inline void prefetch(const T* p) {
 
 }  // namespace
 
-struct StraightestPathTracer::Walk {
-  StraightestPathTracer& tr;
+/// The tracer's state: what is set up once around the source, and the buffers every walk reuses.
+struct StraightestPathTracer::Impl {
+  Impl(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options);
+  const StraightestPath& trace(const SurfacePoint& destination);
+
+  struct Walk;
+  void walk(const SurfacePoint& destination, const Vec3& direction, bool forwardSide, StraightestPath& out);
+  double signedDistance(int32_t v) const;
+
+  /// A few faces (those around a point), tested per step without touching per-face memory: most
+  /// faces fail the index-range check; the rest are compared one by one (or by binary search).
+  struct FaceSet {
+    std::vector<int32_t> faces;  // sorted
+    int32_t lo = 0, hi = -1;
+    void assign(const std::vector<int32_t>& f);
+    bool contains(int32_t f) const {
+      if (f < lo || f > hi) return false;
+      if (faces.size() > 16) return std::binary_search(faces.begin(), faces.end(), f);
+      for (int32_t x : faces)
+        if (x == f) return true;
+      return false;
+    }
+  };
+
+  const TriMesh& mesh_;
+  SurfacePoint source_;
+  Vec3 sourcePosition_;
+  TraceOptions options_;
+  BasePlane base_;
+  double onPlaneTolerance_ = 0;
+  double meanEdge_ = 1;
+  int64_t maxSteps_ = 0;
+  std::vector<int32_t> sourceFaces_;
+  std::vector<int32_t> targetFaces_;
+  FaceSet sourceSet_, targetSet_;
+  bool isSourceFace(int32_t f) const { return sourceSet_.contains(f); }
+  bool isTargetFace(int32_t f) const { return targetSet_.contains(f); }
+  std::vector<int32_t> fan_;  // scratch: faces around the current vertex
+  std::vector<uint32_t> vertexStamp_;  // == epoch_ for vertices passed in the current walk
+  uint32_t epoch_ = 0;
+  CuttingPlane plane_{};
+  StraightestPath result_, second_;
+};
+
+struct StraightestPathTracer::Impl::Walk {
+  Impl& tr;
   const TriMesh& mesh;
   const SurfacePoint& dest;
   Vec3 D;
@@ -298,6 +342,17 @@ struct StraightestPathTracer::Walk {
 
 StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source,
                                              const TraceOptions& options)
+    : impl_(std::make_unique<Impl>(mesh, source, options)) {}
+StraightestPathTracer::~StraightestPathTracer() = default;
+StraightestPathTracer::StraightestPathTracer(StraightestPathTracer&&) noexcept = default;
+StraightestPathTracer& StraightestPathTracer::operator=(StraightestPathTracer&&) noexcept = default;
+const BasePlane& StraightestPathTracer::base() const { return impl_->base_; }
+const SurfacePoint& StraightestPathTracer::source() const { return impl_->source_; }
+const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destination) {
+  return impl_->trace(destination);
+}
+
+StraightestPathTracer::Impl::Impl(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options)
     : mesh_(mesh), source_(canonical(mesh, source, kSnapSource)), options_(options) {
   sourcePosition_ = position(mesh, source_);
   base_ = basePlane(mesh, source_);
@@ -309,21 +364,20 @@ StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfaceP
   sourceSet_.assign(sourceFaces_);
 }
 
-void StraightestPathTracer::FaceSet::assign(const std::vector<int32_t>& f) {
+void StraightestPathTracer::Impl::FaceSet::assign(const std::vector<int32_t>& f) {
   faces = f;
   std::sort(faces.begin(), faces.end());
   lo = faces.empty() ? 0 : faces.front();
   hi = faces.empty() ? -1 : faces.back();
 }
 
-double StraightestPathTracer::signedDistance(int32_t v) const {
+double StraightestPathTracer::Impl::signedDistance(int32_t v) const {
   const double d = dot(plane_.normal, mesh_.position(v) - plane_.origin);
   return std::abs(d) <= onPlaneTolerance_ ? 0.0 : d;
 }
 
-void StraightestPathTracer::walk(const SurfacePoint& destination, const CuttingPlane& plane, const Vec3& direction,
-                                 bool forwardSide, StraightestPath& out) {
-  (void)plane;
+void StraightestPathTracer::Impl::walk(const SurfacePoint& destination, const Vec3& direction, bool forwardSide,
+                                       StraightestPath& out) {
   out.status = TraceStatus::NoExit;
   out.length = 0;
   out.facesCrossed = 0;
@@ -338,7 +392,7 @@ void StraightestPathTracer::walk(const SurfacePoint& destination, const CuttingP
   w.run(direction, forwardSide);
 }
 
-const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destination) {
+const StraightestPath& StraightestPathTracer::Impl::trace(const SurfacePoint& destination) {
   StraightestPath& r = result_;
   const Vec3 D = position(mesh_, destination);
   const Vec3 SD = D - sourcePosition_;
@@ -379,9 +433,9 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
   plane_ = *plane;
   targetSet_.assign(targetFaces_);
   const Vec3 t = normalized(SD - base_.normal * dot(base_.normal, SD));
-  walk(destination, plane_, t, true, r);
+  walk(destination, t, true, r);
   if (r.status != TraceStatus::Reached) {
-    walk(destination, plane_, -t, false, second_);
+    walk(destination, -t, false, second_);
     if (second_.status == TraceStatus::Reached) std::swap(result_, second_);
   }
   return result_;
