@@ -11,11 +11,9 @@
 namespace straightest {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
-Vec2 sub(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
-double len(const Vec2& a) { return std::hypot(a[0], a[1]); }
+/// A point of the measured polygon lies on a hull edge (and at a hull corner) when it is within this
+/// fraction of the edge's length of it: the radial projection puts it there up to rounding.
+constexpr double kOnHullRel = 1e-9;
 
 /// Cumulative 3D edge length along the loop, normalized to [0, 1) (first vertex at 0).
 std::vector<double> arcLengthParameter(const TriMesh& mesh, const std::vector<int32_t>& loop) {
@@ -43,9 +41,9 @@ std::vector<size_t> convexHull(const std::vector<Vec2>& pts) {
   std::vector<size_t> hull(2 * pts.size() + 1);
   size_t k = 0;
   auto turn = [&](size_t o, size_t a, size_t b) {
-    const Vec2 u = sub(pts[a], pts[o]), v = sub(pts[b], pts[o]);
-    const double c = cross2(u, v);
-    return c > kHullCollinear * len(u) * len(v) ? c : 0.0;
+    const Vec2 u = pts[a] - pts[o], v = pts[b] - pts[o];
+    const double c = cross(u, v);
+    return c > kHullCollinear * norm(u) * norm(v) ? c : 0.0;
   };
   for (size_t i : order) {
     while (k >= 2 && turn(hull[k - 2], hull[k - 1], i) <= 0) --k;
@@ -93,12 +91,12 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
   std::vector<Vec2> hull(h);
   for (size_t j = 0; j < h; ++j) hull[j] = points[hullIdx[j]];
   for (size_t j = 0; j < h; ++j) {  // the origin must be strictly inside (left of every CCW edge)
-    const Vec2 e = sub(hull[(j + 1) % h], hull[j]);
-    if (!(cross2(e, sub({0, 0}, hull[j])) > 1e-14 * len(e) * len(e))) return -1;
+    const Vec2 e = hull[(j + 1) % h] - hull[j];
+    if (!(cross(e, Vec2{} - hull[j]) > 1e-14 * norm(e) * norm(e))) return -1;
   }
   // Hull vertices in angular order around the origin, starting at the smallest angle.
   std::vector<double> angle(h);
-  for (size_t j = 0; j < h; ++j) angle[j] = std::atan2(hull[j][1], hull[j][0]);
+  for (size_t j = 0; j < h; ++j) angle[j] = std::atan2(hull[j].y, hull[j].x);
   const auto first = std::min_element(angle.begin(), angle.end()) - angle.begin();
   std::rotate(hull.begin(), hull.begin() + first, hull.end());
   std::rotate(angle.begin(), angle.begin() + first, angle.end());
@@ -109,29 +107,29 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
   std::vector<double> along(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
     Vec2& p = points[i];
-    const double r = len(p);
+    const double r = norm(p);
     if (!(r > 0)) continue;
-    const double a = std::atan2(p[1], p[0]);
+    const double a = std::atan2(p.y, p.x);
     size_t j = static_cast<size_t>(std::upper_bound(angle.begin(), angle.end(), a) - angle.begin());
     j = (j + h - 1) % h;
     const Vec2& A = hull[j];
-    const Vec2 E = sub(hull[(j + 1) % h], A);
-    const Vec2 d{p[0] / r, p[1] / r};
-    const double rHull = cross2(A, E) / cross2(d, E);  // distance along the ray to the edge's line
+    const Vec2 E = hull[(j + 1) % h] - A;
+    const Vec2 d = p / r;
+    const double rHull = cross(A, E) / cross(d, E);  // distance along the ray to the edge's line
     // Every point goes exactly onto the hull: those inside move out (counted), and those the
     // collinearity tolerance left a hair outside move in.
     if (r < rHull * (1 - 1e-12)) ++moved;
-    p = {d[0] * rHull, d[1] * rHull};
-    const double L2 = E[0] * E[0] + E[1] * E[1];
-    const double t = ((p[0] - A[0]) * E[0] + (p[1] - A[1]) * E[1]) / L2;
-    const double off = std::abs(cross2(E, sub(p, A))) / std::sqrt(L2);
-    if (off > 1e-9 * std::sqrt(L2)) continue;
-    if (t > 1e-9 && t < 1 - 1e-9) {
+    p = d * rHull;
+    const double L2 = squaredNorm(E);
+    const double t = dot(p - A, E) / L2;
+    const double off = std::abs(cross(E, p - A)) / std::sqrt(L2);
+    if (off > kOnHullRel * std::sqrt(L2)) continue;
+    if (t > kOnHullRel && t < 1 - kOnHullRel) {
       edgeOf[i] = static_cast<int64_t>(j);
       along[i] = t;
-    } else if (t <= 1e-9 && t > -1e-9) {
+    } else if (t <= kOnHullRel && t > -kOnHullRel) {
       cornerOf[i] = static_cast<int64_t>(j);
-    } else if (t >= 1 - 1e-9 && t < 1 + 1e-9) {
+    } else if (t >= 1 - kOnHullRel && t < 1 + kOnHullRel) {
       cornerOf[i] = static_cast<int64_t>((j + 1) % h);
     }
   }
@@ -152,17 +150,17 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
   // 3. Lift the points of those edges onto a parabola; its end slopes stay below a third of the
   //    hull's turning angle at each end, so the polygon stays convex.
   auto turnAngle = [&](size_t j) {
-    const Vec2 a = sub(hull[j], hull[(j + h - 1) % h]), b = sub(hull[(j + 1) % h], hull[j]);
-    return std::atan2(cross2(a, b), a[0] * b[0] + a[1] * b[1]);
+    const Vec2 a = hull[j] - hull[(j + h - 1) % h], b = hull[(j + 1) % h] - hull[j];
+    return std::atan2(cross(a, b), dot(a, b));
   };
   for (size_t i = 0; i < n; ++i) {
     const int64_t j = edgeOf[i];
     if (j < 0 || !bulgeEdge[j]) continue;
     const double slope = std::min({kBulge, std::tan(turnAngle(j) / 3), std::tan(turnAngle((j + 1) % h) / 3)});
-    const Vec2 E = sub(hull[(j + 1) % h], hull[j]);
-    const double L = len(E), t = along[i];
+    const Vec2 E = hull[(j + 1) % h] - hull[j];
+    const double L = norm(E), t = along[i];
     const double lift = slope * L * t * (1 - t);
-    points[i] = {points[i][0] + E[1] / L * lift, points[i][1] - E[0] / L * lift};
+    points[i] += Vec2{E.y, -E.x} / L * lift;  // outward: the hull runs counter-clockwise
   }
   return moved;
 }
@@ -233,10 +231,10 @@ BoundaryMap squareBoundary(const TriMesh& mesh) {
     const double f = p - side;
     // Centred at the origin for convexify(); shifted back to [0, 1]² afterwards.
     const Vec2 q = side == 0 ? Vec2{f, 0} : side == 1 ? Vec2{1, f} : side == 2 ? Vec2{1 - f, 1} : Vec2{0, 1 - f};
-    map.polygon.push_back({q[0] - 0.5, q[1] - 0.5});
+    map.polygon.push_back(q - Vec2{0.5, 0.5});
   }
   convexify(map.polygon, boundaryChords(mesh, map.loop));  // lifts sides only where triangles collapse
-  for (Vec2& q : map.polygon) q = {q[0] + 0.5, q[1] + 0.5};
+  for (Vec2& q : map.polygon) q += Vec2{0.5, 0.5};
   return map;
 }
 

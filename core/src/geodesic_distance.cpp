@@ -108,14 +108,7 @@ EdgeGraph edgeGraph(const TriMesh& mesh) {
       g.neighbour[used] = w;
       g.length[used++] = norm(mesh.position(w) - pv);
     };
-    const int32_t first = mesh.vertexHalfedge(v);
-    for (int32_t h = first; h >= 0;) {
-      add(mesh.head(h));
-      const int32_t p = TriMesh::prev(h);
-      if (mesh.twin(p) < 0) add(mesh.tail(p));
-      h = mesh.twin(p);
-      if (h == first) break;
-    }
+    for (int32_t w : mesh.vertexNeighbours(v)) add(w);
   }
   g.start[nv] = static_cast<int32_t>(used);
   return g;

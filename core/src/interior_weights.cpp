@@ -5,8 +5,6 @@
 namespace straightest {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-
 double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
 
 double cotAngle(const Vec3& a, const Vec3& b) {
@@ -15,11 +13,12 @@ double cotAngle(const Vec3& a, const Vec3& b) {
 }
 
 /// Barycentric coordinates of the origin in the 2D triangle (a, b, c); false if degenerate.
-bool originBarycentric(const double a[2], const double b[2], const double c[2], double out[3]) {
-  const double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+bool originBarycentric(const Vec2& a, const Vec2& b, const Vec2& c, double out[3]) {
+  const Vec2 ab = b - a, ac = c - a, ao = Vec2{} - a;
+  const double det = cross(ab, ac);
   if (!(std::abs(det) > 0)) return false;
-  out[1] = ((0 - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (0 - a[1])) / det;
-  out[2] = ((b[0] - a[0]) * (0 - a[1]) - (0 - a[0]) * (b[1] - a[1])) / det;
+  out[1] = cross(ao, ac) / det;
+  out[2] = cross(ab, ao) / det;
   out[0] = 1 - out[1] - out[2];
   return true;
 }
@@ -48,17 +47,12 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
   std::vector<int32_t> ring;
   std::vector<Vec3> e;
   std::vector<double> l, theta, w;
-  std::vector<std::array<double, 2>> q;
+  std::vector<Vec2> q;
   for (int32_t v = 0; v < mesh.numVertices(); ++v) {
     if (mesh.vertexHalfedge(v) < 0 || mesh.isBoundaryVertex(v)) continue;
     // One ring in counter-clockwise order: neighbours k and k+1 span face(h_k).
     ring.clear();
-    const int32_t start = mesh.vertexHalfedge(v);
-    int32_t h = start;
-    do {
-      ring.push_back(mesh.head(h));
-      h = mesh.twin(TriMesh::prev(h));
-    } while (h >= 0 && h != start && ring.size() <= static_cast<size_t>(mesh.numFaces()));
+    for (int32_t w : mesh.vertexNeighbours(v)) ring.push_back(w);
     const size_t d = ring.size();
     const Vec3 p = mesh.position(v);
     e.resize(d);
@@ -102,7 +96,7 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
           q.resize(d);
           double psi = 0;
           for (size_t k = 0; k < d; ++k) {
-            q[k] = {l[k] * std::cos(psi), l[k] * std::sin(psi)};
+            q[k] = Vec2{std::cos(psi), std::sin(psi)} * l[k];
             psi += theta[k] * kTwoPi / thetaSum;
           }
           for (size_t k = 0; k < d && ok; ++k) {
@@ -110,7 +104,7 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
             for (size_t s = 1, a = next(k); s + 1 < d && !found; ++s, a = next(a)) {
               const size_t b = next(a);  // the segment (q_a, q_b), a = k + s
               double mu[3];
-              if (!originBarycentric(q[k].data(), q[a].data(), q[b].data(), mu)) continue;
+              if (!originBarycentric(q[k], q[a], q[b], mu)) continue;
               if (mu[0] >= -1e-12 && mu[1] >= -1e-12 && mu[2] >= -1e-12) {
                 w[k] += mu[0];
                 w[a] += mu[1];

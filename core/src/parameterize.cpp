@@ -110,7 +110,7 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
     if (!p) return p.error();
     // The tracer moves a source within kSnapSource of an edge or vertex onto it; check the point it
     // will really use (a point 2e-8 from the boundary would otherwise become a boundary vertex).
-    result.source = snapSource(mesh, p.value());
+    result.source = canonical(mesh, p.value(), kSnapSource);
     const SurfacePoint& s = result.source;
     const bool onBoundary = (s.kind == SurfacePoint::Kind::Vertex && mesh.isBoundaryVertex(s.index)) ||
                             (s.kind == SurfacePoint::Kind::Edge && mesh.twin(s.index) < 0);

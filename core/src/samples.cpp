@@ -9,8 +9,6 @@
 namespace straightest {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 TriMesh buildOrDie(std::vector<Vec3> positions, std::vector<Triangle> triangles) {
   auto mesh = TriMesh::build(std::move(positions), std::move(triangles));
   // The generators are ours: a failure here is a programmer error.

@@ -60,29 +60,52 @@ inline void prefetch(const T* p) {
 
 }  // namespace
 
-/// A source within kSnapSource (barycentric or edge parameter) of an edge or a vertex is moved onto
-/// it: leaving a point 1e-9 away from an edge, the walk's first crossing would be closer than its
-/// rounding tolerance and could be missed.
-SurfacePoint snapSource(const TriMesh& mesh, SurfacePoint p) {
-  if (p.kind == SurfacePoint::Kind::Edge) {
-    if (p.t < kSnapSource) return SurfacePoint::vertex(mesh.tail(p.index));
-    if (p.t > 1 - kSnapSource) return SurfacePoint::vertex(mesh.head(p.index));
-    return p;
-  }
-  if (p.kind != SurfacePoint::Kind::Face) return p;
-  if (std::min({p.bary[0], p.bary[1], p.bary[2]}) >= kSnapSource) return p;
-  double sum = 0;
-  for (double& b : p.bary) {
-    if (b < kSnapSource) b = 0;
-    sum += b;
-  }
-  for (double& b : p.bary) b /= sum;
-  auto snapped = validateSurfacePoint(mesh, p);  // turns zero coordinates into an edge or a vertex
-  return snapped ? snapped.value() : p;
-}
+/// The tracer's state: what is set up once around the source, and the buffers every walk reuses.
+struct StraightestPathTracer::Impl {
+  Impl(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options);
+  const StraightestPath& trace(const SurfacePoint& destination);
 
-struct StraightestPathTracer::Walk {
-  StraightestPathTracer& tr;
+  struct Walk;
+  void walk(const SurfacePoint& destination, const Vec3& direction, bool forwardSide, StraightestPath& out);
+  double signedDistance(int32_t v) const;
+
+  /// A few faces (those around a point), tested per step without touching per-face memory: most
+  /// faces fail the index-range check; the rest are compared one by one (or by binary search).
+  struct FaceSet {
+    std::vector<int32_t> faces;  // sorted
+    int32_t lo = 0, hi = -1;
+    void assign(const std::vector<int32_t>& f);
+    bool contains(int32_t f) const {
+      if (f < lo || f > hi) return false;
+      if (faces.size() > 16) return std::binary_search(faces.begin(), faces.end(), f);
+      for (int32_t x : faces)
+        if (x == f) return true;
+      return false;
+    }
+  };
+
+  const TriMesh& mesh_;
+  SurfacePoint source_;
+  Vec3 sourcePosition_;
+  TraceOptions options_;
+  BasePlane base_;
+  double onPlaneTolerance_ = 0;
+  double meanEdge_ = 1;
+  int64_t maxSteps_ = 0;
+  std::vector<int32_t> sourceFaces_;
+  std::vector<int32_t> targetFaces_;
+  FaceSet sourceSet_, targetSet_;
+  bool isSourceFace(int32_t f) const { return sourceSet_.contains(f); }
+  bool isTargetFace(int32_t f) const { return targetSet_.contains(f); }
+  std::vector<int32_t> fan_;  // scratch: faces around the current vertex
+  std::vector<uint32_t> vertexStamp_;  // == epoch_ for vertices passed in the current walk
+  uint32_t epoch_ = 0;
+  CuttingPlane plane_{};
+  StraightestPath result_, second_;
+};
+
+struct StraightestPathTracer::Impl::Walk {
+  Impl& tr;
   const TriMesh& mesh;
   const SurfacePoint& dest;
   Vec3 D;
@@ -95,12 +118,12 @@ struct StraightestPathTracer::Walk {
     out.positions.push_back(x);
   }
 
-  /// X lies on segment PQ, within tol = 1e-6 · mean edge length along and across it (absolute, so a
-  /// very short last segment still finds a target that rounding put just past its end).
+  /// X lies on segment PQ, within tol = kOnSegmentRel · mean edge length along and across it (absolute,
+  /// so a very short last segment still finds a target that rounding put just past its end).
   bool onSegment(const Vec3& X, const Vec3& P, const Vec3& Q) const {
     const Vec3 v = Q - P;
     const double length = norm(v);
-    const double tol = 1e-6 * meanEdge;
+    const double tol = kOnSegmentRel * meanEdge;
     if (!(length > 0)) return norm(X - P) <= tol;
     const double along = dot(X - P, v) / length;
     if (along < -tol || along > length + tol) return false;
@@ -134,7 +157,7 @@ struct StraightestPathTracer::Walk {
   /// exactly and may continue through two faces of v that do not hold D (a fuzzing finding: D at
   /// t = 8e-11 on an edge of v was missed).
   bool endsNextToVertex(int32_t v, const Vec3& Q) {
-    if (dest.kind == SurfacePoint::Kind::Vertex || !(norm(D - Q) <= 1e-6 * meanEdge)) return false;
+    if (dest.kind == SurfacePoint::Kind::Vertex || !(norm(D - Q) <= kOnSegmentRel * meanEdge)) return false;
     bool adjacent = false;
     for (int32_t f : tr.targetFaces_) {
       const Triangle& t = mesh.triangle(f);
@@ -319,7 +342,18 @@ struct StraightestPathTracer::Walk {
 
 StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source,
                                              const TraceOptions& options)
-    : mesh_(mesh), source_(snapSource(mesh, source)), options_(options) {
+    : impl_(std::make_unique<Impl>(mesh, source, options)) {}
+StraightestPathTracer::~StraightestPathTracer() = default;
+StraightestPathTracer::StraightestPathTracer(StraightestPathTracer&&) noexcept = default;
+StraightestPathTracer& StraightestPathTracer::operator=(StraightestPathTracer&&) noexcept = default;
+const BasePlane& StraightestPathTracer::base() const { return impl_->base_; }
+const SurfacePoint& StraightestPathTracer::source() const { return impl_->source_; }
+const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destination) {
+  return impl_->trace(destination);
+}
+
+StraightestPathTracer::Impl::Impl(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options)
+    : mesh_(mesh), source_(canonical(mesh, source, kSnapSource)), options_(options) {
   sourcePosition_ = position(mesh, source_);
   base_ = basePlane(mesh, source_);
   meanEdge_ = mesh.meanEdgeLength();
@@ -330,21 +364,20 @@ StraightestPathTracer::StraightestPathTracer(const TriMesh& mesh, const SurfaceP
   sourceSet_.assign(sourceFaces_);
 }
 
-void StraightestPathTracer::FaceSet::assign(const std::vector<int32_t>& f) {
+void StraightestPathTracer::Impl::FaceSet::assign(const std::vector<int32_t>& f) {
   faces = f;
   std::sort(faces.begin(), faces.end());
   lo = faces.empty() ? 0 : faces.front();
   hi = faces.empty() ? -1 : faces.back();
 }
 
-double StraightestPathTracer::signedDistance(int32_t v) const {
+double StraightestPathTracer::Impl::signedDistance(int32_t v) const {
   const double d = dot(plane_.normal, mesh_.position(v) - plane_.origin);
   return std::abs(d) <= onPlaneTolerance_ ? 0.0 : d;
 }
 
-void StraightestPathTracer::walk(const SurfacePoint& destination, const CuttingPlane& plane, const Vec3& direction,
-                                 bool forwardSide, StraightestPath& out) {
-  (void)plane;
+void StraightestPathTracer::Impl::walk(const SurfacePoint& destination, const Vec3& direction, bool forwardSide,
+                                       StraightestPath& out) {
   out.status = TraceStatus::NoExit;
   out.length = 0;
   out.facesCrossed = 0;
@@ -359,7 +392,7 @@ void StraightestPathTracer::walk(const SurfacePoint& destination, const CuttingP
   w.run(direction, forwardSide);
 }
 
-const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destination) {
+const StraightestPath& StraightestPathTracer::Impl::trace(const SurfacePoint& destination) {
   StraightestPath& r = result_;
   const Vec3 D = position(mesh_, destination);
   const Vec3 SD = D - sourcePosition_;
@@ -400,9 +433,9 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
   plane_ = *plane;
   targetSet_.assign(targetFaces_);
   const Vec3 t = normalized(SD - base_.normal * dot(base_.normal, SD));
-  walk(destination, plane_, t, true, r);
+  walk(destination, t, true, r);
   if (r.status != TraceStatus::Reached) {
-    walk(destination, plane_, -t, false, second_);
+    walk(destination, -t, false, second_);
     if (second_.status == TraceStatus::Reached) std::swap(result_, second_);
   }
   return result_;

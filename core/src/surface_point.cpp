@@ -1,13 +1,10 @@
+// Surface points: positions, the canonical form with its one snapping rule, validation, incident faces.
 #include "straightest/surface_point.hpp"
 
 #include <cmath>
 #include <string>
 
 namespace straightest {
-
-namespace {
-constexpr double kSnap = 1e-12;  // coordinates closer than this to 0 snap to a simpler kind
-}
 
 Vec3 position(const TriMesh& mesh, const SurfacePoint& p) {
   switch (p.kind) {
@@ -20,6 +17,39 @@ Vec3 position(const TriMesh& mesh, const SurfacePoint& p) {
     }
   }
   return {};
+}
+
+SurfacePoint canonical(const TriMesh& mesh, SurfacePoint p, double snapTolerance) {
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: return p;
+    case SurfacePoint::Kind::Edge: {
+      if (p.t <= snapTolerance) return SurfacePoint::vertex(mesh.tail(p.index));
+      if (p.t >= 1 - snapTolerance) return SurfacePoint::vertex(mesh.head(p.index));
+      const int32_t twin = mesh.twin(p.index);
+      if (twin >= 0 && twin < p.index) return SurfacePoint::edge(twin, 1 - p.t);
+      return p;
+    }
+    case SurfacePoint::Kind::Face: {
+      const std::array<double, 3>& b = p.bary;
+      if (b[0] > snapTolerance && b[1] > snapTolerance && b[2] > snapTolerance) return p;
+      const double sum = b[0] + b[1] + b[2];
+      std::array<double, 3> kept{};
+      int zeros = 0, nonzero = 0;
+      for (int k = 0; k < 3; ++k) {
+        kept[k] = b[k] <= snapTolerance ? 0.0 : b[k] / sum;
+        if (kept[k] == 0) ++zeros; else nonzero = k;
+      }
+      if (zeros == 2) return SurfacePoint::vertex(mesh.triangle(p.index)[nonzero]);
+      if (zeros == 1)
+        for (int k = 0; k < 3; ++k)
+          if (kept[k] == 0) {  // on the edge opposite corner k: halfedge from corner k+1 to corner k+2
+            const int a = (k + 1) % 3, c = (k + 2) % 3;
+            return canonical(mesh, SurfacePoint::edge(3 * p.index + a, kept[c] / (kept[a] + kept[c])), 0.0);
+          }
+      return p;  // every coordinate zero: not a point (validateSurfacePoint refuses it before)
+    }
+  }
+  return p;
 }
 
 Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePoint& p) {
@@ -35,11 +65,9 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
     case SurfacePoint::Kind::Edge: {
       if (p.index < 0 || p.index >= 3 * mesh.numFaces())
         return invalid("halfedge " + std::to_string(p.index) + " is out of range");
-      if (!std::isfinite(p.t) || p.t < -kSnap || p.t > 1 + kSnap)
+      if (!std::isfinite(p.t) || p.t < -kExactSnap || p.t > 1 + kExactSnap)
         return invalid("edge parameter " + std::to_string(p.t) + " is outside [0, 1]");
-      if (p.t <= kSnap) return SurfacePoint::vertex(mesh.tail(p.index));
-      if (p.t >= 1 - kSnap) return SurfacePoint::vertex(mesh.head(p.index));
-      return p;
+      return canonical(mesh, p, kExactSnap);
     }
     case SurfacePoint::Kind::Face: {
       if (p.index < 0 || p.index >= mesh.numFaces())
@@ -47,26 +75,15 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
                        std::to_string(mesh.numFaces()) + " faces)");
       double sum = 0;
       for (double b : p.bary) {
-        if (!std::isfinite(b) || b < -kSnap)
+        if (!std::isfinite(b) || b < -kExactSnap)
           return invalid("barycentric coordinates must be finite and non-negative");
         sum += b;
       }
-      if (std::abs(sum - 1) > 1e-9) return invalid("barycentric coordinates must sum to 1");
-      std::array<double, 3> b{};
-      int zeros = 0, nonzero = 0;
-      for (int k = 0; k < 3; ++k) {
-        b[k] = p.bary[k] <= kSnap ? 0.0 : p.bary[k] / sum;
-        if (b[k] == 0) ++zeros; else nonzero = k;
-      }
-      if (zeros == 2) return SurfacePoint::vertex(mesh.triangle(p.index)[nonzero]);
-      if (zeros == 1) {
-        for (int k = 0; k < 3; ++k)
-          if (b[k] == 0) {  // on the edge opposite corner k: halfedge from corner k+1 to corner k+2
-            const int a = (k + 1) % 3, c = (k + 2) % 3;
-            return SurfacePoint::edge(3 * p.index + a, b[c] / (b[a] + b[c]));
-          }
-      }
-      return SurfacePoint::face(p.index, b);
+      if (std::abs(sum - 1) > kBarycentricSumTolerance) return invalid("barycentric coordinates must sum to 1");
+      SurfacePoint q = canonical(mesh, p, kExactSnap);
+      if (q.kind == SurfacePoint::Kind::Face)
+        for (double& b : q.bary) b /= sum;
+      return q;
     }
   }
   return invalid("unknown surface point kind");
@@ -75,16 +92,9 @@ Expected<SurfacePoint> validateSurfacePoint(const TriMesh& mesh, const SurfacePo
 void incidentFaces(const TriMesh& mesh, const SurfacePoint& p, std::vector<int32_t>& out) {
   out.clear();
   switch (p.kind) {
-    case SurfacePoint::Kind::Vertex: {
-      const int32_t start = mesh.vertexHalfedge(p.index);
-      int32_t h = start;
-      while (h >= 0) {
-        out.push_back(TriMesh::face(h));
-        h = mesh.twin(TriMesh::prev(h));
-        if (h == start) break;
-      }
+    case SurfacePoint::Kind::Vertex:
+      for (int32_t f : mesh.vertexFaces(p.index)) out.push_back(f);
       break;
-    }
     case SurfacePoint::Kind::Edge:
       out.push_back(TriMesh::face(p.index));
       if (mesh.twin(p.index) >= 0) out.push_back(TriMesh::face(mesh.twin(p.index)));

@@ -16,7 +16,7 @@ StretchMetrics textureStretch(const TriMesh& mesh, const std::vector<Vec2>& uv) 
   for (int32_t f = 0; f < nf; ++f) {
     const Triangle& t = mesh.triangle(f);
     const Vec2 &q1 = uv[t[0]], &q2 = uv[t[1]], &q3 = uv[t[2]];
-    a2[f] = 0.5 * ((q2[0] - q1[0]) * (q3[1] - q1[1]) - (q3[0] - q1[0]) * (q2[1] - q1[1]));
+    a2[f] = 0.5 * cross(q2 - q1, q3 - q1);
     meanAbsA2 += std::abs(a2[f]);
   }
   meanAbsA2 /= std::max(1, nf);
@@ -40,8 +40,8 @@ StretchMetrics textureStretch(const TriMesh& mesh, const std::vector<Vec2>& uv) 
     const Vec2 &q1 = uv[t[0]], &q2 = uv[t[1]], &q3 = uv[t[2]];
     const Vec3 &p1 = mesh.position(t[0]), &p2 = mesh.position(t[1]), &p3 = mesh.position(t[2]);
     const double A = 2 * a2[f];
-    const Vec3 Ss = (p1 * (q2[1] - q3[1]) + p2 * (q3[1] - q1[1]) + p3 * (q1[1] - q2[1])) / A;
-    const Vec3 St = (p1 * (q3[0] - q2[0]) + p2 * (q1[0] - q3[0]) + p3 * (q2[0] - q1[0])) / A;
+    const Vec3 Ss = (p1 * (q2.y - q3.y) + p2 * (q3.y - q1.y) + p3 * (q1.y - q2.y)) / A;
+    const Vec3 St = (p1 * (q3.x - q2.x) + p2 * (q1.x - q3.x) + p3 * (q2.x - q1.x)) / A;
     const double a = dot(Ss, Ss), b = dot(Ss, St), c = dot(St, St);
     const double root = std::sqrt((a - c) * (a - c) + 4 * b * b);
     l2[f] = std::sqrt((a + c) / 2);

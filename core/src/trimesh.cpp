@@ -171,11 +171,11 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   auto newHalfedge = [&](int32_t h) { const int32_t f = h / 3, k = h % 3; return 3 * f + (flip[f] ? 2 - k : k); };
   for (int64_t f = 0; f < nf; ++f)
     if (flip[f]) std::swap(triangles[f][1], triangles[f][2]);
-  mesh.twin_.assign(nh, -1);
+  std::vector<int32_t> twin(nh, -1);
   int64_t edges = 0;
   for (int32_t h = 0; h < nh; ++h) {
     if (mate[h] >= 0) {
-      mesh.twin_[newHalfedge(h)] = newHalfedge(mate[h]);
+      twin[newHalfedge(h)] = newHalfedge(mate[h]);
       if (h < mate[h]) ++edges;
     } else {
       ++edges;
@@ -183,6 +183,10 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   }
   mesh.positions_ = std::move(positions);
   mesh.triangles_ = std::move(triangles);
+  mesh.adjacency_.resize(nf);
+  for (int32_t f = 0; f < nf; ++f)
+    mesh.adjacency_[f] = {mesh.triangles_[f], {twin[3 * f], twin[3 * f + 1], twin[3 * f + 2]}};
+  std::vector<int32_t>().swap(twin);
 
   // Vertex fans: one outgoing halfedge per vertex (the boundary one when there is one); a vertex whose
   // faces are not reached by rotating around it from there is non-manifold (several fans).
@@ -192,7 +196,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   for (int32_t h = 0; h < nh; ++h) {
     const int32_t v = mesh.tail(h);
     ++cornerCount[v];
-    if (mesh.twin_[h] < 0) {
+    if (mesh.twin(h) < 0) {
       if (mesh.isBoundaryVertex_[v])
         return err(ErrorCode::NonManifoldVertex,
                    "vertex " + std::to_string(v) + " is where separate pieces of surface touch (two boundary "
@@ -205,13 +209,12 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   }
   int64_t unreferenced = 0;
   for (int32_t v = 0; v < nv; ++v) {
-    const int32_t start = mesh.vertexHalfedge_[v];
-    if (start < 0) { ++unreferenced; continue; }
-    int32_t count = 0, h = start;
-    do {
-      ++count;
-      h = mesh.twin_[prev(h)];
-    } while (h >= 0 && h != start && count <= cornerCount[v]);
+    if (mesh.vertexHalfedge_[v] < 0) { ++unreferenced; continue; }
+    int32_t count = 0;
+    for (int32_t h : mesh.outgoingHalfedges(v)) {
+      (void)h;
+      if (++count > cornerCount[v]) break;
+    }
     if (count != cornerCount[v])
       return err(ErrorCode::NonManifoldVertex,
                  "vertex " + std::to_string(v) + " joins " + std::to_string(cornerCount[v]) +
@@ -221,7 +224,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   // Boundary loops, following boundary halfedges (the surface on the left), longest first.
   std::vector<uint8_t> visited(nh, 0);
   for (int32_t h0 = 0; h0 < nh; ++h0) {
-    if (mesh.twin_[h0] >= 0 || visited[h0]) continue;
+    if (mesh.twin(h0) >= 0 || visited[h0]) continue;
     std::vector<int32_t> loop;
     int32_t h = h0;
     while (!visited[h]) {
@@ -245,7 +248,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     const Vec3 e1 = mesh.positions_[t[1]] - mesh.positions_[t[0]];
     const Vec3 e2 = mesh.positions_[t[2]] - mesh.positions_[t[0]];
     const double lengths[3] = {norm(e1), norm(mesh.positions_[t[2]] - mesh.positions_[t[1]]), norm(e2)};
-    for (int k = 0; k < 3; ++k) edgeLengthSum += mesh.twin_[3 * f + k] < 0 ? lengths[k] : 0.5 * lengths[k];
+    for (int k = 0; k < 3; ++k) edgeLengthSum += mesh.twin(3 * f + k) < 0 ? lengths[k] : 0.5 * lengths[k];
     const Vec3 c = cross(e1, e2);
     const double twiceArea = norm(c);
     mesh.faceAreas_[f] = 0.5 * twiceArea;
@@ -275,10 +278,6 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     s.bbox.min = {std::min(s.bbox.min.x, p.x), std::min(s.bbox.min.y, p.y), std::min(s.bbox.min.z, p.z)};
     s.bbox.max = {std::max(s.bbox.max.x, p.x), std::max(s.bbox.max.y, p.y), std::max(s.bbox.max.z, p.z)};
   }
-  mesh.adjacency_.resize(nf);
-  for (int32_t f = 0; f < nf; ++f)
-    mesh.adjacency_[f] = {mesh.triangles_[f], {mesh.twin_[3 * f], mesh.twin_[3 * f + 1], mesh.twin_[3 * f + 2]}};
-  std::vector<int32_t>().swap(mesh.twin_);
   s.problems = std::move(notes);
   if (reoriented > 0)
     s.problems.push_back(std::to_string(reoriented) + " faces had the opposite orientation of their neighbours "

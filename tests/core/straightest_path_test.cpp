@@ -99,6 +99,30 @@ TEST(StraightestPathOnAPlane, EdgePointsAreValidSourcesAndTargets) {
   expectEuclideanPaths(mesh, SurfacePoint::edge(100, 0.5), targets);
 }
 
+TEST(StraightestPathTracer, ASourceOnEitherHalfedgeOfItsEdgeIsOneSourceWithTheSamePaths) {
+  const TriMesh mesh = makeSample("mountain").value();
+  int32_t h = -1;  // an interior edge away from the boundary
+  for (int32_t k = 0; k < 3 * mesh.numFaces() && h < 0; ++k)
+    if (mesh.twin(k) > k && !mesh.isBoundaryVertex(mesh.tail(k)) && !mesh.isBoundaryVertex(mesh.head(k))) h = k;
+  ASSERT_GE(h, 0);
+  StraightestPathTracer a(mesh, SurfacePoint::edge(h, 0.25)), b(mesh, SurfacePoint::edge(mesh.twin(h), 0.75));
+  EXPECT_EQ(a.source(), b.source());
+  EXPECT_EQ(a.source(), SurfacePoint::edge(h, 0.25));  // canonical: the smaller halfedge
+  const auto targets = boundaryTargets(mesh);
+  ASSERT_FALSE(targets.empty());
+  for (const SurfacePoint& target : targets) {
+    const StraightestPath pa = a.trace(target);  // a copy: the next trace reuses the buffers
+    const StraightestPath& pb = b.trace(target);
+    EXPECT_EQ(pa.status, pb.status);
+    EXPECT_EQ(pa.length, pb.length);
+    EXPECT_EQ(pa.points.size(), pb.points.size());
+  }
+  // A destination given on either halfedge validates to one point and is reached the same way.
+  const SurfacePoint d1 = validateSurfacePoint(mesh, SurfacePoint::edge(h, 0.5)).value();
+  const SurfacePoint d2 = validateSurfacePoint(mesh, SurfacePoint::edge(mesh.twin(h), 0.5)).value();
+  EXPECT_EQ(d1, d2);
+}
+
 TEST(StraightestPathOnASphericalCap, LengthConvergesToGreatCircleArcQuadratically) {
   const double thetaMax = kPi / 3;
   double previousError = 0;

@@ -1,6 +1,9 @@
 // TriMesh validation, orientation repair and topology summaries.
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <set>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -92,22 +95,96 @@ TEST(Topology, ClosedTetrahedronHasNoBoundaryAndEulerCharacteristicTwo) {
   EXPECT_EQ(mesh.summary().edges, 6);
 }
 
-TEST(Topology, VertexFanRotationVisitsEveryIncidentFace) {
-  const TriMesh mesh = makeSample("mountain").value();
-  std::vector<int> incident(mesh.numVertices(), 0);
-  for (const Triangle& t : mesh.triangles())
-    for (int v : t) ++incident[v];
+/// Faces and neighbours of v found by scanning every face (what the one-ring ranges must reproduce).
+struct BruteForceRing {
+  std::multiset<int> faces;
+  std::set<int> neighbours;
+};
+BruteForceRing bruteForceRing(const TriMesh& mesh, int v) {
+  BruteForceRing r;
+  for (int f = 0; f < mesh.numFaces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (mesh.triangle(f)[k] == v) {
+        r.faces.insert(f);
+        r.neighbours.insert(mesh.triangle(f)[(k + 1) % 3]);
+        r.neighbours.insert(mesh.triangle(f)[(k + 2) % 3]);
+      }
+  return r;
+}
+
+/// The one-ring ranges of every vertex agree with the brute-force scan: each face around v once, each
+/// outgoing halfedge leaves v and lies in the face listed with it, each neighbour once (a boundary
+/// vertex has one more neighbour than faces, an interior one as many).
+void expectRingsMatchBruteForce(const TriMesh& mesh) {
   for (int v = 0; v < mesh.numVertices(); ++v) {
-    int count = 0, h = mesh.vertexHalfedge(v);
-    const int start = h;
-    do {
-      ASSERT_EQ(mesh.tail(h), v);
-      ++count;
-      h = mesh.twin(TriMesh::prev(h));
-    } while (h >= 0 && h != start);
-    EXPECT_EQ(count, incident[v]) << "vertex " << v;
-    EXPECT_EQ(h < 0, mesh.isBoundaryVertex(v)) << "vertex " << v;
+    const BruteForceRing expected = bruteForceRing(mesh, v);
+    std::vector<int> halfedges(mesh.outgoingHalfedges(v).begin(), mesh.outgoingHalfedges(v).end());
+    std::vector<int> faces(mesh.vertexFaces(v).begin(), mesh.vertexFaces(v).end());
+    std::vector<int> neighbours(mesh.vertexNeighbours(v).begin(), mesh.vertexNeighbours(v).end());
+    EXPECT_EQ(std::multiset<int>(faces.begin(), faces.end()), expected.faces) << "vertex " << v;
+    EXPECT_EQ(std::set<int>(neighbours.begin(), neighbours.end()), expected.neighbours) << "vertex " << v;
+    EXPECT_EQ(std::set<int>(neighbours.begin(), neighbours.end()).size(), neighbours.size()) << "vertex " << v;
+    ASSERT_EQ(halfedges.size(), faces.size());
+    for (size_t k = 0; k < halfedges.size(); ++k) {
+      EXPECT_EQ(mesh.tail(halfedges[k]), v);
+      EXPECT_EQ(TriMesh::face(halfedges[k]), faces[k]);
+      EXPECT_EQ(mesh.head(halfedges[k]), neighbours[k]);  // neighbours follow the halfedges' order
+    }
+    if (mesh.vertexHalfedge(v) >= 0)
+      EXPECT_EQ(neighbours.size(), faces.size() + (mesh.isBoundaryVertex(v) ? 1 : 0)) << "vertex " << v;
   }
+}
+
+/// A hexagon fanned around vertex 0 at the origin, with `faces` of its 6 triangles (6: vertex 0 is
+/// interior; fewer: on the boundary), and vertex 7 used by no face.
+TriMesh hexagonFan(int faces) {
+  std::vector<Vec3> p{{0, 0, 0}};
+  for (int k = 0; k < 6; ++k) p.push_back({std::cos(k * kPi / 3), std::sin(k * kPi / 3), 0});
+  p.push_back({5, 5, 5});
+  std::vector<Triangle> t;
+  for (int k = 0; k < faces; ++k) t.push_back({0, 1 + k, 1 + (k + 1) % 6});
+  return TriMesh::build(std::move(p), std::move(t)).value();
+}
+
+TEST(VertexRing, InteriorVertexVisitsItsFacesAndNeighboursCounterClockwise) {
+  const TriMesh mesh = hexagonFan(6);
+  ASSERT_FALSE(mesh.isBoundaryVertex(0));
+  std::vector<int> neighbours(mesh.vertexNeighbours(0).begin(), mesh.vertexNeighbours(0).end());
+  EXPECT_EQ(neighbours.size(), 6u);
+  EXPECT_EQ(std::distance(mesh.vertexFaces(0).begin(), mesh.vertexFaces(0).end()), 6);
+  for (size_t k = 0; k < neighbours.size(); ++k) {  // each next neighbour 60° further counter-clockwise
+    const Vec3 a = mesh.position(neighbours[k]), b = mesh.position(neighbours[(k + 1) % neighbours.size()]);
+    EXPECT_GT(cross(a, b).z, 0.8);
+    EXPECT_NEAR(dot(a, b), 0.5, 1e-12);
+  }
+  expectRingsMatchBruteForce(mesh);
+}
+
+TEST(VertexRing, BoundaryVertexStopsAtTheBoundaryAndEndsWithItsOtherBoundaryNeighbour) {
+  for (int faces = 1; faces <= 5; ++faces) {
+    const TriMesh mesh = hexagonFan(faces);
+    ASSERT_TRUE(mesh.isBoundaryVertex(0));
+    std::vector<int> neighbours(mesh.vertexNeighbours(0).begin(), mesh.vertexNeighbours(0).end());
+    // Counter-clockwise from the boundary halfedge 0 → 1 to the last face's far corner.
+    ASSERT_EQ(neighbours.size(), static_cast<size_t>(faces + 1));
+    for (int k = 0; k <= faces; ++k) EXPECT_EQ(neighbours[k], 1 + k % 6) << faces << " faces";
+    EXPECT_EQ(std::distance(mesh.vertexFaces(0).begin(), mesh.vertexFaces(0).end()), faces);
+    expectRingsMatchBruteForce(mesh);
+  }
+}
+
+TEST(VertexRing, UnreferencedVertexHasAnEmptyRing) {
+  const TriMesh mesh = hexagonFan(4);
+  ASSERT_LT(mesh.vertexHalfedge(7), 0);
+  EXPECT_TRUE(mesh.outgoingHalfedges(7).begin() == mesh.outgoingHalfedges(7).end());
+  EXPECT_TRUE(mesh.vertexFaces(7).begin() == mesh.vertexFaces(7).end());
+  EXPECT_TRUE(mesh.vertexNeighbours(7).begin() == mesh.vertexNeighbours(7).end());
+}
+
+TEST(VertexRing, EveryVertexOfLargerMeshesMatchesTheFaceScan) {
+  expectRingsMatchBruteForce(makeSample("mountain").value());  // a disk
+  expectRingsMatchBruteForce(makeSample("cap").value());
+  expectRingsMatchBruteForce(loadGood("good/tetrahedron.off"));  // closed: no boundary vertex
 }
 
 TEST(Topology, CountsComponentsAndUnreferencedVertices) {

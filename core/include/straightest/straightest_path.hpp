@@ -1,7 +1,7 @@
 // straightest_path.hpp — the straightest path from a source to destinations by cutting planes.
 //
 // The path to D is the section of the mesh by the cutting plane (through S, perpendicular to the
-// base plane, containing D), walked face by face from S toward D (DESIGN §3):
+// base plane, containing D), walked face by face from S toward D:
 //  - start into the face around S whose section leaves on D's side (t = D − S without its base-normal
 //    component); at a saddle, the one best aligned with t;
 //  - cross edges; where the plane passes through a vertex (|signed distance| <= kOnPlaneRel · mean
@@ -19,6 +19,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,9 +41,6 @@ enum class TraceStatus : uint8_t {
 const char* traceStatusName(TraceStatus s);
 inline constexpr int kTraceStatusCount = 7;
 
-/// Relative tolerance for "the plane passes through this vertex" (times the mean edge length).
-inline constexpr double kOnPlaneRel = 1e-9;
-
 struct TraceOptions {
   bool keepPoints = true;   // store the path's surface points and positions
   int64_t maxSteps = 0;     // 0: 2·faces + vertices + 16 (more than any simple walk can take)
@@ -57,64 +55,28 @@ struct StraightestPath {
   std::vector<Vec3> positions;       // their 3D positions
 };
 
-/// Barycentric coordinates / edge parameter below which a source is moved onto the edge or vertex.
-inline constexpr double kSnapSource = 1e-6;
-/// The source point a tracer really starts from: p moved onto an edge or vertex within kSnapSource.
-SurfacePoint snapSource(const TriMesh& mesh, SurfacePoint p);
-
 /// Traces straightest paths from one source; reuse it for many destinations (shared setup).
 class StraightestPathTracer {
  public:
-  /// The source must be a valid surface point (see validateSurfacePoint). A source within 1e-6
-  /// (barycentric or edge parameter) of an edge or vertex is moved onto it; source() is the point used.
+  /// The source must be a valid surface point (see validateSurfacePoint). It is moved onto an edge or
+  /// vertex within kSnapSource (barycentric or edge parameter): source() is canonical(mesh, source,
+  /// kSnapSource), the point used. (Leaving a point 1e-9 away from an edge, the walk's first crossing
+  /// would be closer than its on-segment tolerance and could be missed.)
   StraightestPathTracer(const TriMesh& mesh, const SurfacePoint& source, const TraceOptions& options = {});
+  ~StraightestPathTracer();
+  StraightestPathTracer(StraightestPathTracer&&) noexcept;
+  StraightestPathTracer& operator=(StraightestPathTracer&&) noexcept;
 
-  const BasePlane& base() const { return base_; }
-  const SurfacePoint& source() const { return source_; }
+  const BasePlane& base() const;
+  const SurfacePoint& source() const;
 
   /// Traces to one destination (a valid surface point). The returned reference stays valid until
   /// the next call (its buffers are reused).
   const StraightestPath& trace(const SurfacePoint& destination);
 
  private:
-  struct Walk;
-  void walk(const SurfacePoint& destination, const CuttingPlane& plane, const Vec3& direction, bool forwardSide,
-            StraightestPath& out);
-  double signedDistance(int32_t v) const;
-
-  /// A few faces (those around a point), tested per step without touching per-face memory: most
-  /// faces fail the index-range check; the rest are compared one by one (or by binary search).
-  struct FaceSet {
-    std::vector<int32_t> faces;  // sorted
-    int32_t lo = 0, hi = -1;
-    void assign(const std::vector<int32_t>& f);
-    bool contains(int32_t f) const {
-      if (f < lo || f > hi) return false;
-      if (faces.size() > 16) return std::binary_search(faces.begin(), faces.end(), f);
-      for (int32_t x : faces)
-        if (x == f) return true;
-      return false;
-    }
-  };
-
-  const TriMesh& mesh_;
-  SurfacePoint source_;
-  Vec3 sourcePosition_;
-  TraceOptions options_;
-  BasePlane base_;
-  double onPlaneTolerance_ = 0;
-  double meanEdge_ = 1;
-  int64_t maxSteps_ = 0;
-  std::vector<int32_t> sourceFaces_;
-  std::vector<int32_t> targetFaces_;
-  FaceSet sourceSet_, targetSet_;
-  bool isSourceFace(int32_t f) const { return sourceSet_.contains(f); }
-  bool isTargetFace(int32_t f) const { return targetSet_.contains(f); }
-  std::vector<int32_t> fan_;  // scratch: faces around the current vertex
-  std::vector<uint32_t> vertexStamp_;  // == epoch_ for vertices passed in the current walk
-  uint32_t epoch_ = 0;
-  CuttingPlane plane_{};
-  StraightestPath result_, second_;
+  struct Impl;  // the setup around the source and the walk's buffers (straightest_path.cpp)
+  std::unique_ptr<Impl> impl_;
 };
 
 /// Many destinations from one source in one call (shared setup), results packed for transport:

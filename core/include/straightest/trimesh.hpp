@@ -13,11 +13,14 @@
 // orientation: the surface lies to the left when walking a loop).
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include "straightest/error.hpp"
+#include "straightest/tolerances.hpp"
 #include "straightest/vec3.hpp"
 
 namespace straightest {
@@ -56,6 +59,10 @@ struct MeshSummary {
   std::vector<std::string> problems;  // human-readable notes on what was found and repaired
 };
 
+enum class RingItem { OutgoingHalfedge, Face, Neighbour };
+template <RingItem Item>
+class VertexRing;
+
 class TriMesh {
  public:
   /// Validates and builds. See the file comment for what is checked and repaired. `notes` (e.g. from a
@@ -86,6 +93,17 @@ class TriMesh {
   int32_t vertexHalfedge(int32_t v) const { return vertexHalfedge_[v]; }
   bool isBoundaryVertex(int32_t v) const { return isBoundaryVertex_[v] != 0; }
 
+  // The one-ring of vertex v, counter-clockwise from vertexHalfedge(v) (see VertexRing below); empty for
+  // an unreferenced vertex. `for (int32_t h : mesh.outgoingHalfedges(v))` instead of hand-written
+  // rotations.
+  /// Every halfedge leaving v, one per face around v.
+  VertexRing<RingItem::OutgoingHalfedge> outgoingHalfedges(int32_t v) const;
+  /// Every face around v (face(h) of each outgoing halfedge).
+  VertexRing<RingItem::Face> vertexFaces(int32_t v) const;
+  /// Every vertex joined to v by an edge: head(h) of each outgoing halfedge, and for a boundary vertex
+  /// last the tail of the incoming boundary halfedge (the fan's other boundary neighbour).
+  VertexRing<RingItem::Neighbour> vertexNeighbours(int32_t v) const;
+
   const std::vector<std::vector<int32_t>>& boundaryLoops() const { return boundaryLoops_; }
   /// Unit normal of face f (zero for a degenerate face) and its area.
   const Vec3& faceNormal(int32_t f) const { return faceNormals_[f]; }
@@ -100,7 +118,6 @@ class TriMesh {
   TriMesh() = default;
   std::vector<Vec3> positions_;
   std::vector<Triangle> triangles_;
-  std::vector<int32_t> twin_;               // during build only; then moved into adjacency_
   std::vector<FaceAdjacency> adjacency_;
   std::vector<int32_t> vertexHalfedge_;
   std::vector<uint8_t> isBoundaryVertex_;
@@ -112,19 +129,76 @@ class TriMesh {
   MeshSummary summary_;
 };
 
+/// A range over the one-ring of a vertex, rotating counter-clockwise with h → twin(prev(h)) from
+/// vertexHalfedge(v). For a boundary vertex that is the outgoing boundary halfedge, so the rotation
+/// visits the whole fan and stops where it meets the boundary again (twin = −1); for an interior vertex
+/// it stops when it is back at the start. Each step is one twin look-up; nothing is allocated.
+/// (The rotation always ends: twin∘prev is one-to-one, so it can only come back to its start or stop.)
+template <RingItem Item>
+class VertexRing {
+ public:
+  class iterator {
+   public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = int32_t;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const int32_t*;
+    using reference = int32_t;
+
+    iterator() = default;
+    iterator(const TriMesh* mesh, int32_t h) : mesh_(mesh), h_(h), start_(h) {}
+    int32_t operator*() const {
+      if constexpr (Item == RingItem::OutgoingHalfedge) return h_;
+      else if constexpr (Item == RingItem::Face) return TriMesh::face(h_);
+      else return closing_ ? mesh_->tail(TriMesh::prev(h_)) : mesh_->head(h_);
+    }
+    iterator& operator++() {
+      if constexpr (Item == RingItem::Neighbour) {
+        if (closing_) {  // the boundary neighbour was the last one
+          closing_ = false;
+          h_ = -1;
+          return *this;
+        }
+        const int32_t n = mesh_->twin(TriMesh::prev(h_));
+        if (n < 0) closing_ = true;  // stay on h_: its prev's tail is the last neighbour
+        else h_ = n == start_ ? -1 : n;
+      } else {
+        h_ = mesh_->twin(TriMesh::prev(h_));
+        if (h_ == start_) h_ = -1;
+      }
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++*this;
+      return old;
+    }
+    bool operator==(const iterator& o) const { return h_ == o.h_ && closing_ == o.closing_; }
+    bool operator!=(const iterator& o) const { return !(*this == o); }
+
+   private:
+    const TriMesh* mesh_ = nullptr;
+    int32_t h_ = -1, start_ = -1;
+    bool closing_ = false;
+  };
+
+  VertexRing(const TriMesh& mesh, int32_t v) : mesh_(&mesh), first_(mesh.vertexHalfedge(v)) {}
+  iterator begin() const { return first_ < 0 ? end() : iterator(mesh_, first_); }
+  iterator end() const { return iterator(); }
+
+ private:
+  const TriMesh* mesh_;
+  int32_t first_;
+};
+
+inline VertexRing<RingItem::OutgoingHalfedge> TriMesh::outgoingHalfedges(int32_t v) const { return {*this, v}; }
+inline VertexRing<RingItem::Face> TriMesh::vertexFaces(int32_t v) const { return {*this, v}; }
+inline VertexRing<RingItem::Neighbour> TriMesh::vertexNeighbours(int32_t v) const { return {*this, v}; }
+
 /// Builds from flat arrays as a caller (JS, a file-less API) hands them: xyz has 3 coordinates per
 /// vertex, indices 3 vertex indices per face. Checks the lengths and that every index is a
 /// non-negative integer before TriMesh::build does the rest.
 Expected<TriMesh> meshFromFlatArrays(const std::vector<double>& xyz, const std::vector<double>& indices,
                                      const BuildLimits& limits = {});
-
-/// Largest accepted |coordinate|. The algorithms form products of up to four coordinates (a face's
-/// squared area, |e1 × e2|²); with |x| <= 1e50 these stay below ~1e202, far from overflow, while 1e100
-/// already gave faces of infinite area (a fuzzing finding). No real mesh comes near either bound.
-inline constexpr double kMaxCoordinate = 1e50;
-
-/// Relative threshold below which a face counts as degenerate: |e1 × e2| <= kDegenerateRel * |e1| * |e2|
-/// (the sine of the face's angle at its first corner is below it) or an edge has zero length.
-inline constexpr double kDegenerateRel = 1e-12;
 
 }  // namespace straightest

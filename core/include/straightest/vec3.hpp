@@ -7,6 +7,9 @@
 
 namespace straightest {
 
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kTwoPi = 2 * kPi;
+
 /// A point or vector in the parameter plane (u, v). Indexable ([0] is u) so loops over both
 /// coordinates stay loops.
 struct Vec2 {
