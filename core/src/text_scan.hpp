@@ -1,0 +1,67 @@
+// text_scan.hpp — the text primitives the mesh readers share: lines, whitespace-separated tokens,
+// strict numbers, and error messages that name the line and quote the offending token. Private to
+// core/src (the readers' public face is mesh_io.hpp).
+//
+// Numbers are strict on purpose: a coordinate is a plain decimal ("-1.5e-3"), read correctly rounded
+// (fast_float, the same value strtod gives); hexadecimal floats, "inf", "nan" and tokens over 64
+// characters are reported, never read as something else.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "straightest/error.hpp"
+
+namespace straightest::text {
+
+/// Longer numeric tokens are rejected (keeps every number's reading linear and bounded).
+constexpr size_t kMaxNumberChars = 64;
+
+/// Error{Parse, "line N: what"}.
+Error parseError(int64_t line, const std::string& what);
+
+/// The token in single quotes, cut to 40 characters, unprintable bytes shown as '?'.
+std::string quoted(std::string_view token);
+
+/// Splits text into lines ending in "\n", "\r\n" or a lone "\r", calling fn(lineNumber, line) (line
+/// numbers from 1, the terminator excluded) until fn returns false. Linear.
+template <class Fn>
+void forEachLine(std::string_view text, Fn&& fn) {
+  int64_t number = 0;
+  size_t pos = 0;
+  while (pos < text.size()) {
+    size_t end = text.find_first_of("\r\n", pos);
+    if (end == std::string_view::npos) end = text.size();
+    if (!fn(++number, text.substr(pos, end - pos))) return;
+    pos = end + ((end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ? 2 : 1);
+  }
+}
+
+/// Space, tab, CR, vertical tab and form feed separate tokens.
+inline bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+/// Whitespace-separated tokens of a line: `count` of them, the first `max` stored in `items`.
+struct Tokens {
+  std::vector<std::string_view> items;
+  size_t count = 0;
+};
+void tokenize(std::string_view line, Tokens& out, size_t max = 64);
+
+/// The line up to its first '#'.
+std::string_view stripComment(std::string_view line);
+
+/// [+-]? (digits [. digits*] | . digits) ([eE] [+-]? digits)?
+bool isPlainDecimal(std::string_view token);
+
+enum class NumberStatus { Ok, NotANumber, NonFinite, TooLong };
+
+/// Reads a whole token as a double: plain decimals correctly rounded; anything else through strtod,
+/// so that "nan", "inf" and overflowing numbers are NonFinite (the caller decides whether a
+/// non-decimal form such as "0x1p3" is acceptable).
+NumberStatus parseDouble(std::string_view token, double& out);
+
+/// A whole token as a signed integer of at most 18 digits (so it never overflows int64).
+bool parseInt64(std::string_view token, int64_t& out);
+
+}  // namespace straightest::text
