@@ -25,8 +25,6 @@
 #include <limits>
 #include <optional>
 
-#include <fast_float/fast_float.h>
-
 #include "straightest/polygon_triangulation.hpp"
 #include "text_scan.hpp"
 
@@ -37,19 +35,11 @@ using text::NumberStatus;
 using text::parseError;
 using text::quoted;
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+using text::isDigit;
 bool isBlank(char c) { return c == ' ' || c == '\t'; }  // what delimits a keyword
 /// Separates tokens inside a line (a line holds no '\n' or '\r').
 bool isInlineSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
 bool endsToken(char c) { return isInlineSpace(c) || c == '#'; }
-
-/// Where the line starting at p ends: its '\n' or lone-or-paired '\r', or `end`.
-const char* lineEnd(const char* p, const char* end) {
-  const void* newline = std::memchr(p, '\n', static_cast<size_t>(end - p));
-  const char* e = newline ? static_cast<const char*>(newline) : end;
-  const void* carriageReturn = std::memchr(p, '\r', static_cast<size_t>(e - p));
-  return carriageReturn ? static_cast<const char*>(carriageReturn) : e;
-}
 
 /// True when some number on the line has an exponent of more than 4 digits ("1e-2147483648").
 bool longExponent(std::string_view line) {
@@ -64,17 +54,11 @@ bool longExponent(std::string_view line) {
   return false;
 }
 
-/// The common coordinate: a plain decimal of at most 64 characters starting with a digit or '.'
-/// (after one optional sign), an exponent of at most 4 digits, finite. Anything else returns false
-/// for the strict reading to judge.
+/// The common coordinate (text::readCommonDecimal) with an exponent of at most 4 digits. Anything
+/// else returns false for the strict reading to judge.
 bool readCommonCoordinate(const char* first, const char* last, double& out) {
-  const size_t length = static_cast<size_t>(last - first);
-  if (length == 0 || length > text::kMaxNumberChars) return false;
-  const char* number = first + (*first == '+' ? 1 : 0);  // from_chars takes no '+'
-  const char* mantissa = number + (*first == '-' ? 1 : 0);
-  if (mantissa == last || !(isDigit(*mantissa) || *mantissa == '.')) return false;
-  const auto result = fast_float::from_chars(number, last, out);
-  if (result.ec != std::errc() || result.ptr != last || !std::isfinite(out)) return false;
+  if (!text::readCommonDecimal(first, last, out)) return false;
+  const char* mantissa = first + (*first == '+' || *first == '-' ? 1 : 0);
   const char* exponent = last;
   while (exponent > mantissa && isDigit(exponent[-1])) --exponent;
   if (last - exponent > 4 && exponent > mantissa) {  // trailing digits are an exponent's after an 'e'
@@ -98,7 +82,7 @@ class ObjReader {
     int64_t line = 0;
     for (const char* p = text_.data(); p < end;) {
       ++line;
-      const char* e = lineEnd(p, end);
+      const char* e = text_.data() + text::lineEnd(text_, static_cast<size_t>(p - text_.data()));
       const char* keyword = p;
       while (keyword < e && isBlank(*keyword)) ++keyword;
       if (keyword + 1 < e && isBlank(keyword[1]) && (*keyword == 'v' || *keyword == 'f')) {

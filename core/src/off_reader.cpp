@@ -18,6 +18,66 @@ using text::stripComment;
 using text::tokenize;
 using text::Tokens;
 
+namespace {
+
+// The fast path for the common vertex line ("x y z") and face line ("k i1 ... ik"): anything else on
+// the line, and every error, is left to the state machine's own reading, which gives the same result
+// for what the fast path accepts.
+bool isInlineSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+const char* skipSpace(const char* p, const char* e) {
+  while (p < e && isInlineSpace(*p)) ++p;
+  return p;
+}
+const char* tokenEnd(const char* p, const char* e) {
+  while (p < e && !isInlineSpace(*p) && *p != '#') ++p;
+  return p;
+}
+bool onlyCommentLeft(const char* p, const char* e) {
+  p = skipSpace(p, e);
+  return p == e || *p == '#';
+}
+
+/// An unsigned integer token of 1 to 18 digits at p (after blanks); p moves past it.
+bool readCommonInteger(const char*& p, const char* e, int64_t& out) {
+  p = skipSpace(p, e);
+  const char* digits = p;
+  out = 0;
+  for (; p < e && text::isDigit(*p); ++p) {
+    if (p - digits == 18) return false;
+    out = out * 10 + (*p - '0');
+  }
+  return p > digits && (p == e || isInlineSpace(*p) || *p == '#');
+}
+
+bool readCommonVertex(std::string_view line, Vec3& out) {
+  const char* p = line.data();
+  const char* e = p + line.size();
+  double c[3];
+  for (double& x : c) {
+    const char* token = skipSpace(p, e);
+    p = tokenEnd(token, e);
+    if (!text::readCommonDecimal(token, p, x)) return false;
+  }
+  out = {c[0], c[1], c[2]};
+  return onlyCommentLeft(p, e);
+}
+
+bool readCommonFace(std::string_view line, int64_t vertices, std::vector<int32_t>& polygon) {
+  const char* p = line.data();
+  const char* e = p + line.size();
+  int64_t corners = 0;
+  if (!readCommonInteger(p, e, corners) || corners < 3) return false;
+  polygon.clear();
+  for (int64_t k = 0; k < corners; ++k) {
+    int64_t index = 0;
+    if (!readCommonInteger(p, e, index) || index >= vertices) return false;
+    polygon.push_back(static_cast<int32_t>(index));
+  }
+  return onlyCommentLeft(p, e);
+}
+
+}  // namespace
+
 Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) {
   enum class Stage { Header, Counts, Vertices, Faces, Done } stage = Stage::Header;
   PolygonSoup soup;
@@ -57,8 +117,28 @@ Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) 
     return true;
   };
 
+  auto addPolygon = [&] {
+    if (polygon.size() == 3) {
+      soup.triangles.push_back({polygon[0], polygon[1], polygon[2]});
+    } else {
+      triangulatePolygon(soup.positions, polygon, soup.triangles);
+      ++soup.polygonsTriangulated;
+    }
+  };
+
   forEachLine(text, [&](int64_t line, std::string_view raw) {
     consumed += raw.size() + 1;
+    Vec3 position;
+    if (stage == Stage::Vertices && extraPerVertex == 0 && readCommonVertex(raw, position)) {
+      soup.positions.push_back(position);
+      if (static_cast<int64_t>(soup.positions.size()) == nv) stage = nf > 0 ? Stage::Faces : Stage::Done;
+      return true;
+    }
+    if (stage == Stage::Faces && readCommonFace(raw, nv, polygon)) {
+      addPolygon();
+      if (++facesRead == nf) stage = Stage::Done;
+      return true;
+    }
     tokenize(stripComment(raw), tokens);
     if (tokens.count == 0) return true;
     auto& items = tokens.items;
@@ -156,12 +236,7 @@ Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) 
             return false;
           }
         }
-        if (k == 3) {
-          soup.triangles.push_back({polygon[0], polygon[1], polygon[2]});
-        } else {
-          triangulatePolygon(soup.positions, polygon, soup.triangles);
-          ++soup.polygonsTriangulated;
-        }
+        addPolygon();
         if (++facesRead == nf) stage = Stage::Done;
         return true;
       }

@@ -85,6 +85,16 @@ NumberStatus parseDouble(std::string_view token, double& out) {
   return NumberStatus::Ok;
 }
 
+bool readCommonDecimal(const char* first, const char* last, double& out) {
+  const size_t length = static_cast<size_t>(last - first);
+  if (length == 0 || length > kMaxNumberChars) return false;
+  const char* number = first + (*first == '+' ? 1 : 0);  // from_chars takes no '+'
+  const char* mantissa = number + (*first == '-' ? 1 : 0);
+  if (mantissa == last || !(isDigit(*mantissa) || *mantissa == '.')) return false;
+  const auto result = fast_float::from_chars(number, last, out);
+  return result.ec == std::errc() && result.ptr == last && std::isfinite(out);
+}
+
 bool parseInt64(std::string_view token, int64_t& out) {
   if (token.empty() || token.size() > 19) return false;  // with a sign: at most 18 digits, no overflow
   size_t i = 0;
