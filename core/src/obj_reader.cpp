@@ -11,17 +11,15 @@
 // faces: any line error, then the vertex cap, then the first face that refers to a missing vertex or
 // passes the face cap.
 //
-// Why our own reader rather than tinyobjloader (which this project used until the reader below had
-// to re-read every number anyway): fuzzing found tinyobjloader reading numbers wrongly or with
-// undefined behaviour — exponents of more than 4 digits overflow its arithmetic, indices wrap modulo
-// 2³² (atoi), hexadecimal floats read as 0, `0e9999` reads as NaN, a `vw` joint id overflows an int —
-// and reporting no line numbers; its decimals are not correctly rounded. Exponents of more than 4
-// digits are still refused, so the accepted files did not change.
+// Why our own reader and not tinyobjloader (used until this reader, which had grown in front of it to
+// find what it misread, was reading every number anyway): fuzzing found tinyobjloader reading input
+// wrongly or with undefined behaviour — exponents of more than 4 digits overflow its arithmetic,
+// indices wrap modulo 2³² (atoi), hexadecimal floats read as 0, `0e500` reads as NaN, a `vw` joint
+// id overflows an int — its decimals are not correctly rounded, and its errors name no line. Lines
+// with an exponent of more than 4 digits are still refused, so that every file accepted before is
+// read the same way and every error keeps its message.
 #include "obj_reader.hpp"
 
-#include <cctype>
-#include <cmath>
-#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -31,11 +29,11 @@
 namespace straightest {
 namespace {
 
+using text::isDigit;
 using text::NumberStatus;
 using text::parseError;
 using text::quoted;
 
-using text::isDigit;
 bool isBlank(char c) { return c == ' ' || c == '\t'; }  // what delimits a keyword
 /// Separates tokens inside a line (a line holds no '\n' or '\r').
 bool isInlineSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }

@@ -66,6 +66,18 @@ TEST(OffReader, AFaceColourMustBeNumeric) {
   EXPECT_EQ(bad.error().message, "line 6: face 0: unexpected 'red' after its vertex indices");
 }
 
+TEST(OffReader, SignsCommentsAndOddSpacingReadLikeThePlainForm) {
+  auto plain = parsePolygonSoup("OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  auto odd = parsePolygonSoup(
+      "OFF\n4 2 0\n+0 0. -0 # a comment\n\t1e0 0 .0\n1 +1 0\n\v0 1.0 0\f\n"
+      "3 +0 1 2 # first\n  3\t0 2 +3\n");
+  ASSERT_TRUE(plain.ok()) << plain.error().message;
+  ASSERT_TRUE(odd.ok()) << odd.error().message;
+  EXPECT_EQ(odd.value().triangles, plain.value().triangles);
+  for (size_t v = 0; v < 4; ++v)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(odd.value().positions[v][k], plain.value().positions[v][k]) << v;
+}
+
 TEST(OffReader, CountOverflowingInt64IsAParseError) {
   // Found by fuzz_off: a 19-digit count.
   auto off = loadMeshFile(testing::dataPath("../fuzz/regressions/fuzz_off/int64_overflow_count.off"));
