@@ -11,7 +11,7 @@
 #   FUZZ_SEED=1 scripts/fuzz.sh          fixed libFuzzer seed (npm test uses 1, so CI's smoke run
 #                                        explores the same inputs first every time); default random
 #
-# Needs clang, libclang-rt-14-dev, cmake, Eigen and tinyobjloader (scripts/setup.sh installs them).
+# Needs clang, libclang-rt-14-dev, cmake, Eigen and fast_float (scripts/setup.sh installs them).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 SECONDS_EACH="${1:-30}"

@@ -1,12 +1,12 @@
-// libFuzzer harness: the OBJ reader (our line scan + tinyobjloader + ear clipping + TriMesh::build).
+// libFuzzer harness: the OBJ reader (one pass over the bytes + ear clipping + TriMesh::build).
 // Invariants (see also fuzz_parse.hpp): an error has a known category and a message, and agrees
 // between parsePolygonSoup and loadMesh; a soup never refers to a missing vertex; build's answer
 // matches an independent oracle (fuzz_common.hpp); an accepted mesh satisfies every TriMesh
 // invariant and survives writing it as OFF and OBJ (with and without uv) and reading it back.
 // OBJ only: an accepted file's positions are the numbers written on its `v` lines (read here
-// independently: lines end at \n, \r or \r\n like tinyobjloader's, and every coordinate must be a
-// finite number), no face index exceeds the vertex count, and every `f` line of k corners gave k − 2
-// triangles.
+// independently with strtod, which rounds correctly like the reader: the same doubles; lines end at
+// \n, \r or \r\n, and every coordinate must be a finite number), no face index exceeds the vertex
+// count, and every `f` line of k corners gave k − 2 triangles.
 #include <cstdlib>
 #include <string>
 
@@ -70,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       FUZZ_CHECK(end == tokens[k].c_str() + tokens[k].size() && std::isfinite(x),
                  "accepted v line %zu whose coordinate %d is '%s', not a finite number (read as %.17g)", v, k,
                  tokens[k].c_str(), s.positions[v][k]);
-      FUZZ_CHECK(std::abs(x - s.positions[v][k]) <= 1e-12 * std::abs(x) + 1e-300,
+      FUZZ_CHECK(x == s.positions[v][k],
                  "v line %zu coordinate %d is '%s' but was read as %.17g", v, k, tokens[k].c_str(), s.positions[v][k]);
     }
   }
