@@ -248,9 +248,10 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   if (o.source != "auto") {
     auto v = parseVertex(mesh, o.source, "--source");
     if (!v) return fail(o, 2, errorCodeName(v.error().code), v.error().message);
-    options.autoSource = false;
     options.source = SurfacePoint::vertex(v.value());
   }
+  Timings t;
+  options.timings = &t;
   auto result = parameterize(mesh, options);
   if (!result) return fail(o, 2, errorCodeName(result.error().code), result.error().message);
   const Parameterization& p = result.value();
@@ -264,7 +265,6 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   for (const BoundaryCandidate& c : p.candidates)
     candidates.push_back({{"boundary", boundaryKindName(c.kind)}, {"l2", finiteOrNull(c.l2)},
                           {"linf", finiteOrNull(c.linf)}, {"flipped", c.flipped}, {"degenerate", c.degenerate}});
-  const ParamTimings& t = p.timingsMs;
   json out{{"source", p.source.index},
            {"boundary", boundaryKindName(p.boundary)},
            {"weights", weightKindName(p.weights)},
@@ -278,8 +278,8 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
            {"area_distortion", {{"mean", finiteOrNull(m.areaDistortionMean)}, {"max", finiteOrNull(m.areaDistortionMax)}}},
            {"residual", p.residual},
            {"candidates", candidates},
-           {"timings_ms", {{"load", loadMs}, {"source", t.source}, {"trace", t.trace}, {"boundary", t.boundary},
-                           {"weights", t.weights}, {"solve", t.solve}, {"metrics", t.metrics}, {"total", t.total}}}};
+           {"timings_ms", {{"load", loadMs}, {"source", t["source"]}, {"trace", t["trace"]}, {"boundary", t["boundary"]},
+                           {"weights", t["weights"]}, {"solve", t["solve"]}, {"metrics", t["metrics"]}, {"total", t["total"]}}}};
   if (!o.output.empty()) out["output"] = o.output;
   std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
   return 0;

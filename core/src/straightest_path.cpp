@@ -13,19 +13,6 @@
 
 namespace straightest {
 
-const char* traceStatusName(TraceStatus s) {
-  switch (s) {
-    case TraceStatus::Reached: return "reached";
-    case TraceStatus::HitBoundary: return "hit_boundary";
-    case TraceStatus::ReturnedToSource: return "returned_to_source";
-    case TraceStatus::Loop: return "loop";
-    case TraceStatus::StepLimit: return "step_limit";
-    case TraceStatus::NoExit: return "no_exit";
-    case TraceStatus::DegeneratePlane: return "degenerate_plane";
-  }
-  return "unknown";
-}
-
 namespace {
 
 /// Where the walk goes next: a vertex on the plane, or the crossing of a halfedge.
@@ -399,7 +386,7 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
   if (!plane) return singlePoint(TraceStatus::DegeneratePlane);
   plane_ = *plane;
   targetSet_.assign(targetFaces_);
-  const Vec3 t = normalized(SD - base_.normal * dot(base_.normal, SD));
+  const Vec3 t = *inPlaneDirection(base_, D);
   walk(destination, plane_, t, true, r);
   if (r.status != TraceStatus::Reached) {
     walk(destination, plane_, -t, false, second_);
@@ -419,6 +406,40 @@ std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
   return targets;
 }
 
+Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::vector<TargetSpec>& specs) {
+  std::vector<SurfacePoint> targets;
+  for (size_t i = 0; i < specs.size(); ++i) {
+    if (std::holds_alternative<BoundaryVertices>(specs[i])) {
+      const std::vector<SurfacePoint> boundary = boundaryTargets(mesh);
+      if (boundary.empty())
+        return Error{ErrorCode::Topology, "targets 'boundary': the mesh is closed (no boundary loop)"};
+      targets.insert(targets.end(), boundary.begin(), boundary.end());
+      continue;
+    }
+    auto p = validateSurfacePoint(mesh, std::get<SurfacePoint>(specs[i]));
+    if (!p) return Error{p.error().code, "target " + std::to_string(i) + ": " + p.error().message};
+    targets.push_back(p.value());
+  }
+  return targets;
+}
+
+PathSummary summarize(const PathBatch& batch) {
+  PathSummary s;
+  s.paths = static_cast<int64_t>(batch.status.size());
+  s.byStatus.assign(kTraceStatusCount, 0);
+  double sum = 0;
+  for (size_t i = 0; i < batch.status.size(); ++i) {
+    ++s.byStatus[static_cast<size_t>(batch.status[i])];
+    s.facesCrossed += batch.facesCrossed[i];
+    if (batch.status[i] != TraceStatus::Reached) continue;
+    ++s.reached;
+    sum += batch.length[i];
+    s.maxLength = std::max(s.maxLength, batch.length[i]);
+  }
+  s.meanLength = s.reached > 0 ? sum / static_cast<double>(s.reached) : 0.0;
+  return s;
+}
+
 PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source, std::vector<SurfacePoint> targets,
                                 bool keepPoints, const Progress& progress) {
   using Clock = std::chrono::steady_clock;
@@ -436,6 +457,7 @@ PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
   batch.length.reserve(n);
   batch.facesCrossed.reserve(n);
   batch.reversed.reserve(n);
+  batch.directions.reserve(n);
   batch.offsets.reserve(n + 1);
   batch.offsets.push_back(0);
   const auto t1 = Clock::now();
@@ -451,6 +473,9 @@ PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
     batch.length.push_back(path.length);
     batch.facesCrossed.push_back(path.facesCrossed);
     batch.reversed.push_back(path.reversed);
+    const auto direction = inPlaneDirection(batch.base, position(mesh, batch.targets[i]));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    batch.directions.push_back(direction ? *direction : Vec3{nan, nan, nan});
     batch.points.insert(batch.points.end(), path.positions.begin(), path.positions.end());
     batch.offsets.push_back(static_cast<int64_t>(batch.points.size()));
   }

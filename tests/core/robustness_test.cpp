@@ -113,10 +113,10 @@ TEST(Robustness, AlmostClosedCapReportsTheBaseNormalFallbackAndStaysBijectiveOnA
   const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(0), boundaryTargets(mesh), false);
   for (TraceStatus s : batch.status) EXPECT_LT(static_cast<int>(s), kTraceStatusCount);
   ParamOptions o;
-  o.boundary = BoundaryChoice::Circle;
+  o.boundary = BoundaryKind::Circle;
   const Parameterization p = parameterize(mesh, o).value();
   EXPECT_TRUE(p.metrics.bijective);  // Tutte: a convex boundary and convex weights never fold
-  o.boundary = BoundaryChoice::Measured;
+  o.boundary = BoundaryKind::Measured;
   auto measured = parameterize(mesh, o);  // may be poor, but it is a result or a clear error
   if (measured) {
     EXPECT_EQ(std::isfinite(measured.value().metrics.l2), measured.value().metrics.bijective);
