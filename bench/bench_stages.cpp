@@ -77,14 +77,17 @@ int main(int argc, char** argv) {
     const BasePlane base = basePlane(mesh, SurfacePoint::vertex(source));
     const double baseMs = msSince(t);
     (void)base;
-    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), false);
+    Timings traceTimings;
+    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh),
+                                                  TraceOptions{false, 0, &traceTimings})
+                                .value();
     if (r >= 0) {
       stage["source"].push_back(sourceMs);
       stage["base_plane"].push_back(baseMs);
-      stage["traces"].push_back(batch.prepareMs + batch.traceMs);
+      stage["traces"].push_back(traceTimings["prepare"] + traceTimings["trace"]);
     }
     paths = static_cast<int64_t>(batch.status.size());
-    reached = batch.reached();
+    reached = summarize(batch).reached;
     crossed = 0;
     for (int64_t c : batch.facesCrossed) crossed += c;
     ParamOptions options;

@@ -332,18 +332,22 @@ int main(int argc, char** argv) {
     // ---------------------------------------------------------------- ours: straightest paths
     std::fprintf(stderr, "bench_cgal: %s: straightest paths\n", row.name.c_str());
     PathBatch batch;
+    Timings pathTimings;
     const double oursPathsBase = resetPeakRss();
     const Timed oursPaths = timeIt(st.repeats, onceAboveMs, [&] {
-      batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets, /*keepPoints=*/false);
+      pathTimings = Timings();
+      batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets,
+                                    TraceOptions{/*keepPoints=*/false, 0, &pathTimings})
+                  .value();
     });
     const double oursPathsRss = peakRssMb();
     row.oursPathsMs = oursPaths.ms;
-    row.reached = batch.reached();
+    row.reached = summarize(batch).reached;
     out.add("ours_paths", Obj()
                               .add("ms", oursPaths.ms, 4)
                               .add("runs", oursPaths.runs)
-                              .add("prepare_ms", batch.prepareMs, 4)
-                              .add("trace_ms", batch.traceMs, 4)
+                              .add("prepare_ms", pathTimings["prepare"], 4)
+                              .add("trace_ms", pathTimings["trace"], 4)
                               .add("reached", row.reached)
                               .add("peak_rss_mb", oursPathsRss, 4)
                               .add("baseline_rss_mb", oursPathsBase, 4)

@@ -183,8 +183,9 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
     total += std::max(increment[i], minStep);
   }
   const Stopwatch traceTime;
-  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), false, progress);
-  if (batch.cancelled) return Error{ErrorCode::Cancelled, "cancelled while tracing the boundary"};
+  auto traced = traceStraightestPaths(mesh, source, boundaryTargets(mesh), TraceOptions{false}, progress);
+  if (!traced) return traced.error();
+  const PathBatch& batch = traced.value();
   record(timings, "trace", traceTime.ms());
   std::vector<double> fallback;
   map.polygon.resize(n);

@@ -7,7 +7,6 @@
 #include "straightest/straightest_path.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -395,10 +394,6 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
   return result_;
 }
 
-int64_t PathBatch::reached() const {
-  return std::count(status.begin(), status.end(), TraceStatus::Reached);
-}
-
 std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
   std::vector<SurfacePoint> targets;
   if (mesh.boundaryLoops().empty()) return targets;
@@ -440,19 +435,17 @@ PathSummary summarize(const PathBatch& batch) {
   return s;
 }
 
-PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source, std::vector<SurfacePoint> targets,
-                                bool keepPoints, const Progress& progress) {
-  using Clock = std::chrono::steady_clock;
-  auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
+                                          std::vector<SurfacePoint> targets, const TraceOptions& options,
+                                          const Progress& progress) {
+  Stopwatch time;
   PathBatch batch;
-  const auto t0 = Clock::now();
-  TraceOptions options;
-  options.keepPoints = keepPoints;
   StraightestPathTracer tracer(mesh, source, options);
   batch.source = source;
   batch.base = tracer.base();
   batch.targets = std::move(targets);
   const size_t n = batch.targets.size();
+  batch.targetPositions.reserve(n);
   batch.status.reserve(n);
   batch.length.reserve(n);
   batch.facesCrossed.reserve(n);
@@ -460,29 +453,26 @@ PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
   batch.directions.reserve(n);
   batch.offsets.reserve(n + 1);
   batch.offsets.push_back(0);
-  const auto t1 = Clock::now();
+  record(options.timings, "prepare", time.lap());
   const size_t step = std::max<size_t>(1, n / 100);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (size_t i = 0; i < n; ++i) {
-    if (i % step == 0 && !report(progress, "trace", static_cast<double>(i) / n)) {
-      batch.cancelled = true;
-      batch.targets.resize(i);
-      break;
-    }
+    if (i % step == 0 && !report(progress, "trace", static_cast<double>(i) / n))
+      return cancelledError("straightest paths");
     const StraightestPath& path = tracer.trace(batch.targets[i]);
     batch.status.push_back(path.status);
     batch.length.push_back(path.length);
     batch.facesCrossed.push_back(path.facesCrossed);
     batch.reversed.push_back(path.reversed);
-    const auto direction = inPlaneDirection(batch.base, position(mesh, batch.targets[i]));
-    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const Vec3 D = position(mesh, batch.targets[i]);
+    batch.targetPositions.push_back(D);
+    const auto direction = inPlaneDirection(batch.base, D);
     batch.directions.push_back(direction ? *direction : Vec3{nan, nan, nan});
     batch.points.insert(batch.points.end(), path.positions.begin(), path.positions.end());
     batch.offsets.push_back(static_cast<int64_t>(batch.points.size()));
   }
-  const auto t2 = Clock::now();
-  if (!batch.cancelled) report(progress, "trace", 1.0);
-  batch.prepareMs = ms(t1 - t0);
-  batch.traceMs = ms(t2 - t1);
+  record(options.timings, "trace", time.lap());
+  report(progress, "trace", 1.0);
   return batch;
 }
 

@@ -26,6 +26,7 @@
 
 #include "straightest/base_plane.hpp"
 #include "straightest/progress.hpp"
+#include "straightest/timings.hpp"
 
 namespace straightest {
 
@@ -47,6 +48,7 @@ inline constexpr double kOnPlaneRel = 1e-9;
 struct TraceOptions {
   bool keepPoints = true;   // store the path's surface points and positions
   int64_t maxSteps = 0;     // 0: 2·faces + vertices + 16 (more than any simple walk can take)
+  Timings* timings = nullptr;  // batch: receives "prepare" (base plane, tables) and "trace" (all walks)
 };
 
 struct StraightestPath {
@@ -124,6 +126,7 @@ struct PathBatch {
   SurfacePoint source;
   BasePlane base;
   std::vector<SurfacePoint> targets;
+  std::vector<Vec3> targetPositions;
   std::vector<TraceStatus> status;
   std::vector<double> length;
   std::vector<int64_t> facesCrossed;
@@ -131,9 +134,6 @@ struct PathBatch {
   std::vector<Vec3> directions;  // per target: inPlaneDirection toward it (NaN × 3 where undefined)
   std::vector<Vec3> points;
   std::vector<int64_t> offsets;
-  double prepareMs = 0, traceMs = 0;  // setup (base plane, tables) and all traces
-  bool cancelled = false;             // the progress callback stopped it: only the first paths are here
-  int64_t reached() const;
 };
 
 /// The vertices of the longest boundary loop, in order (empty for a closed mesh).
@@ -157,8 +157,10 @@ struct PathSummary {
 };
 PathSummary summarize(const PathBatch& batch);
 
-/// Traces every target (each a valid surface point; see validateSurfacePoint). Progress stage: "trace".
-PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
-                                std::vector<SurfacePoint> targets, bool keepPoints, const Progress& progress = {});
+/// Traces every target (each a valid surface point; see validateSurfacePoint). Progress stage: "trace";
+/// cancelling returns a Cancelled error (never a partial batch).
+Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
+                                          std::vector<SurfacePoint> targets, const TraceOptions& options = {},
+                                          const Progress& progress = {});
 
 }  // namespace straightest
