@@ -46,7 +46,7 @@ BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
                 "): area-weighted normal at the source used";
     return base;
   }
-  // Orient like the surface at S. (The mesh's total area-weighted normal, DESIGN's first choice, points
+  // Orient like the surface at S. (The mesh's total area-weighted normal, the obvious alternative, points
   // away from the hole of a nearly closed surface and would flip the base plane of sources near it.)
   const Vec3 local = areaWeightedNormal(mesh, source);
   base.normal = normalized(dot(mean, local) < 0 ? -mean : mean);

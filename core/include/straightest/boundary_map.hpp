@@ -1,4 +1,4 @@
-// boundary_map.hpp — where the boundary loop of a disk goes in the parameter plane (DESIGN §3).
+// boundary_map.hpp — where the boundary loop of a disk goes in the parameter plane.
 //
 //  - measured: boundary vertex b_i goes to r_i (cos θ_i, sin θ_i), θ_i = 2π · (cumulative 3D angle
 //    ∠(b_j − S, b_j+1 − S), j < i) / (sum over the loop), each angle raised to at least kMinAngleStep

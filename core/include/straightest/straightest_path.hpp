@@ -1,7 +1,7 @@
 // straightest_path.hpp — the straightest path from a source to destinations by cutting planes.
 //
 // The path to D is the section of the mesh by the cutting plane (through S, perpendicular to the
-// base plane, containing D), walked face by face from S toward D (DESIGN §3):
+// base plane, containing D), walked face by face from S toward D:
 //  - start into the face around S whose section leaves on D's side (t = D − S without its base-normal
 //    component); at a saddle, the one best aligned with t;
 //  - cross edges; where the plane passes through a vertex (|signed distance| <= kOnPlaneRel · mean
