@@ -13,6 +13,16 @@ Vec3 areaWeightedNormal(const TriMesh& mesh, const SurfacePoint& p) {
   return normalized(sum);
 }
 
+std::vector<Vec3> vertexNormals(const TriMesh& mesh) {
+  std::vector<Vec3> sums(mesh.numVertices());
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    const Vec3 weighted = mesh.faceNormal(f) * mesh.faceArea(f);
+    for (int32_t v : mesh.triangle(f)) sums[v] += weighted;
+  }
+  for (Vec3& n : sums) n = normalized(n);
+  return sums;
+}
+
 BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
   BasePlane base;
   base.origin = position(mesh, source);
@@ -36,7 +46,7 @@ BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
                 "): area-weighted normal at the source used";
     return base;
   }
-  // Orient like the surface at S. (The mesh's total area-weighted normal, DESIGN's first choice, points
+  // Orient like the surface at S. (The mesh's total area-weighted normal, the obvious alternative, points
   // away from the hole of a nearly closed surface and would flip the base plane of sources near it.)
   const Vec3 local = areaWeightedNormal(mesh, source);
   base.normal = normalized(dot(mean, local) < 0 ? -mean : mean);
@@ -49,6 +59,12 @@ std::optional<CuttingPlane> cuttingPlane(const BasePlane& base, const Vec3& dest
   const double len = norm(d);
   if (!(len > 0) || !(norm(m) > kCuttingPlaneMinSine * len)) return std::nullopt;
   return CuttingPlane{base.origin, normalized(m)};
+}
+
+std::optional<Vec3> inPlaneDirection(const BasePlane& base, const Vec3& destination) {
+  if (!cuttingPlane(base, destination)) return std::nullopt;
+  const Vec3 d = destination - base.origin;
+  return normalized(d - base.normal * dot(base.normal, d));
 }
 
 }  // namespace straightest
