@@ -99,13 +99,6 @@ double relativeResidual(const CsrMatrix& A, const std::vector<double>& rhs, cons
 
 }  // namespace
 
-Expected<LinearSolver> parseLinearSolver(const std::string& name) {
-  if (name == "multigrid") return LinearSolver::Multigrid;
-  if (name == "lu") return LinearSolver::SparseLU;
-  if (name == "bicgstab") return LinearSolver::BiCGSTAB;
-  return Error{ErrorCode::InvalidArgument, "unknown solver '" + name + "' (use multigrid, lu or bicgstab)"};
-}
-
 Expected<LinearSolveStats> solve(CsrMatrix A, const std::vector<double>& rhs, std::vector<double>& x,
                                  LinearSolver solver, const Progress& progress) {
   const size_t unknowns = 2 * static_cast<size_t>(std::max(A.rows, 0));
