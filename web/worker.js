@@ -7,7 +7,8 @@
 // Protocol (every request carries an `id`; the reply echoes it; 'init' comes first):
 //   → { id, type: 'init', moduleUrl }                        ← { id, type: 'ready', samples: string[] }
 //   → { id, type: 'sample', name, restore? }                 ← { id, type: 'mesh', ... } (below)
-//   → { id, type: 'file', name, format, bytes: ArrayBuffer, restore? } ← { id, type: 'mesh', ... }
+//   → { id, type: 'file', name, bytes: ArrayBuffer, restore? }  ← { id, type: 'mesh', ... }
+//        (the format follows the file name's extension, else the content)
 //        'mesh' replies: { id, type: 'mesh', label, positions: Float32Array, indices: Uint32Array,
 //                          normals: Float32Array, info, timeMs }  (buffers transferred)
 //        normals: area-weighted unit vertex normals for smooth shading (made here so the page's
@@ -37,8 +38,9 @@
 //        chosen boundary's polygon is there; the others have polygon null and skipped: true.
 //   → { id, type: 'compare', source }                        ← { id, type: 'progress', stage:
 //        'compare', fraction, done, total } after each cell, then { id, type: 'comparison', source,
-//        rows: [{ boundary, weights, l2, linf, flipped, degenerate, bijective, timeMs, error }] }
-//        (3 boundaries × 4 weights; a cell that fails has error set and no numbers)
+//        rows: [{ boundary, weights, l2, linf, flipped, degenerate, bijective, timeMs, error }], best }
+//        (3 boundaries × 4 weights; a cell that fails has error set and no numbers; best: the row
+//        to highlight, or null)
 //   → { id, type: 'exportObj', uv: Float32Array }            ← { id, type: 'obj', text }
 //        OBJ of the current mesh in its input vertex order, with the given uv as `vt` lines.
 //   any failure                                              ← { id, type: 'error', message, category }
@@ -59,29 +61,25 @@
 // Cancelling: the work runs inside synchronous WASM calls, so the worker cannot read a message that
 // would stop it; the page terminates the worker instead and starts a new one (see main.js).
 
+import {
+  BOUNDARY_KINDS, boundaryPolygons, boundaryVertices, compareParameterizations, formatFromFileName,
+  parameterizeStages, vertexNormals,
+} from './core-gaps.js';
+
 let modulePromise = null; // resolves to the object returned by createStraightest()
 let currentMesh = null; // the mesh later operations will work on; deleted when replaced
 // Per-mesh data the handlers reuse: whether the mesh has a boundary, the boundary targets once known
 // and the overlay polygons per source.
 let currentData = null; // { closed, boundary, polygons }
 
-const BOUNDARIES = ['measured', 'circle', 'square'];
-const WEIGHTS = ['shape-preserving', 'mean-value', 'cotan', 'uniform'];
-
 function straightest() {
   if (!modulePromise) throw new Error('the geometry worker was not initialized');
   return modulePromise;
 }
 
-function formatFromName(name) {
-  const ext = /\.([^.]+)$/.exec(name ?? '')?.[1]?.toLowerCase();
-  return ext === 'obj' || ext === 'off' ? ext : 'auto';
-}
-
 // ------------------------------------------------------------------ progress
 
 const THROTTLE_MS = 50; // at most one intermediate 'progress' message per 50 ms and request
-const PARAMETERIZE_STAGES = ['source', 'trace', 'weights', 'solve', 'metrics'];
 
 /** The stages a request goes through, in order (see the protocol above). */
 function plannedStages(request) {
@@ -94,9 +92,7 @@ function plannedStages(request) {
     case 'distances':
       return ['heat', 'upload'];
     case 'parameterize': {
-      const traced = ['measured', 'auto', undefined].includes(request.boundary);
-      const core = PARAMETERIZE_STAGES.filter((stage) => stage !== 'trace' || traced);
-      return [...core, ...(request.overlays === false ? [] : ['overlays']), 'upload'];
+      return [...parameterizeStages(request.boundary), ...(request.overlays === false ? [] : ['overlays']), 'upload'];
     }
     case 'compare':
       return ['compare'];
@@ -160,35 +156,6 @@ class StageProgress {
 
 // ------------------------------------------------------------------ meshes
 
-/** Area-weighted vertex normals, unit length (zero for unreferenced vertices), as Float32. */
-function vertexNormals(positions, indices) {
-  const sums = new Float64Array(positions.length);
-  for (let f = 0; f < indices.length; f += 3) {
-    const a = 3 * indices[f];
-    const b = 3 * indices[f + 1];
-    const c = 3 * indices[f + 2];
-    const ux = positions[b] - positions[a];
-    const uy = positions[b + 1] - positions[a + 1];
-    const uz = positions[b + 2] - positions[a + 2];
-    const vx = positions[c] - positions[a];
-    const vy = positions[c + 1] - positions[a + 1];
-    const vz = positions[c + 2] - positions[a + 2];
-    // The cross product's length is twice the face area: the sum weights the faces by area.
-    const nx = uy * vz - uz * vy;
-    const ny = uz * vx - ux * vz;
-    const nz = ux * vy - uy * vx;
-    sums[a] += nx; sums[a + 1] += ny; sums[a + 2] += nz;
-    sums[b] += nx; sums[b + 1] += ny; sums[b + 2] += nz;
-    sums[c] += nx; sums[c + 1] += ny; sums[c + 2] += nz;
-  }
-  const normals = new Float32Array(positions.length);
-  for (let v = 0; v < sums.length; v += 3) {
-    const length = Math.hypot(sums[v], sums[v + 1], sums[v + 2]);
-    if (length > 0) for (let c = 0; c < 3; c++) normals[v + c] = sums[v + c] / length;
-  }
-  return normals;
-}
-
 /**
  * Replaces the current mesh and builds the 'mesh' reply (positions as Float32 for WebGL; none when
  * restoring a mesh the page still shows).
@@ -202,10 +169,9 @@ function meshReply(mesh, label, startTime, progress, restore) {
   try {
     info = mesh.info();
     if (!restore) {
-      const exact = mesh.positions();
+      positions = Float32Array.from(mesh.positions());
       indices = mesh.indices();
-      normals = vertexNormals(exact, indices);
-      positions = Float32Array.from(exact);
+      normals = vertexNormals(mesh);
     }
   } catch (err) {
     mesh.delete();
@@ -243,7 +209,7 @@ function owned(array) {
 /** The vertices of the longest boundary loop as targets (computed once per mesh). */
 function boundaryTargets(mesh, source) {
   if (currentData.closed) return [];
-  currentData.boundary ??= mesh.straightestPaths({ source, targets: 'boundary', points: false }).targets;
+  currentData.boundary ??= boundaryVertices(mesh, source);
   return currentData.boundary;
 }
 
@@ -264,32 +230,21 @@ function describeError(err) {
 }
 
 /**
- * The boundary polygons of 'measured', 'circle' and 'square' for the layout overlay, one
- * parameterization each. A polygon depends only on the boundary and the source, not on the weights,
- * so the cheapest weights do and the result is kept per source; `known` (the reply's own
- * boundary and polygon) saves one of the three solves. Without `all`, only `known` is listed (the
- * others skipped). Reports the 'overlays' stage (one step per solve).
+ * The boundary polygons of every kind for the layout overlay (see boundaryPolygons), kept per
+ * source; `known` (the reply's own boundary and polygon) saves one of the solves. Without `all`,
+ * only `known` is listed (the others skipped). Reports the 'overlays' stage.
  */
 function boundaryOverlays(mesh, source, known, all, progress) {
   const key = JSON.stringify(source);
   let overlays = currentData.polygons.get(key);
   if (!overlays && !all) {
-    return BOUNDARIES.map((boundary) => (boundary === known.boundary
-      ? { boundary, polygon: known.polygon.slice(), error: null }
+    return BOUNDARY_KINDS.map((boundary) => (boundary === known.boundary
+      ? { boundary, polygon: Float32Array.from(known.polygon), error: null }
       : { boundary, polygon: null, error: null, skipped: true }));
   }
   if (!overlays) {
-    let done = 0;
-    overlays = BOUNDARIES.map((boundary) => {
-      if (boundary === known.boundary) return { boundary, polygon: known.polygon.slice(), error: null };
-      progress.update('overlays', done++ / (BOUNDARIES.length - 1));
-      try {
-        const { boundaryPolygon } = mesh.parameterize({ source, boundary, weights: 'uniform' });
-        return { boundary, polygon: Float32Array.from(boundaryPolygon), error: null };
-      } catch (err) {
-        return { boundary, polygon: null, error: describeError(err).message };
-      }
-    });
+    overlays = boundaryPolygons(mesh, source, BOUNDARY_KINDS, known,
+      (done, total) => progress.update('overlays', done / total));
     currentData.polygons.set(key, overlays);
   }
   // Copies: the cached polygons stay here when the reply's buffers are transferred.
@@ -309,11 +264,11 @@ const handlers = {
     return meshReply(st.sample(name), name, start, progress, restore);
   },
 
-  async file({ name, format, bytes, restore }, progress) {
+  async file({ name, bytes, restore }, progress) {
     const st = await straightest();
     const start = performance.now();
     // One synchronous call: no progress inside it ('load' is 0 before and 1 after).
-    const mesh = st.loadMesh(new Uint8Array(bytes), format ?? formatFromName(name));
+    const mesh = st.loadMesh(new Uint8Array(bytes), formatFromFileName(name));
     return meshReply(mesh, name, start, progress, restore);
   },
 
@@ -384,24 +339,9 @@ const handlers = {
 
   async compare({ source = 'auto' }, progress) {
     const mesh = requireMesh();
-    const total = BOUNDARIES.length * WEIGHTS.length;
-    const rows = [];
-    for (const boundary of BOUNDARIES) {
-      for (const weights of WEIGHTS) {
-        const start = performance.now();
-        try {
-          const { stretch, flipped, degenerate, bijective } = mesh.parameterize({ source, boundary, weights });
-          rows.push({
-            boundary, weights, l2: stretch.l2, linf: stretch.linf, flipped, degenerate, bijective,
-            timeMs: performance.now() - start, error: null,
-          });
-        } catch (err) {
-          rows.push({ boundary, weights, timeMs: performance.now() - start, error: describeError(err).message });
-        }
-        progress.update('compare', rows.length / total, { done: rows.length, total });
-      }
-    }
-    return { reply: { type: 'comparison', source, rows } };
+    const { rows, best } = compareParameterizations(mesh, source,
+      (done, total) => progress.update('compare', done / total, { done, total }));
+    return { reply: { type: 'comparison', source, rows, best } };
   },
 
   async exportObj({ uv }, progress) {
