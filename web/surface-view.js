@@ -49,6 +49,7 @@ export function createSurfaceView(view) {
 
   /** Per-vertex colours (linear RGB floats) over the texture, or null for none. */
   function setColors(colors) {
+    if (!colors && !material.vertexColors) return; // nothing to drop (and no material rebuild)
     if (colors) {
       surface?.geometry.setAttribute('color', new THREE.BufferAttribute(colors, 3));
     } else {
