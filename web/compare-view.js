@@ -5,7 +5,6 @@
 import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { BOUNDARY_COLORS } from './colormap.js';
-import { BOUNDARY_KINDS } from './core-gaps.js';
 import { isCancelled } from './worker-client.js';
 import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 
@@ -57,7 +56,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
     const table = $('compare-table');
     const body = table.tBodies[0];
     body.replaceChildren();
-    for (const boundary of BOUNDARY_KINDS) {
+    for (const boundary of session.boundaryKinds) {
       // A header row per boundary, then its rows, one per weights.
       const header = body.insertRow();
       header.className = 'group';

@@ -1,6 +1,7 @@
 // What the page still derives itself although it is the core's to compute: each piece behind one
-// small function here (no DOM, no three.js: the worker and the page both import it), so that
-// switching a piece to the core's own call is a one-line change and this file can shrink to nothing.
+// small function here, called by the worker only (the page draws the worker's replies), so that
+// switching a piece to the core's own call is a one-line change in worker.js and this file can
+// shrink to nothing. No DOM, no three.js.
 
 // ------------------------------------------------------------------ enum name lists
 
@@ -9,7 +10,7 @@ export const BOUNDARY_KINDS = ['measured', 'circle', 'square'];
 /** The interior weights of mesh.parameterize(). */
 export const WEIGHT_KINDS = ['shape-preserving', 'mean-value', 'cotan', 'uniform'];
 
-// ------------------------------------------------------------------ files
+// ------------------------------------------------------------------ files (worker)
 
 /** The loadMesh format of a file name: 'obj' or 'off' by its extension, else 'auto' (sniffed). */
 export function formatFromFileName(name) {
@@ -120,40 +121,45 @@ export function parameterizeStages(boundary) {
   return ['source', ...(traced ? ['trace'] : []), 'weights', 'solve', 'metrics'];
 }
 
-// ------------------------------------------------------------------ path data (page)
+// ------------------------------------------------------------------ path data (worker)
 
 /**
- * The in-plane direction of path i's cutting plane: the unit vector from the source S towards the
- * destination D with its component along the base normal n removed (the plane is spanned by n and
- * it), or null when D − S is parallel to n. D is the target's position, or the path's end when the
- * core could not place the target. `scale` sets what counts as parallel.
+ * Per path, the in-plane direction of its cutting plane (x, y, z each; NaN × 3 where undefined): the
+ * unit vector from the source S towards the destination D with its component along the base normal
+ * n removed (the plane is spanned by n and it). D is the target's position, or the path's end when
+ * the core could not place the target; D − S parallel to n (relative to `scale`) has none.
  */
-export function cuttingPlaneDirection(reply, i, scale) {
-  const { sourcePosition: s, normal: n0 } = reply;
+export function pathDirections(result, scale) {
+  const { sourcePosition: s, normal: n0, targetPositions, points, offsets, count } = result;
   const nLength = Math.hypot(...n0);
   const n = n0.map((c) => c / nLength);
-  const target = reply.targetPositions.subarray(3 * i, 3 * i + 3);
-  const end = 3 * reply.offsets[i + 1];
-  const d = Number.isFinite(target[0]) ? target : reply.points.subarray(end - 3, end);
-  const along = [d[0] - s[0], d[1] - s[1], d[2] - s[2]];
-  const dot = along[0] * n[0] + along[1] * n[1] + along[2] * n[2];
-  for (let c = 0; c < 3; c++) along[c] -= dot * n[c];
-  const length = Math.hypot(...along);
-  if (length < 1e-9 * scale) return null;
-  return along.map((c) => c / length);
+  const directions = new Float32Array(3 * count).fill(NaN);
+  for (let i = 0; i < count; i++) {
+    const target = targetPositions.subarray(3 * i, 3 * i + 3);
+    const end = 3 * offsets[i + 1];
+    if (!Number.isFinite(target[0]) && end === 3 * offsets[i]) continue; // no point to aim at
+    const d = Number.isFinite(target[0]) ? target : points.subarray(end - 3, end);
+    const along = [d[0] - s[0], d[1] - s[1], d[2] - s[2]];
+    const dot = along[0] * n[0] + along[1] * n[1] + along[2] * n[2];
+    for (let c = 0; c < 3; c++) along[c] -= dot * n[c];
+    const length = Math.hypot(...along);
+    if (length < 1e-9 * scale) continue;
+    for (let c = 0; c < 3; c++) directions[3 * i + c] = along[c] / length;
+  }
+  return directions;
 }
 
 /**
- * The summary of a set of paths: { count, reached, failures: Map(status -> count), meanLength and
- * maxLength of the reached paths (0 without any), facesCrossed sum and max }.
+ * The summary of a set of paths: { count, reached, byStatus: { status: count } of the failed ones,
+ * meanLength and maxLength of the reached paths (0 without any), facesCrossed sum and max }.
  */
 export function pathSummary({ count, reached, statuses, lengths, facesCrossed }) {
-  const failures = new Map();
+  const byStatus = {};
   let sum = 0;
   let maxLength = 0;
   statuses.forEach((status, i) => {
     if (status !== 'reached') {
-      failures.set(status, (failures.get(status) ?? 0) + 1);
+      byStatus[status] = (byStatus[status] ?? 0) + 1;
       return;
     }
     sum += lengths[i];
@@ -165,5 +171,5 @@ export function pathSummary({ count, reached, statuses, lengths, facesCrossed })
     facesSum += n;
     facesMax = Math.max(facesMax, n);
   }
-  return { count, reached, failures, meanLength: reached ? sum / reached : 0, maxLength, facesSum, facesMax };
+  return { count, reached, byStatus, meanLength: reached ? sum / reached : 0, maxLength, facesSum, facesMax };
 }

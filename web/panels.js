@@ -2,7 +2,6 @@
 // and how the page writes numbers and surface points. Only DOM: it shows what it is handed.
 
 import { hooks, setState } from './test-hooks.js';
-import { pathSummary } from './core-gaps.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -71,7 +70,7 @@ export function showInfo(info, label) {
  * (the mesh has no boundary) }; drawn: { plain, stride } of the path view.
  */
 export function showPathStats(reply, request, drawn) {
-  const summary = pathSummary(reply);
+  const { summary } = reply;
   const { count, reached } = summary;
   const source = $('stats-source');
   source.textContent = describePoint(reply.source, false) + (request.isDefault ? ' (default)' : '');
@@ -85,14 +84,15 @@ export function showPathStats(reply, request, drawn) {
   $('stats-failed').textContent = String(count - reached);
 
   const list = $('stats-failures');
-  list.replaceChildren(...[...summary.failures].map(([status, n]) => {
+  const failures = Object.entries(summary.byStatus);
+  list.replaceChildren(...failures.map(([status, n]) => {
     const item = document.createElement('li');
     item.innerHTML = `<code></code> <span></span>`;
     item.firstChild.textContent = status;
     item.lastChild.textContent = `${n}`;
     return item;
   }));
-  list.hidden = summary.failures.size === 0;
+  list.hidden = failures.length === 0;
 
   $('stats-length').textContent = reached
     ? `${formatNumber(summary.meanLength)} / ${formatNumber(summary.maxLength)}`

@@ -8,7 +8,6 @@ import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js
 import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
-import { cuttingPlaneDirection } from './core-gaps.js';
 
 const PATH_COLOR = 0x1f4fb8; // reached paths
 const FAILED_COLOR = 0xe5484d; // partial paths of failed traces (dashed)
@@ -271,9 +270,8 @@ export function createPathView(view, { onClear = () => {} } = {}) {
       highlightMaterial.color.set(reply.statuses[i] === 'reached' ? HIGHLIGHT_COLOR : FAILED_HIGHLIGHT_COLOR);
       line.visible = true;
     }
-    const direction = cuttingPlaneDirection(reply, i, view.scale);
-    if (!direction) return; // the destination lies along the normal: no plane to draw
-    const along = new THREE.Vector3(...direction);
+    const along = new THREE.Vector3().fromArray(reply.directions, 3 * i);
+    if (!Number.isFinite(along.x)) return; // the destination lies along the normal: no plane to draw
     // Extent of the quad: the path and its destination in the (along, n) coordinates of the plane,
     // plus a margin.
     const uRange = [0, 0];

@@ -34,6 +34,7 @@ export function createSession({ observer, display }) {
   let displayed = null; // where the mesh on display came from: { sample } or { file } (see reloadInto)
   let label = ''; // the sample or file name of the mesh on display
   let status = ''; // the status line of the mesh on display
+  let boundaryKinds = []; // the worker's names of the parameterization's boundaries
 
   /**
    * Sends a request to the worker; resolves with its reply, rejects with an Error (+ category;
@@ -153,8 +154,10 @@ export function createSession({ observer, display }) {
   async function start() {
     setState('loading');
     try {
-      const { samples } = await request('init', { moduleUrl: MODULE_URL });
+      const ready = await request('init', { moduleUrl: MODULE_URL });
+      const { samples } = ready;
       hooks.samples = samples;
+      boundaryKinds = ready.boundaryKinds;
       const select = $('sample-select');
       select.replaceChildren(...samples.map((name) => new Option(name, name)));
       select.value = samples.includes('mountain') ? 'mountain' : samples[0];
@@ -181,6 +184,10 @@ export function createSession({ observer, display }) {
     /** The status line of the mesh on display. */
     get status() {
       return status;
+    },
+    /** The boundary kinds of the parameterization ('auto' aside), in the core's order. */
+    get boundaryKinds() {
+      return boundaryKinds;
     },
     /** mesh.info() of the mesh on display, or null. */
     get info() {

@@ -5,7 +5,8 @@
 // with its import map (import.meta.resolve) and passes the URL in the 'init' request.
 //
 // Protocol (every request carries an `id`; the reply echoes it; 'init' comes first):
-//   → { id, type: 'init', moduleUrl }                        ← { id, type: 'ready', samples: string[] }
+//   → { id, type: 'init', moduleUrl }   ← { id, type: 'ready', samples: string[], boundaryKinds }
+//        (the boundary names mesh.parameterize() takes, 'auto' aside, in the core's order)
 //   → { id, type: 'sample', name, restore? }                 ← { id, type: 'mesh', ... } (below)
 //   → { id, type: 'file', name, bytes: ArrayBuffer, restore? }  ← { id, type: 'mesh', ... }
 //        (the format follows the file name's extension, else the content)
@@ -24,7 +25,11 @@
 //                           targets, targetPositions: Float32Array (xyz per target, from the core),
 //                           count, reached, statuses, lengths: Float64Array,
 //                           facesCrossed: Uint32Array, points: Float32Array, offsets: Uint32Array,
-//                           timings: { prepare, trace }, timeMs }  (buffers transferred)
+//                           directions: Float32Array (per path the unit in-plane direction of its
+//                           cutting plane, NaN × 3 where there is none), summary: { count, reached,
+//                           byStatus: { status: n } of the failed paths, meanLength, maxLength (of
+//                           the reached ones), facesSum, facesMax }, timings: { prepare, trace },
+//                           timeMs }  (buffers transferred)
 //   → { id, type: 'distances', source }                      ← { id, type: 'distances', source,
 //        distances: Float32Array (heat method, one per vertex), max, timeMs }
 //   → { id, type: 'parameterize', source, boundary, weights, overlays } ← { id, type: 'parameterization', ... }
@@ -59,11 +64,11 @@
 // its first check) is completed when a later one starts.
 //
 // Cancelling: the work runs inside synchronous WASM calls, so the worker cannot read a message that
-// would stop it; the page terminates the worker instead and starts a new one (see main.js).
+// would stop it; the page terminates the worker instead and starts a new one (see session.js).
 
 import {
   BOUNDARY_KINDS, boundaryPolygons, boundaryVertices, compareParameterizations, formatFromFileName,
-  parameterizeStages, vertexNormals,
+  parameterizeStages, pathDirections, pathSummary, vertexNormals,
 } from './core-gaps.js';
 
 let modulePromise = null; // resolves to the object returned by createStraightest()
@@ -181,6 +186,7 @@ function meshReply(mesh, label, startTime, progress, restore) {
   currentMesh = mesh;
   currentData = {
     closed: (info.boundaryLoops ?? []).length === 0,
+    scale: Math.hypot(...info.bbox.max.map((m, c) => m - info.bbox.min[c])), // the bbox diagonal
     boundary: null,
     polygons: new Map(), // source key -> overlays (see boundaryOverlays)
   };
@@ -255,7 +261,7 @@ const handlers = {
   async init({ moduleUrl }) {
     modulePromise ??= import(moduleUrl).then(({ createStraightest }) => createStraightest());
     const st = await straightest();
-    return { reply: { type: 'ready', samples: st.sampleNames() } };
+    return { reply: { type: 'ready', samples: st.sampleNames(), boundaryKinds: BOUNDARY_KINDS } };
   },
 
   async sample({ name, restore }, progress) {
@@ -295,10 +301,12 @@ const handlers = {
       facesCrossed: owned(result.facesCrossed),
       points: owned(result.points),
       offsets: owned(result.offsets),
+      directions: pathDirections(result, currentData.scale),
+      summary: pathSummary(result),
       timings: result.timings,
       timeMs: performance.now() - start,
     };
-    const transfer = [reply.targetPositions, reply.lengths, reply.facesCrossed, reply.points, reply.offsets];
+    const transfer = [reply.targetPositions, reply.lengths, reply.facesCrossed, reply.points, reply.offsets, reply.directions];
     return { reply, transfer: transfer.map((a) => a.buffer) };
   },
 
