@@ -33,11 +33,13 @@ int main(int argc, char** argv) {
     std::vector<double> traceMs;
     int64_t crossed = 0, reached = 0;
     for (int r = 0; r < repeats; ++r) {
-      const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets, false);
-      traceMs.push_back(batch.traceMs);
+      Timings timings;
+      const PathBatch batch =
+          traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets, TraceOptions{false, 0, &timings}).value();
+      traceMs.push_back(timings["trace"]);
       crossed = 0;
       for (int64_t c : batch.facesCrossed) crossed += c;
-      reached = batch.reached();
+      reached = summarize(batch).reached;
     }
     std::sort(traceMs.begin(), traceMs.end());
     const double median = traceMs[traceMs.size() / 2];

@@ -77,37 +77,40 @@ int main(int argc, char** argv) {
     const BasePlane base = basePlane(mesh, SurfacePoint::vertex(source));
     const double baseMs = msSince(t);
     (void)base;
-    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), false);
+    Timings traceTimings;
+    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh),
+                                                  TraceOptions{false, 0, &traceTimings})
+                                .value();
     if (r >= 0) {
       stage["source"].push_back(sourceMs);
       stage["base_plane"].push_back(baseMs);
-      stage["traces"].push_back(batch.prepareMs + batch.traceMs);
+      stage["traces"].push_back(traceTimings["prepare"] + traceTimings["trace"]);
     }
     paths = static_cast<int64_t>(batch.status.size());
-    reached = batch.reached();
+    reached = summarize(batch).reached;
     crossed = 0;
     for (int64_t c : batch.facesCrossed) crossed += c;
     ParamOptions options;
-    options.autoSource = false;
     options.source = SurfacePoint::vertex(source);
+    Timings pt;
+    options.timings = &pt;
     const auto p = parameterize(mesh, options);
     if (!p) {
       std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
                   p.error().message.c_str());
       return 2;
     }
-    const ParamTimings& pt = p.value().timingsMs;
     l2 = p.value().metrics.l2;
     bijective = p.value().metrics.bijective;
     if (r < 0) {
       if (++warmups < 200 && msSince(warmStart) < 1500) --r;  // stay in the warm-up
       continue;
     }
-    stage["boundary"].push_back(pt.boundary);
-    stage["weights"].push_back(pt.weights);
-    stage["solve"].push_back(pt.solve);
-    stage["metrics"].push_back(pt.metrics);
-    stage["param_total"].push_back(pt.total);
+    stage["boundary"].push_back(pt["boundary"]);
+    stage["weights"].push_back(pt["weights"]);
+    stage["solve"].push_back(pt["solve"]);
+    stage["metrics"].push_back(pt["metrics"]);
+    stage["param_total"].push_back(pt["total"]);
   }
   std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,\"paths\":%lld,"
               "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"peak_memory_mb\":%.1f,\"stages_ms\":{",

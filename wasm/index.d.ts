@@ -24,7 +24,7 @@ export interface MeshInfo {
   problems: string[];
 }
 
-/** Error categories: see core/include/straightest/error.hpp. */
+/** Error categories: see core/include/straightest/error.hpp (also listed by `st.errorCategories`). */
 export type ErrorCategory =
   | 'io' | 'unsupported_format' | 'parse' | 'empty' | 'too_large' | 'non_finite' | 'index_out_of_range'
   | 'invalid_face' | 'duplicate_face' | 'degenerate' | 'non_manifold_edge' | 'non_manifold_vertex' | 'non_orientable'
@@ -53,6 +53,18 @@ export interface BasePlane {
   note: string;
 }
 
+/** What a batch of paths amounts to (as the CLI's "summary"). */
+export interface PathSummary {
+  paths: number;
+  reached: number;
+  /** Count of each failing status that occurred. */
+  failures: Partial<Record<TraceStatus, number>>;
+  /** Over reached paths (0 when none). */
+  meanLength: number;
+  maxLength: number;
+  facesCrossed: number;
+}
+
 export interface StraightestPaths {
   source: SurfacePoint;
   /** 3D position of the source (the base plane's origin). */
@@ -63,12 +75,21 @@ export interface StraightestPaths {
   targets: SurfacePoint[];
   /** 3D position of every target, x, y, z each. */
   targetPositions: Float64Array;
+  /** Number of paths (= targets). */
   count: number;
+  /** Paths with status 'reached' (the core's count). */
   reached: number;
+  summary: PathSummary;
   statuses: TraceStatus[];
   /** Straightest distances (of the partial path when not reached). */
   lengths: Float64Array;
   facesCrossed: Uint32Array;
+  /**
+   * Per target, the unit direction t from the source toward it within the base plane (D − S without
+   * its base-normal component): the cutting plane is spanned by t and `normal` through
+   * `sourcePosition`. NaN, NaN, NaN where the plane is undefined (status 'degenerate_plane').
+   */
+  directions: Float64Array;
   /** Packed x, y, z of every path's points; path i is points [3·offsets[i], 3·offsets[i+1]). */
   points: Float32Array;
   offsets: Uint32Array;
@@ -78,8 +99,12 @@ export interface StraightestPaths {
 export interface StraightestPathsOptions {
   /** Default 'auto': the interior vertex farthest from the boundary. */
   source?: SurfacePoint | 'auto';
-  /** Default 'boundary': every vertex of the longest boundary loop. */
-  targets?: 'boundary' | SurfacePoint[];
+  /**
+   * Default 'boundary': every vertex of the longest boundary loop (in order). An array may mix surface
+   * points and 'boundary' entries (each expanded in place). 'boundary' on a closed mesh throws
+   * category 'topology'.
+   */
+  targets?: 'boundary' | (SurfacePoint | 'boundary')[];
   /** Return the points of each path (default true). */
   points?: boolean;
   /** Called with ('trace', fraction) while tracing; return false to cancel (throws 'cancelled'). */
@@ -91,15 +116,21 @@ export type ProgressCallback = (stage: string, fraction: number) => boolean | vo
 
 export type BoundaryKind = 'measured' | 'circle' | 'square';
 export type WeightKind = 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform';
+export type LinearSolver = 'multigrid' | 'lu' | 'bicgstab';
+export type DistanceMethod = 'heat' | 'dijkstra';
 
 export interface ParameterizeOptions {
   /** Center of the measured boundary (default 'auto'); must be interior. */
   source?: SurfacePoint | 'auto';
-  /** Default 'measured'; 'auto' tries all three and keeps the lowest L2 stretch. */
+  /**
+   * Default 'measured'; 'auto' tries all three and keeps the preferred map: a bijective map beats
+   * any other, then the lower L2 stretch; among non-bijective maps the fewer flipped + degenerate
+   * triangles (the same rule as compareParameterizations' `best`).
+   */
   boundary?: BoundaryKind | 'auto';
   weights?: WeightKind;
   /** Default 'multigrid' (BiCGSTAB + algebraic multigrid); 'lu' direct; 'bicgstab' with ILUT. */
-  solver?: 'multigrid' | 'lu' | 'bicgstab';
+  solver?: LinearSolver;
   /** Stages 'source', 'trace', 'weights', 'solve', 'metrics'; return false to cancel (throws 'cancelled'). */
   onProgress?: ProgressCallback;
 }
@@ -131,14 +162,80 @@ export interface Parameterization {
   timings: { source: number; trace: number; boundary: number; weights: number; solve: number; metrics: number; total: number };
 }
 
+export interface BoundaryPolygonsOptions {
+  /** Center of the measured boundary (default 'auto'); must be interior. */
+  source?: SurfacePoint | 'auto';
+  /** Default ['measured', 'circle', 'square']. */
+  kinds?: BoundaryKind[];
+  /** Stage 'trace' (measured); return false to cancel (throws 'cancelled'). */
+  onProgress?: ProgressCallback;
+}
+
+export interface BoundaryPolygon {
+  boundary: BoundaryKind;
+  /**
+   * u, v per loop vertex in exactly the [0, 1]² frame `parameterize({ boundary })` puts its uv and
+   * boundaryPolygon in (for the convex-combination weights; cotan may leave the polygon's box); null
+   * when this kind failed.
+   */
+  polygon: Float32Array | null;
+  /** The boundary vertices in order (the longest loop). */
+  loop: Int32Array;
+  /** Why this kind has no polygon (e.g. measured with a source on the boundary), else null. */
+  error: string | null;
+  category: ErrorCategory | null;
+}
+
+export interface CompareOptions {
+  /** One source for every cell (default 'auto'). */
+  source?: SurfacePoint | 'auto';
+  /** Default ['measured', 'circle', 'square']. */
+  boundaries?: BoundaryKind[];
+  /** Default ['shape-preserving', 'mean-value', 'cotan', 'uniform']. */
+  weights?: WeightKind[];
+  solver?: LinearSolver;
+  /** Stage 'compare': the fraction of cells done; return false to cancel (throws 'cancelled'). */
+  onProgress?: ProgressCallback;
+}
+
+export interface ComparisonRow {
+  boundary: BoundaryKind;
+  weights: WeightKind;
+  /** null when the cell failed (error set); Infinity when not bijective. */
+  l2: number | null;
+  linf: number | null;
+  flipped: number | null;
+  degenerate: number | null;
+  bijective: boolean | null;
+  /** Wall time of this cell's parameterization. */
+  timeMs: number;
+  error: string | null;
+  category: ErrorCategory | null;
+}
+
+export interface Comparison {
+  /** Boundary-major: for each boundary, every weights in the given order. */
+  rows: ComparisonRow[];
+  /** Index of the preferred row (the rule of boundary 'auto'), -1 when every row failed. */
+  best: number;
+}
+
 export class Mesh {
   info(): MeshInfo;
+  /** Every boundary loop's vertices in order (the surface on the left), longest first. */
+  boundaryLoops(): Int32Array[];
+  /** Area-weighted unit vertex normals, x, y, z per vertex (zero for unreferenced vertices). */
+  vertexNormals(): Float32Array;
+  /** Every boundary kind's polygon without a solve (see BoundaryPolygon). Throws 'topology' unless a disk. */
+  boundaryPolygons(options?: BoundaryPolygonsOptions): BoundaryPolygon[];
+  /** Every boundary × weights parameterized and judged (see Comparison). Throws 'topology' unless a disk. */
+  compareParameterizations(options?: CompareOptions): Comparison;
   /** The interior vertex farthest from the boundary ("center of the mesh"). */
   defaultSource(): number;
   basePlane(source?: SurfacePoint | 'auto'): BasePlane;
   straightestPaths(options?: StraightestPathsOptions): StraightestPaths;
   /** Distances from the source to every vertex; 'heat' factors once per mesh and reuses it. */
-  geodesicDistances(source?: SurfacePoint | 'auto', method?: 'heat' | 'dijkstra'): Float64Array;
+  geodesicDistances(source?: SurfacePoint | 'auto', method?: DistanceMethod): Float64Array;
   parameterize(options?: ParameterizeOptions): Parameterization;
   /** OBJ text in the input's vertex order; with uv also `vt` lines (faces as v/vt). */
   toOBJ(uv?: ArrayLike<number>): string;
@@ -160,6 +257,18 @@ export class Straightest {
   /** Bytes currently allocated inside WASM memory. */
   readonly heapUsedBytes: number;
   readonly traceStatuses: TraceStatus[];
+  /** ['measured', 'circle', 'square'] */
+  readonly boundaryKinds: BoundaryKind[];
+  /** The kinds and 'auto'. */
+  readonly boundaryChoices: (BoundaryKind | 'auto')[];
+  readonly weightKinds: WeightKind[];
+  readonly solvers: LinearSolver[];
+  readonly distanceMethods: DistanceMethod[];
+  /** ['obj', 'off', 'auto'] */
+  readonly meshFormats: MeshFormat[];
+  readonly errorCategories: ErrorCategory[];
+  /** 'obj' or 'off' by the name's extension (any case), else 'auto'. */
+  formatFromFileName(name: string): MeshFormat;
 }
 
 export interface CreateOptions {

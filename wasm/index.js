@@ -19,29 +19,12 @@ function unwrap(result) {
   return result;
 }
 
-const FORMATS = new Set(['auto', 'obj', 'off']);
-
 function toBytes(data) {
   if (typeof data === 'string') return new TextEncoder().encode(data);
   if (data instanceof Uint8Array) return data;
   if (data instanceof ArrayBuffer) return new Uint8Array(data);
   if (ArrayBuffer.isView(data)) return new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
   throw new TypeError('loadMesh expects a Uint8Array, an ArrayBuffer or a string with the file contents');
-}
-
-/**
- * A surface point as JS gives it: a vertex number, {vertex}, {face, bary: [a, b, c]} or
- * {halfedge, t}; 'auto' (sources only) is the default source. Marshalled as [kind, index, a, b, c].
- */
-function pointSpec(p, what, allowAuto) {
-  if (p === 'auto' && allowAuto) return [-1, 0, 0, 0, 0];
-  if (typeof p === 'number') return [0, p, 0, 0, 0];
-  if (p && typeof p === 'object') {
-    if (typeof p.vertex === 'number') return [0, p.vertex, 0, 0, 0];
-    if (typeof p.face === 'number' && p.bary && p.bary.length === 3) return [2, p.face, +p.bary[0], +p.bary[1], +p.bary[2]];
-    if (typeof p.halfedge === 'number' && typeof p.t === 'number') return [1, p.halfedge, p.t, 0, 0];
-  }
-  throw new StraightestError(`${what} must be ${allowAuto ? "'auto', " : ''}a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}; got ${JSON.stringify(p)}`, 'invalid_argument');
 }
 
 /**
@@ -62,11 +45,8 @@ const finalizer = typeof FinalizationRegistry === 'function'
 export class Mesh {
   #handle;
 
-  #statusNames;
-
-  constructor(handle, statusNames) {
+  constructor(handle) {
     this.#handle = handle;
-    this.#statusNames = statusNames;
     finalizer?.register(this, handle, this);
   }
 
@@ -84,58 +64,62 @@ export class Mesh {
   /** Triangle vertex indices, 3 per face (a copy; faces may have been reoriented for consistency). */
   indices() { return this.#live().indicesView().slice(); }
 
+  /** Every boundary loop's vertices in order (the surface on the left), longest first. */
+  boundaryLoops() { return this.#live().boundaryLoops(); }
+
+  /** Area-weighted unit vertex normals, 3 floats per vertex (zero for unreferenced vertices). */
+  vertexNormals() { return unwrap(this.#live().vertexNormals()).normals; }
+
   /** The default source: the interior vertex farthest from the boundary ("center of the mesh"). */
   defaultSource() { return unwrap(this.#live().defaultSource()).vertex; }
 
   /** The base plane at a source: { source, origin, normal, fallback, note }. */
-  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(pointSpec(source, 'source', true))); }
+  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(source)); }
 
   /**
    * Straightest paths from one source to many targets (shared setup). targets: 'boundary' (every
-   * vertex of the longest boundary loop) or an array of surface points. Returns per-path lengths,
-   * statuses, faces crossed, and one packed Float32Array of points with offsets (path i is points
-   * offsets[i]..offsets[i+1], 3 floats each).
+   * vertex of the longest boundary loop) or an array of surface points and 'boundary' entries.
+   * Returns per-path lengths, statuses, faces crossed, in-plane directions, and one packed
+   * Float32Array of points with offsets (path i is points offsets[i]..offsets[i+1], 3 floats each).
    */
   straightestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
-    const src = pointSpec(source, 'source', true);
-    const boundary = targets === 'boundary';
-    if (!boundary && !Array.isArray(targets)) throw new StraightestError("targets must be 'boundary' or an array of surface points", 'invalid_argument');
-    const flat = boundary ? [] : targets.flatMap((t, i) => pointSpec(t, `targets[${i}]`, false));
-    const r = unwrap(this.#live().straightestPaths(src, flat, boundary, !!points, progressCallback(onProgress)));
-    const names = this.#statusNames;
-    const statuses = Array.from(r.statusCodes, (c) => names[c]);
-    const reached = statuses.filter((s) => s === 'reached').length;
-    return {
-      source: r.source,
-      sourcePosition: r.sourcePosition,
-      normal: r.normal,
-      baseFallback: r.baseFallback,
-      baseNote: r.baseNote,
-      targets: r.targets,
-      targetPositions: r.targetPositions,
-      count: statuses.length,
-      reached,
-      statuses,
-      lengths: r.lengths,
-      facesCrossed: r.facesCrossed,
-      points: r.points,
-      offsets: r.offsets,
-      timings: { prepare: r.prepareMs, trace: r.traceMs },
-    };
+    return unwrap(this.#live().straightestPaths(source, targets, !!points, progressCallback(onProgress)));
   }
 
   /** Shortest distances from a source to every vertex: 'heat' (factored once per mesh) or 'dijkstra'. */
   geodesicDistances(source = 'auto', method = 'heat') {
-    return unwrap(this.#live().geodesicDistances(pointSpec(source, 'source', true), String(method))).distances;
+    return unwrap(this.#live().geodesicDistances(source, String(method))).distances;
   }
 
   /**
-   * Flattens a disk: boundary 'measured' (default), 'circle', 'square' or 'auto' (least L2 stretch of
+   * Flattens a disk: boundary 'measured' (default), 'circle', 'square' or 'auto' (the preferred map of
    * the three); weights 'shape-preserving' (default), 'mean-value', 'cotan' or 'uniform'.
    * Returns uv (2 floats per vertex, in [0, 1]²), per-face stretch and the metrics.
    */
   parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid', onProgress } = {}) {
-    return unwrap(this.#live().parameterize(pointSpec(source, 'source', true), String(boundary), String(weights), String(solver),
+    return unwrap(this.#live().parameterize(source, String(boundary), String(weights), String(solver),
+      progressCallback(onProgress)));
+  }
+
+  /**
+   * The boundary polygon of each kind, without solving: in the [0, 1]² frame parameterize with that
+   * boundary puts its uv in. One entry per kind: { boundary, polygon (2 floats per loop vertex, or
+   * null), loop, error, category }.
+   */
+  boundaryPolygons({ source = 'auto', kinds = ['measured', 'circle', 'square'], onProgress } = {}) {
+    return unwrap(this.#live().boundaryPolygons(source, kinds, progressCallback(onProgress))).polygons;
+  }
+
+  /**
+   * Every boundary × weights, parameterized and judged: { rows: [{ boundary, weights, l2, linf,
+   * flipped, degenerate, bijective, timeMs, error, category }], best } (best: the row boundary 'auto'
+   * would prefer, -1 when every row failed).
+   */
+  compareParameterizations({
+    source = 'auto', boundaries = ['measured', 'circle', 'square'],
+    weights = ['shape-preserving', 'mean-value', 'cotan', 'uniform'], solver = 'multigrid', onProgress,
+  } = {}) {
+    return unwrap(this.#live().compareParameterizations(source, boundaries, weights, String(solver),
       progressCallback(onProgress)));
   }
 
@@ -156,33 +140,55 @@ export class Mesh {
 /** The loaded library. Create with `await createStraightest()`. */
 export class Straightest {
   #module;
-  #statusNames;
+  #names;
 
   constructor(module) {
     this.#module = module;
-    this.#statusNames = module.traceStatusNames();
+    this.#names = module.nameLists();
   }
 
   /** The trace statuses, in the core's order: 'reached' is the only success. */
-  get traceStatuses() { return [...this.#statusNames]; }
+  get traceStatuses() { return [...this.#names.traceStatuses]; }
+
+  /** The boundary kinds: ['measured', 'circle', 'square']. */
+  get boundaryKinds() { return [...this.#names.boundaryKinds]; }
+
+  /** What parameterize's `boundary` takes: the kinds and 'auto'. */
+  get boundaryChoices() { return [...this.#names.boundaryChoices]; }
+
+  /** The interior weight kinds: ['shape-preserving', 'mean-value', 'cotan', 'uniform']. */
+  get weightKinds() { return [...this.#names.weightKinds]; }
+
+  /** The linear solvers: ['multigrid', 'lu', 'bicgstab']. */
+  get solvers() { return [...this.#names.solvers]; }
+
+  /** geodesicDistances' methods: ['heat', 'dijkstra']. */
+  get distanceMethods() { return [...this.#names.distanceMethods]; }
+
+  /** loadMesh's formats: ['obj', 'off', 'auto']. */
+  get meshFormats() { return [...this.#names.meshFormats]; }
+
+  /** Every StraightestError category. */
+  get errorCategories() { return [...this.#names.errorCategories]; }
+
+  /** The format a file name asks for: 'obj', 'off' (by extension, any case) or 'auto'. */
+  formatFromFileName(name) { return this.#module.formatFromFileName(String(name ?? '')); }
 
   /** Parses an OBJ or OFF file given as bytes (Uint8Array/ArrayBuffer) or text. */
   loadMesh(data, format = 'auto', limits = {}) {
-    const fmt = String(format).toLowerCase();
-    if (!FORMATS.has(fmt)) throw new StraightestError(`unknown mesh format '${format}' (use obj, off or auto)`, 'unsupported_format');
-    return new Mesh(unwrap(this.#module.loadMeshBytes(toBytes(data), fmt, limits)).mesh, this.#statusNames);
+    return new Mesh(unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), limits)).mesh);
   }
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
   meshFromArrays(positions, indices, limits = {}) {
-    return new Mesh(unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh, this.#statusNames);
+    return new Mesh(unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh);
   }
 
   /** Names of the built-in sample meshes. */
   sampleNames() { return this.#module.sampleNames(); }
 
   /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face'). */
-  sample(name) { return new Mesh(unwrap(this.#module.sample(String(name))).mesh, this.#statusNames); }
+  sample(name) { return new Mesh(unwrap(this.#module.sample(String(name))).mesh); }
 
   /** Bytes of WASM memory currently reserved (grows, never shrinks). */
   get memoryBytes() { return this.#module.HEAPU8.length; }

@@ -1,59 +1,63 @@
-// straightest — the native command-line tool. Thin: parse arguments, call core, print one JSON object.
-// Exit codes: 0 success, 2 bad input or usage (message on stderr, or {"error": ...} on stdout with
-// --json-errors), 1 internal failure. Never a signal for bad input.
-#include <algorithm>
-#include <chrono>
-#include <cstring>
-#include <cmath>
-#include <exception>
+// straightest — the native command-line tool. Thin: parse arguments, call core, print one JSON object
+// (each result through its field list, result_fields.hpp). Exit codes: 0 success, 2 bad input or
+// usage (message on stderr, or {"error", "category"} on stdout with --json-errors; a usage error is
+// category invalid_argument, as in JS), 1 internal failure. Never a signal for bad input.
+#include <cstdlib>
 #include <fstream>
-#include <map>
-#include <sstream>
 #include <iostream>
-#include <new>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "json_writer.hpp"
+#include "straightest/enum_names.hpp"
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
+#include "straightest/result_fields.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
 
-using json = nlohmann::ordered_json;
 using namespace straightest;
+using straightest::cli::json;
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: straightest COMMAND MESH [options]\n"
-    "\n"
-    "commands:\n"
-    "  info MESH        summary of the mesh as JSON (vertices, faces, boundary loops, Euler\n"
-    "                   characteristic, components, degenerate and reoriented faces, bbox, problems)\n"
-    "  paths MESH       straightest paths by cutting planes from a source to destinations\n"
-    "      --source auto|N        source vertex (default auto: the interior vertex farthest from the boundary)\n"
-    "      --to boundary|N,N,...  destinations (default boundary: every vertex of the longest boundary loop)\n"
-    "      --points               include each path's points\n"
-    "  param MESH       flatten a disk: boundary map + convex-combination interior, with texture stretch\n"
-    "      --source auto|N        center for the measured boundary (default auto)\n"
-    "      --boundary measured|circle|square|auto   (default measured; auto keeps the least stretched)\n"
-    "      --weights shape-preserving|mean-value|cotan|uniform   (default shape-preserving)\n"
-    "      --solver multigrid|lu|bicgstab   sparse solver (default multigrid)\n"
-    "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order\n"
-    "\n"
-    "MESH is an .obj or .off file, sample:NAME for a built-in sample (mountain, cap, saddle, face), or\n"
-    "heightfield:N for the mountain relief on an N × N grid (heightfield:1000 has 1M vertices).\n"
-    "\n"
-    "options:\n"
-    "  --pretty         indent the JSON output\n"
-    "  --json-errors    report errors as {\"error\": ..., \"category\": ...} on stdout\n"
-    "  --max-vertices N, --max-faces N   refuse larger meshes (defaults 50M / 100M)\n"
-    "  -h, --help       this text\n"
-    "\n"
-    "exit codes: 0 success, 2 bad input or usage, 1 internal error\n";
+/// "a|b|c" for the usage text.
+std::string alternatives(const std::vector<std::string>& names) { return choiceList(names, "|", "|"); }
+
+std::string usage() {
+  return "usage: straightest COMMAND MESH [options]\n"
+         "\n"
+         "commands:\n"
+         "  info MESH        summary of the mesh as JSON (vertices, faces, boundary loops, Euler\n"
+         "                   characteristic, components, degenerate and reoriented faces, bbox, problems)\n"
+         "  paths MESH       straightest paths by cutting planes from a source to destinations\n"
+         "      --source auto|N        source vertex (default auto: the interior vertex farthest from the boundary)\n"
+         "      --to boundary|N,N,...  destinations (default boundary: every vertex of the longest boundary loop;\n"
+         "                             'boundary' may also be one item of the list)\n"
+         "      --points               include each path's points\n"
+         "  param MESH       flatten a disk: boundary map + convex-combination interior, with texture stretch\n"
+         "      --source auto|N        center for the measured boundary (default auto)\n"
+         "      --boundary " + alternatives(namesOf(kBoundaryKindNames, kAutoName)) +
+         "   (default measured; auto keeps the preferred map)\n"
+         "      --weights " + alternatives(namesOf(kWeightKindNames)) + "   (default shape-preserving)\n"
+         "      --solver " + alternatives(namesOf(kLinearSolverNames)) + "   sparse solver (default multigrid)\n"
+         "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order\n"
+         "\n"
+         "MESH is an .obj or .off file, sample:NAME for a built-in sample (" + choiceList(sampleNames(), ", ", ", ") +
+         "), or\n"
+         "heightfield:N for the mountain relief on an N × N grid (heightfield:1000 has 1M vertices).\n"
+         "\n"
+         "options:\n"
+         "  --pretty         indent the JSON output\n"
+         "  --json-errors    report errors as {\"error\": ..., \"category\": ...} on stdout\n"
+         "  --max-vertices N, --max-faces N   refuse larger meshes (defaults 50M / 100M)\n"
+         "  -h, --help       this text\n"
+         "\n"
+         "exit codes: 0 success, 2 bad input or usage, 1 internal error\n";
+}
 
 struct Options {
   std::string command, mesh;
@@ -67,13 +71,14 @@ struct UsageError {
   std::string message;
 };
 
-int fail(const Options& o, int code, const std::string& category, const std::string& message) {
+/// Reports an error; the exit code: 1 for an internal error, 2 for bad input or usage.
+int fail(const Options& o, const Error& error) {
   if (o.jsonErrors) {
-    std::cout << json{{"error", message}, {"category", category}}.dump(o.pretty ? 2 : -1) << "\n";
+    std::cout << cli::toJson(error).dump(o.pretty ? 2 : -1) << "\n";
   } else {
-    std::cerr << "straightest: " << message << "\n";
+    std::cerr << "straightest: " << error.message << "\n";
   }
-  return code;
+  return error.code == ErrorCode::Internal ? 1 : 2;
 }
 
 int64_t parseCount(const std::string& flag, const char* value) {
@@ -131,23 +136,6 @@ Expected<TriMesh> openMesh(const Options& o) {
   return loadMeshFile(o.mesh, o.limits);
 }
 
-json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
-
-json infoJson(const TriMesh& mesh) {
-  const MeshSummary& s = mesh.summary();
-  return json{{"vertices", s.vertices},
-              {"faces", s.faces},
-              {"edges", s.edges},
-              {"boundary_loops", s.boundaryLoopSizes},
-              {"euler_characteristic", s.eulerCharacteristic},
-              {"components", s.components},
-              {"degenerate_faces", s.degenerateFaces},
-              {"reoriented_faces", s.reorientedFaces},
-              {"unreferenced_vertices", s.unreferencedVertices},
-              {"bbox", {{"min", vec(s.bbox.min)}, {"max", vec(s.bbox.max)}}},
-              {"problems", s.problems}};
-}
-
 /// A vertex given on the command line: a non-negative integer that names a vertex used by a face.
 Expected<int32_t> parseVertex(const TriMesh& mesh, const std::string& text, const std::string& what) {
   char* end = nullptr;
@@ -162,124 +150,95 @@ Expected<int32_t> parseVertex(const TriMesh& mesh, const std::string& text, cons
   return static_cast<int32_t>(v);
 }
 
-Expected<int32_t> resolveSource(const TriMesh& mesh, const std::string& spec) {
-  if (spec == "auto") return defaultSource(mesh);
-  return parseVertex(mesh, spec, "--source");
+/// --source: "auto" (nullopt, the core's default source) or a vertex.
+Expected<std::optional<SurfacePoint>> sourceArgument(const TriMesh& mesh, const std::string& spec) {
+  if (spec == kAutoName) return std::optional<SurfacePoint>();
+  auto v = parseVertex(mesh, spec, "--source");
+  if (!v) return v.error();
+  return std::optional<SurfacePoint>(SurfacePoint::vertex(v.value()));
 }
 
-Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::string& spec) {
-  if (spec == "boundary") {
-    auto targets = boundaryTargets(mesh);
-    if (targets.empty()) return Error{ErrorCode::Topology, "--to boundary: the mesh is closed (no boundary loop)"};
-    return targets;
-  }
-  std::vector<SurfacePoint> targets;
+/// --to: comma-separated vertices and "boundary" items.
+Expected<std::vector<TargetSpec>> targetArguments(const TriMesh& mesh, const std::string& spec) {
+  std::vector<TargetSpec> targets;
   std::stringstream list(spec);
   std::string item;
   while (std::getline(list, item, ',')) {
+    if (item == "boundary") {
+      targets.emplace_back(BoundaryVertices{});
+      continue;
+    }
     auto v = parseVertex(mesh, item, "--to");
     if (!v) return v.error();
-    targets.push_back(SurfacePoint::vertex(v.value()));
+    targets.emplace_back(SurfacePoint::vertex(v.value()));
   }
   if (targets.empty()) return Error{ErrorCode::InvalidArgument, "--to needs 'boundary' or a list of vertices"};
   return targets;
 }
 
 int runPaths(const Options& o, const TriMesh& mesh, double loadMs) {
-  auto source = resolveSource(mesh, o.source);
-  if (!source) return fail(o, 2, errorCodeName(source.error().code), source.error().message);
-  auto targets = resolveTargets(mesh, o.to);
-  if (!targets) return fail(o, 2, errorCodeName(targets.error().code), targets.error().message);
-  const PathBatch batch =
-      traceStraightestPaths(mesh, SurfacePoint::vertex(source.value()), std::move(targets).value(), o.points);
+  auto given = sourceArgument(mesh, o.source);
+  if (!given) return fail(o, given.error());
+  auto source = resolveSource(mesh, given.value());
+  if (!source) return fail(o, source.error());
+  auto specs = targetArguments(mesh, o.to);
+  if (!specs) return fail(o, specs.error());
+  auto targets = resolveTargets(mesh, specs.value());
+  if (!targets) return fail(o, targets.error());
+  Timings timings;
+  timings.add("load", loadMs);
+  auto traced = traceStraightestPaths(mesh, source.value(), std::move(targets).value(),
+                                      TraceOptions{o.points, 0, &timings});
+  if (!traced) return fail(o, traced.error());
+  const PathBatch& batch = traced.value();
+  json out = cli::toJson(batch);
   json paths = json::array();
-  std::map<std::string, int64_t> failures;
-  double sum = 0, maxLength = 0;
   for (size_t i = 0; i < batch.status.size(); ++i) {
-    json p{{"target", batch.targets[i].index},
+    json p{{"target", cli::pointJson(batch.targets[i])},
            {"status", traceStatusName(batch.status[i])},
            {"length", batch.length[i]},
            {"faces_crossed", batch.facesCrossed[i]}};
-    if (batch.status[i] == TraceStatus::Reached) {
-      sum += batch.length[i];
-      maxLength = std::max(maxLength, batch.length[i]);
-    } else {
-      ++failures[traceStatusName(batch.status[i])];
-    }
     if (o.points) {
       json pts = json::array();
-      for (int64_t k = batch.offsets[i]; k < batch.offsets[i + 1]; ++k) pts.push_back(vec(batch.points[k]));
+      for (int64_t k = batch.offsets[i]; k < batch.offsets[i + 1]; ++k) pts.push_back(cli::vec3Json(batch.points[k]));
       p["points"] = std::move(pts);
     }
     paths.push_back(std::move(p));
   }
-  const int64_t reached = batch.reached();
-  int64_t crossed = 0;
-  for (int64_t c : batch.facesCrossed) crossed += c;
-  json out{{"source", source.value()},
-           {"normal", vec(batch.base.normal)},
-           {"base_fallback", batch.base.fallback},
-           {"paths", std::move(paths)},
-           {"summary", {{"paths", batch.status.size()},
-                        {"reached", reached},
-                        {"failures", failures},
-                        {"mean_length", reached > 0 ? sum / reached : 0.0},
-                        {"max_length", maxLength},
-                        {"faces_crossed", crossed}}},
-           {"timings_ms", {{"load", loadMs}, {"prepare", batch.prepareMs}, {"trace", batch.traceMs}}}};
-  if (batch.base.fallback) out["base_note"] = batch.base.note;
+  out["paths"] = std::move(paths);
+  out["summary"] = cli::toJson(summarize(batch));
+  out["timings_ms"] = cli::toJson(timings);
   std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
   return 0;
 }
 
-json finiteOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
-
 int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   ParamOptions options;
   auto boundary = parseBoundaryChoice(o.boundary);
-  if (!boundary) return fail(o, 2, "usage", boundary.error().message);
+  if (!boundary) return fail(o, boundary.error());
   auto weights = parseWeightKind(o.weights);
-  if (!weights) return fail(o, 2, "usage", weights.error().message);
+  if (!weights) return fail(o, weights.error());
   auto solver = parseLinearSolver(o.solver);
-  if (!solver) return fail(o, 2, "usage", solver.error().message);
+  if (!solver) return fail(o, solver.error());
+  auto source = sourceArgument(mesh, o.source);
+  if (!source) return fail(o, source.error());
   options.boundary = boundary.value();
   options.weights = weights.value();
   options.solver = solver.value();
-  if (o.source != "auto") {
-    auto v = parseVertex(mesh, o.source, "--source");
-    if (!v) return fail(o, 2, errorCodeName(v.error().code), v.error().message);
-    options.autoSource = false;
-    options.source = SurfacePoint::vertex(v.value());
-  }
+  options.source = source.value();
+  Timings timings;
+  timings.add("load", loadMs);
+  options.timings = &timings;
   auto result = parameterize(mesh, options);
-  if (!result) return fail(o, 2, errorCodeName(result.error().code), result.error().message);
+  if (!result) return fail(o, result.error());
   const Parameterization& p = result.value();
   if (!o.output.empty()) {
     std::ofstream out(o.output, std::ios::binary);
     out << writeObj(mesh, &p.uv);
-    if (!out) return fail(o, 2, "io", "cannot write '" + o.output + "'");
+    if (!out) return fail(o, Error{ErrorCode::Io, "cannot write '" + o.output + "'"});
   }
-  const StretchMetrics& m = p.metrics;
-  json candidates = json::array();
-  for (const BoundaryCandidate& c : p.candidates)
-    candidates.push_back({{"boundary", boundaryKindName(c.kind)}, {"l2", finiteOrNull(c.l2)},
-                          {"linf", finiteOrNull(c.linf)}, {"flipped", c.flipped}, {"degenerate", c.degenerate}});
-  const ParamTimings& t = p.timingsMs;
-  json out{{"source", p.source.index},
-           {"boundary", boundaryKindName(p.boundary)},
-           {"weights", weightKindName(p.weights)},
-           {"stretch", {{"l2", finiteOrNull(m.l2)}, {"linf", finiteOrNull(m.linf)}}},
-           {"bijective", m.bijective},
-           {"flipped", m.flipped},
-           {"degenerate", m.degenerate},
-           {"fallbacks", p.fallbacks},
-           {"weight_fallbacks", p.weightFallbacks},
-           {"angle_distortion", {{"mean", finiteOrNull(m.angleDistortionMean)}, {"max", finiteOrNull(m.angleDistortionMax)}}},
-           {"area_distortion", {{"mean", finiteOrNull(m.areaDistortionMean)}, {"max", finiteOrNull(m.areaDistortionMax)}}},
-           {"residual", p.residual},
-           {"candidates", candidates},
-           {"timings_ms", {{"load", loadMs}, {"source", t.source}, {"trace", t.trace}, {"boundary", t.boundary},
-                           {"weights", t.weights}, {"solve", t.solve}, {"metrics", t.metrics}, {"total", t.total}}}};
+  json out = cli::toJson(p);
+  out["timings_ms"] = cli::toJson(timings);
   if (!o.output.empty()) out["output"] = o.output;
   std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
   return 0;
@@ -292,25 +251,27 @@ int main(int argc, char** argv) {
   try {
     o = parseArgs(argc, argv);
   } catch (const UsageError& e) {
-    std::cerr << kUsage << "\n";
-    return fail(o, 2, "usage", e.message);
+    // The output flags hold even when another argument is wrong.
+    for (int i = 1; i < argc; ++i) {
+      o.jsonErrors = o.jsonErrors || std::string(argv[i]) == "--json-errors";
+      o.pretty = o.pretty || std::string(argv[i]) == "--pretty";
+    }
+    if (!o.jsonErrors) std::cerr << usage() << "\n";
+    return fail(o, Error{ErrorCode::InvalidArgument, e.message});
   }
   if (o.command == "help") {
-    std::cout << kUsage;
+    std::cout << usage();
     return 0;
   }
-  try {
-    const auto t0 = std::chrono::steady_clock::now();
+  Expected<int> exitCode = guarded([&]() -> Expected<int> {
+    const Stopwatch load;
     auto mesh = openMesh(o);
-    const double loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (!mesh) return fail(o, 2, errorCodeName(mesh.error().code), mesh.error().message);
+    const double loadMs = load.ms();
+    if (!mesh) return fail(o, mesh.error());
     if (o.command == "paths") return runPaths(o, mesh.value(), loadMs);
     if (o.command == "param") return runParam(o, mesh.value(), loadMs);
-    std::cout << infoJson(mesh.value()).dump(o.pretty ? 2 : -1) << "\n";
+    std::cout << cli::toJson(mesh.value().summary()).dump(o.pretty ? 2 : -1) << "\n";
     return 0;
-  } catch (const std::bad_alloc&) {
-    return fail(o, 2, "too_large", "out of memory: the mesh is too large for this machine");
-  } catch (const std::exception& e) {
-    return fail(o, 1, "internal", std::string("internal error: ") + e.what());
-  }
+  });
+  return exitCode ? exitCode.value() : fail(o, exitCode.error());
 }

@@ -13,6 +13,16 @@ Vec3 areaWeightedNormal(const TriMesh& mesh, const SurfacePoint& p) {
   return normalized(sum);
 }
 
+std::vector<Vec3> vertexNormals(const TriMesh& mesh) {
+  std::vector<Vec3> sums(mesh.numVertices());
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    const Vec3 weighted = mesh.faceNormal(f) * mesh.faceArea(f);
+    for (int32_t v : mesh.triangle(f)) sums[v] += weighted;
+  }
+  for (Vec3& n : sums) n = normalized(n);
+  return sums;
+}
+
 BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
   BasePlane base;
   base.origin = position(mesh, source);
@@ -49,6 +59,12 @@ std::optional<CuttingPlane> cuttingPlane(const BasePlane& base, const Vec3& dest
   const double len = norm(d);
   if (!(len > 0) || !(norm(m) > kCuttingPlaneMinSine * len)) return std::nullopt;
   return CuttingPlane{base.origin, normalized(m)};
+}
+
+std::optional<Vec3> inPlaneDirection(const BasePlane& base, const Vec3& destination) {
+  if (!cuttingPlane(base, destination)) return std::nullopt;
+  const Vec3 d = destination - base.origin;
+  return normalized(d - base.normal * dot(base.normal, d));
 }
 
 }  // namespace straightest

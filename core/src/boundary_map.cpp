@@ -1,8 +1,8 @@
 #include "straightest/boundary_map.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "straightest/geodesic_distance.hpp"
@@ -61,15 +61,6 @@ std::vector<size_t> convexHull(const std::vector<Vec2>& pts) {
 }
 
 }  // namespace
-
-const char* boundaryKindName(BoundaryKind k) {
-  switch (k) {
-    case BoundaryKind::Measured: return "measured";
-    case BoundaryKind::Circle: return "circle";
-    case BoundaryKind::Square: return "square";
-  }
-  return "unknown";
-}
 
 std::vector<std::array<int32_t, 2>> boundaryChords(const TriMesh& mesh, const std::vector<int32_t>& loop) {
   std::vector<int32_t> position(mesh.numVertices(), -1);
@@ -167,7 +158,8 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
   return moved;
 }
 
-Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress) {
+Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress,
+                                       Timings* timings) {
   BoundaryMap map;
   map.kind = BoundaryKind::Measured;
   map.loop = mesh.boundaryLoops().at(0);
@@ -190,10 +182,11 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
     cumulative[i] = total;
     total += std::max(increment[i], minStep);
   }
-  const auto t0 = std::chrono::steady_clock::now();
-  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), false, progress);
-  if (batch.cancelled) return Error{ErrorCode::Cancelled, "cancelled while tracing the boundary"};
-  map.traceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const Stopwatch traceTime;
+  auto traced = traceStraightestPaths(mesh, source, boundaryTargets(mesh), TraceOptions{false}, progress);
+  if (!traced) return traced.error();
+  const PathBatch& batch = traced.value();
+  record(timings, "trace", traceTime.ms());
   std::vector<double> fallback;
   map.polygon.resize(n);
   for (size_t i = 0; i < n; ++i) {
@@ -238,6 +231,19 @@ BoundaryMap squareBoundary(const TriMesh& mesh) {
   convexify(map.polygon, boundaryChords(mesh, map.loop));  // lifts sides only where triangles collapse
   for (Vec2& q : map.polygon) q = {q[0] + 0.5, q[1] + 0.5};
   return map;
+}
+
+UnitSquareFrame unitSquareFrame(const std::vector<Vec2>& polygon) {
+  Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  Vec2 hi = -lo;
+  for (const Vec2& q : polygon)
+    for (int c = 0; c < 2; ++c) {
+      lo[c] = std::min(lo[c], q[c]);
+      hi[c] = std::max(hi[c], q[c]);
+    }
+  const double scale = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (!(scale > 0)) return {};  // a point or nothing: leave it where it is
+  return {lo, scale};
 }
 
 }  // namespace straightest

@@ -1,5 +1,8 @@
 #include "straightest/error.hpp"
 
+#include <exception>
+#include <new>
+
 namespace straightest {
 
 const char* errorCodeName(ErrorCode code) {
@@ -20,8 +23,27 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::Topology: return "topology";
     case ErrorCode::InvalidArgument: return "invalid_argument";
     case ErrorCode::Cancelled: return "cancelled";
+    case ErrorCode::Internal: return "internal";
   }
   return "unknown";
+}
+
+std::vector<std::string> errorCodeNames() {
+  std::vector<std::string> names;
+  for (int c = 0; c <= static_cast<int>(ErrorCode::Internal); ++c) names.push_back(errorCodeName(static_cast<ErrorCode>(c)));
+  return names;
+}
+
+Error errorFromCurrentException() {
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    return Error{ErrorCode::TooLarge, "the mesh is too large for the available memory (an allocation failed)"};
+  } catch (const std::exception& e) {
+    return Error{ErrorCode::Internal, std::string("internal error: ") + e.what()};
+  } catch (...) {
+    return Error{ErrorCode::Internal, "internal error: an unknown exception"};
+  }
 }
 
 }  // namespace straightest

@@ -1,5 +1,7 @@
 #include "straightest/geodesic_distance.hpp"
 
+#include "straightest/enum_names.hpp"
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -296,6 +298,23 @@ std::vector<double> HeatMethod::distances(const SurfacePoint& source) const {
   std::vector<double> out(n);
   for (int32_t i = 0; i < n; ++i) out[i] = impl_->used[i] ? phi[i] - shift : kInf;
   return out;
+}
+
+Expected<SurfacePoint> resolveSource(const TriMesh& mesh, const std::optional<SurfacePoint>& source) {
+  if (source) return validateSurfacePoint(mesh, *source);
+  auto v = defaultSource(mesh);
+  if (!v) return v.error();
+  return SurfacePoint::vertex(v.value());
+}
+
+Expected<DistanceMethod> parseDistanceMethod(const std::string& name) {
+  return parseName(kDistanceMethodNames, name, "distance method");
+}
+
+std::vector<double> GeodesicDistances::from(const SurfacePoint& source, DistanceMethod method) {
+  if (method == DistanceMethod::Dijkstra) return dijkstraDistances(mesh_, source);
+  if (!heat_) heat_ = std::make_unique<HeatMethod>(mesh_);
+  return heat_->distances(source);
 }
 
 }  // namespace straightest

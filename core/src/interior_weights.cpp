@@ -26,16 +26,6 @@ bool originBarycentric(const double a[2], const double b[2], const double c[2], 
 
 }  // namespace
 
-const char* weightKindName(WeightKind k) {
-  switch (k) {
-    case WeightKind::ShapePreserving: return "shape-preserving";
-    case WeightKind::MeanValue: return "mean-value";
-    case WeightKind::Cotan: return "cotan";
-    case WeightKind::Uniform: return "uniform";
-  }
-  return "unknown";
-}
-
 InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
   InteriorWeights W;
   // Reserve once: every interior vertex's ring has one neighbour per face corner at it, so 3·faces

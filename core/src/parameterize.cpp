@@ -5,7 +5,6 @@
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseLU>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -15,9 +14,6 @@
 
 namespace straightest {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 /// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; u and v together (one multigrid
 /// hierarchy or one factorization, two right-hand sides). Returns the relative residual.
@@ -150,30 +146,6 @@ void normalizeIntoUnitSquare(const TriMesh& mesh, std::vector<Vec2>& uv, std::ve
 
 }  // namespace
 
-Expected<BoundaryChoice> parseBoundaryChoice(const std::string& name) {
-  if (name == "measured") return BoundaryChoice::Measured;
-  if (name == "circle") return BoundaryChoice::Circle;
-  if (name == "square") return BoundaryChoice::Square;
-  if (name == "auto") return BoundaryChoice::Auto;
-  return Error{ErrorCode::InvalidArgument, "unknown boundary '" + name + "' (use measured, circle, square or auto)"};
-}
-
-Expected<LinearSolver> parseLinearSolver(const std::string& name) {
-  if (name == "multigrid") return LinearSolver::Multigrid;
-  if (name == "lu") return LinearSolver::SparseLU;
-  if (name == "bicgstab") return LinearSolver::BiCGSTAB;
-  return Error{ErrorCode::InvalidArgument, "unknown solver '" + name + "' (use multigrid, lu or bicgstab)"};
-}
-
-Expected<WeightKind> parseWeightKind(const std::string& name) {
-  if (name == "shape-preserving") return WeightKind::ShapePreserving;
-  if (name == "mean-value") return WeightKind::MeanValue;
-  if (name == "cotan") return WeightKind::Cotan;
-  if (name == "uniform") return WeightKind::Uniform;
-  return Error{ErrorCode::InvalidArgument,
-               "unknown weights '" + name + "' (use shape-preserving, mean-value, cotan or uniform)"};
-}
-
 Expected<bool> requireDisk(const TriMesh& mesh) {
   const MeshSummary& s = mesh.summary();
   if (s.boundaryLoopSizes.size() == 1 && s.eulerCharacteristic == 1 && s.components == 1) return true;
@@ -186,81 +158,87 @@ Expected<bool> requireDisk(const TriMesh& mesh) {
                                     "one component); found " + found};
 }
 
+bool preferredMap(double l2, int64_t badTriangles, double incumbentL2, int64_t incumbentBadTriangles) {
+  const bool bijective = std::isfinite(l2), incumbentBijective = std::isfinite(incumbentL2);
+  if (bijective != incumbentBijective) return bijective;
+  if (bijective) return l2 < incumbentL2;
+  return badTriangles < incumbentBadTriangles;
+}
+
+Expected<SurfacePoint> interiorSource(const TriMesh& mesh, const std::optional<SurfacePoint>& source) {
+  auto given = resolveSource(mesh, source);
+  if (!given || !source) return given;  // the default source is an interior vertex
+  // The tracer moves a source within kSnapSource of an edge or vertex onto it; check the point it
+  // will really use (a point 2e-8 from the boundary would otherwise become a boundary vertex).
+  const SurfacePoint s = snapSource(mesh, given.value());
+  const bool onBoundary = (s.kind == SurfacePoint::Kind::Vertex && mesh.isBoundaryVertex(s.index)) ||
+                          (s.kind == SurfacePoint::Kind::Edge && mesh.twin(s.index) < 0);
+  if (onBoundary)
+    return Error{ErrorCode::InvalidArgument,
+                 std::string("the source must be an interior point: ") +
+                     (s.kind == SurfacePoint::Kind::Vertex ? "vertex " : "edge ") + std::to_string(s.index) +
+                     " is on the boundary" +
+                     (s.kind != given.value().kind ? " (the given point is within 1e-6 of it)" : "")};
+  return s;
+}
+
 Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options, const Progress& progress) {
-  const Error cancelled{ErrorCode::Cancelled, "parameterization cancelled"};
-  const auto start = Clock::now();
+  const Error cancelled = cancelledError("parameterization");
+  Timings* timings = options.timings;
+  for (const char* stage : {"source", "trace", "boundary", "weights", "solve", "metrics", "total"})
+    record(timings, stage, 0);  // every stage listed, in this order, whether it runs or not
+  const Stopwatch total;
   auto disk = requireDisk(mesh);
   if (!disk) return disk.error();
   Parameterization result;
   result.weights = options.weights;
 
   if (!report(progress, "source", 0)) return cancelled;
-  auto t = Clock::now();
-  const bool needsSource = options.boundary == BoundaryChoice::Measured || options.boundary == BoundaryChoice::Auto;
-  if (options.autoSource) {
-    auto v = defaultSource(mesh);
-    if (!v) return v.error();
-    result.source = SurfacePoint::vertex(v.value());
-  } else {
-    auto p = validateSurfacePoint(mesh, options.source);
-    if (!p) return p.error();
-    // The tracer moves a source within kSnapSource of an edge or vertex onto it; check the point it
-    // will really use (a point 2e-8 from the boundary would otherwise become a boundary vertex).
-    result.source = snapSource(mesh, p.value());
-    const SurfacePoint& s = result.source;
-    const bool onBoundary = (s.kind == SurfacePoint::Kind::Vertex && mesh.isBoundaryVertex(s.index)) ||
-                            (s.kind == SurfacePoint::Kind::Edge && mesh.twin(s.index) < 0);
-    if (onBoundary && needsSource)
-      return Error{ErrorCode::InvalidArgument,
-                   std::string("the source must be an interior point: ") +
-                       (s.kind == SurfacePoint::Kind::Vertex ? "vertex " : "edge ") + std::to_string(s.index) +
-                       " is on the boundary" +
-                       (s.kind != p.value().kind ? " (the given point is within 1e-6 of it)" : "")};
-  }
-  result.timingsMs.source = msSince(t);
-
-  t = Clock::now();
-  std::vector<BoundaryMap> boundaries;
-  std::string measuredError;
+  Stopwatch stage;
+  const bool needsSource = !options.boundary || *options.boundary == BoundaryKind::Measured;
   if (needsSource) {
-    auto m = measuredBoundary(mesh, result.source, progress);
-    if (!m && m.error().code == ErrorCode::Cancelled) return m.error();
-    if (m) {
-      boundaries.push_back(std::move(m).value());
-      result.timingsMs.trace = boundaries.back().traceMs;
-    } else if (options.boundary == BoundaryChoice::Measured) {
-      return m.error();
-    }
+    auto s = interiorSource(mesh, options.source);
+    if (!s) return s.error();
+    result.source = s.value();
+  } else {
+    auto s = resolveSource(mesh, options.source);
+    if (!s) return s.error();
+    result.source = options.source ? snapSource(mesh, s.value()) : s.value();
   }
-  if (options.boundary == BoundaryChoice::Circle || options.boundary == BoundaryChoice::Auto)
-    boundaries.push_back(circleBoundary(mesh));
-  if (options.boundary == BoundaryChoice::Square || options.boundary == BoundaryChoice::Auto)
-    boundaries.push_back(squareBoundary(mesh));
-  result.timingsMs.boundary = msSince(t) - result.timingsMs.trace;
+  record(timings, "source", stage.lap());
+
+  std::vector<BoundaryMap> boundaries;
+  Timings traceTime;
+  if (needsSource) {
+    auto m = measuredBoundary(mesh, result.source, progress, &traceTime);
+    if (!m && m.error().code == ErrorCode::Cancelled) return m.error();
+    if (m) boundaries.push_back(std::move(m).value());
+    else if (options.boundary) return m.error();
+  }
+  if (!options.boundary || *options.boundary == BoundaryKind::Circle) boundaries.push_back(circleBoundary(mesh));
+  if (!options.boundary || *options.boundary == BoundaryKind::Square) boundaries.push_back(squareBoundary(mesh));
+  record(timings, "trace", traceTime["trace"]);
+  record(timings, "boundary", stage.lap() - traceTime["trace"]);
 
   if (!report(progress, "weights", 0)) return cancelled;
-  t = Clock::now();
   const InteriorWeights W = interiorWeights(mesh, options.weights);
   result.weightFallbacks = W.uniformFallbacks;
-  result.timingsMs.weights = msSince(t);
+  record(timings, "weights", stage.lap());
 
   bool haveBest = false;
   for (BoundaryMap& boundary : boundaries) {
-    t = Clock::now();
+    stage.lap();
     std::vector<Vec2> uv;
     bool stopped = false;
     const double residual = solveInterior(mesh, W, boundary, options.solver, uv, progress, stopped);
     if (stopped) return cancelled;
-    result.timingsMs.solve += msSince(t);
+    record(timings, "solve", stage.lap());
     if (!report(progress, "metrics", 0)) return cancelled;
-    t = Clock::now();
     StretchMetrics metrics = textureStretch(mesh, uv);
-    result.timingsMs.metrics += msSince(t);
+    record(timings, "metrics", stage.lap());
     result.candidates.push_back({boundary.kind, metrics.l2, metrics.linf, metrics.flipped, metrics.degenerate});
-    const bool better = !haveBest || metrics.l2 < result.metrics.l2 ||
-                        (std::isinf(result.metrics.l2) && std::isinf(metrics.l2) &&
-                         metrics.flipped + metrics.degenerate < result.metrics.flipped + result.metrics.degenerate);
-    if (better) {
+    if (!haveBest || preferredMap(metrics.l2, metrics.flipped + metrics.degenerate, result.metrics.l2,
+                                  result.metrics.flipped + result.metrics.degenerate)) {
       haveBest = true;
       result.boundary = boundary.kind;
       result.uv = std::move(uv);
@@ -274,7 +252,7 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   if (!haveBest) return Error{ErrorCode::Topology, "no boundary map could be built"};
   normalizeIntoUnitSquare(mesh, result.uv, result.boundaryPolygon);
   report(progress, "metrics", 1.0);
-  result.timingsMs.total = msSince(start);
+  record(timings, "total", total.ms());
   return result;
 }
 

@@ -7,24 +7,10 @@
 #include "straightest/straightest_path.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 namespace straightest {
-
-const char* traceStatusName(TraceStatus s) {
-  switch (s) {
-    case TraceStatus::Reached: return "reached";
-    case TraceStatus::HitBoundary: return "hit_boundary";
-    case TraceStatus::ReturnedToSource: return "returned_to_source";
-    case TraceStatus::Loop: return "loop";
-    case TraceStatus::StepLimit: return "step_limit";
-    case TraceStatus::NoExit: return "no_exit";
-    case TraceStatus::DegeneratePlane: return "degenerate_plane";
-  }
-  return "unknown";
-}
 
 namespace {
 
@@ -399,17 +385,13 @@ const StraightestPath& StraightestPathTracer::trace(const SurfacePoint& destinat
   if (!plane) return singlePoint(TraceStatus::DegeneratePlane);
   plane_ = *plane;
   targetSet_.assign(targetFaces_);
-  const Vec3 t = normalized(SD - base_.normal * dot(base_.normal, SD));
+  const Vec3 t = *inPlaneDirection(base_, D);
   walk(destination, plane_, t, true, r);
   if (r.status != TraceStatus::Reached) {
     walk(destination, plane_, -t, false, second_);
     if (second_.status == TraceStatus::Reached) std::swap(result_, second_);
   }
   return result_;
-}
-
-int64_t PathBatch::reached() const {
-  return std::count(status.begin(), status.end(), TraceStatus::Reached);
 }
 
 std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
@@ -419,45 +401,78 @@ std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
   return targets;
 }
 
-PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source, std::vector<SurfacePoint> targets,
-                                bool keepPoints, const Progress& progress) {
-  using Clock = std::chrono::steady_clock;
-  auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::vector<TargetSpec>& specs) {
+  std::vector<SurfacePoint> targets;
+  for (size_t i = 0; i < specs.size(); ++i) {
+    if (std::holds_alternative<BoundaryVertices>(specs[i])) {
+      const std::vector<SurfacePoint> boundary = boundaryTargets(mesh);
+      if (boundary.empty())
+        return Error{ErrorCode::Topology, "targets 'boundary': the mesh is closed (no boundary loop)"};
+      targets.insert(targets.end(), boundary.begin(), boundary.end());
+      continue;
+    }
+    auto p = validateSurfacePoint(mesh, std::get<SurfacePoint>(specs[i]));
+    if (!p) return Error{p.error().code, "target " + std::to_string(i) + ": " + p.error().message};
+    targets.push_back(p.value());
+  }
+  return targets;
+}
+
+PathSummary summarize(const PathBatch& batch) {
+  PathSummary s;
+  s.paths = static_cast<int64_t>(batch.status.size());
+  s.byStatus.assign(kTraceStatusCount, 0);
+  double sum = 0;
+  for (size_t i = 0; i < batch.status.size(); ++i) {
+    ++s.byStatus[static_cast<size_t>(batch.status[i])];
+    s.facesCrossed += batch.facesCrossed[i];
+    if (batch.status[i] != TraceStatus::Reached) continue;
+    ++s.reached;
+    sum += batch.length[i];
+    s.maxLength = std::max(s.maxLength, batch.length[i]);
+  }
+  s.meanLength = s.reached > 0 ? sum / static_cast<double>(s.reached) : 0.0;
+  return s;
+}
+
+Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
+                                          std::vector<SurfacePoint> targets, const TraceOptions& options,
+                                          const Progress& progress) {
+  Stopwatch time;
   PathBatch batch;
-  const auto t0 = Clock::now();
-  TraceOptions options;
-  options.keepPoints = keepPoints;
   StraightestPathTracer tracer(mesh, source, options);
   batch.source = source;
   batch.base = tracer.base();
   batch.targets = std::move(targets);
   const size_t n = batch.targets.size();
+  batch.targetPositions.reserve(n);
   batch.status.reserve(n);
   batch.length.reserve(n);
   batch.facesCrossed.reserve(n);
   batch.reversed.reserve(n);
+  batch.directions.reserve(n);
   batch.offsets.reserve(n + 1);
   batch.offsets.push_back(0);
-  const auto t1 = Clock::now();
+  record(options.timings, "prepare", time.lap());
   const size_t step = std::max<size_t>(1, n / 100);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (size_t i = 0; i < n; ++i) {
-    if (i % step == 0 && !report(progress, "trace", static_cast<double>(i) / n)) {
-      batch.cancelled = true;
-      batch.targets.resize(i);
-      break;
-    }
+    if (i % step == 0 && !report(progress, "trace", static_cast<double>(i) / n))
+      return cancelledError("straightest paths");
     const StraightestPath& path = tracer.trace(batch.targets[i]);
     batch.status.push_back(path.status);
     batch.length.push_back(path.length);
     batch.facesCrossed.push_back(path.facesCrossed);
     batch.reversed.push_back(path.reversed);
+    const Vec3 D = position(mesh, batch.targets[i]);
+    batch.targetPositions.push_back(D);
+    const auto direction = inPlaneDirection(batch.base, D);
+    batch.directions.push_back(direction ? *direction : Vec3{nan, nan, nan});
     batch.points.insert(batch.points.end(), path.positions.begin(), path.positions.end());
     batch.offsets.push_back(static_cast<int64_t>(batch.points.size()));
   }
-  const auto t2 = Clock::now();
-  if (!batch.cancelled) report(progress, "trace", 1.0);
-  batch.prepareMs = ms(t1 - t0);
-  batch.traceMs = ms(t2 - t1);
+  record(options.timings, "trace", time.lap());
+  report(progress, "trace", 1.0);
   return batch;
 }
 

@@ -147,7 +147,6 @@ TEST(FuzzFindings, MeasuredBoundaryWithAnEdgePointingAtTheSourceIsBijective) {
   // had the same polar angle and landed on one point of the hull, collapsing a triangle.
   const TriMesh mesh = gridWithout({{7, 3}});
   ParamOptions options;
-  options.autoSource = false;
   options.source = SurfacePoint::vertex(4 * 9 + 4);
   for (WeightKind w : {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Uniform}) {
     options.weights = w;
@@ -184,7 +183,6 @@ TEST(FuzzFindings, ASourceWithinSnappingDistanceOfTheBoundaryIsRefused) {
     if (mesh.tail(k) == 1 && mesh.head(k) == 6) h = k;
   ASSERT_GE(h, 0);
   ParamOptions options;
-  options.autoSource = false;
   options.source = SurfacePoint::edge(h, 2e-8);
   auto p = parameterize(mesh, options);
   ASSERT_FALSE(p.ok());

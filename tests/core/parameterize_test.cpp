@@ -22,7 +22,7 @@ std::vector<Vec2> planarUV(const TriMesh& mesh, double scale = 1, double shear =
   return uv;
 }
 
-Parameterization param(const TriMesh& mesh, BoundaryChoice b, WeightKind w) {
+Parameterization param(const TriMesh& mesh, std::optional<BoundaryKind> b, WeightKind w) {
   ParamOptions o;
   o.boundary = b;
   o.weights = w;
@@ -96,7 +96,7 @@ void expectSimilarity(const TriMesh& mesh, const std::vector<Vec2>& uv) {
 TEST(MeasuredBoundary, PlanarConvexPatchReproducesItselfWithEveryConvexCombination) {
   const TriMesh mesh = testing::flatGrid(15, GridPattern::Jittered);
   for (WeightKind w : {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Cotan}) {
-    const Parameterization p = param(mesh, BoundaryChoice::Measured, w);
+    const Parameterization p = param(mesh, BoundaryKind::Measured, w);
     EXPECT_NEAR(p.metrics.l2, 1, 1e-9) << weightKindName(w);
     EXPECT_NEAR(p.metrics.linf, 1, 1e-9) << weightKindName(w);
     EXPECT_EQ(p.fallbacks, 0);
@@ -115,8 +115,8 @@ TEST(MeasuredBoundary, DevelopableCylinderPatchIsNearlyIsometric) {
     const double theta = -1.2 + 2.4 * i / (n - 1), y = -1.0 + 2.0 * j / (n - 1);
     return Vec3{R * std::sin(theta), y, R * std::cos(theta)};
   });
-  const Parameterization measured = param(mesh, BoundaryChoice::Measured, WeightKind::ShapePreserving);
-  const Parameterization circle = param(mesh, BoundaryChoice::Circle, WeightKind::ShapePreserving);
+  const Parameterization measured = param(mesh, BoundaryKind::Measured, WeightKind::ShapePreserving);
+  const Parameterization circle = param(mesh, BoundaryKind::Circle, WeightKind::ShapePreserving);
   EXPECT_LT(measured.metrics.l2, 1.01);
   EXPECT_GT(circle.metrics.l2, measured.metrics.l2);
 }
@@ -124,7 +124,7 @@ TEST(MeasuredBoundary, DevelopableCylinderPatchIsNearlyIsometric) {
 TEST(Parameterize, ConvexBoundaryWithConvexWeightsNeverFlipsOnTheSamples) {
   for (const std::string& name : sampleNames()) {
     const TriMesh mesh = makeSample(name).value();
-    for (BoundaryChoice b : {BoundaryChoice::Measured, BoundaryChoice::Circle, BoundaryChoice::Square})
+    for (BoundaryKind b : {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Square})
       for (WeightKind w : {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Uniform}) {
         const Parameterization p = param(mesh, b, w);
         EXPECT_EQ(p.metrics.flipped, 0) << name << " " << boundaryKindName(p.boundary) << " " << weightKindName(w);
@@ -137,7 +137,7 @@ TEST(Parameterize, ConvexBoundaryWithConvexWeightsNeverFlipsOnTheSamples) {
 
 TEST(Parameterize, AutoKeepsTheLeastStretchedCandidate) {
   const TriMesh mesh = makeSample("mountain").value();
-  const Parameterization p = param(mesh, BoundaryChoice::Auto, WeightKind::ShapePreserving);
+  const Parameterization p = param(mesh, std::nullopt, WeightKind::ShapePreserving);
   ASSERT_EQ(p.candidates.size(), 3u);
   for (const BoundaryCandidate& c : p.candidates) EXPECT_LE(p.metrics.l2, c.l2);
 }
@@ -182,7 +182,6 @@ TEST(Parameterize, RefusesWhatIsNotADiskWithAMessage) {
 TEST(Parameterize, RefusesASourceOnTheBoundaryOrOutOfRange) {
   const TriMesh mesh = makeSample("cap").value();
   ParamOptions o;
-  o.autoSource = false;
   o.source = SurfacePoint::vertex(mesh.boundaryLoops()[0][0]);
   auto onBoundary = parameterize(mesh, o);
   ASSERT_FALSE(onBoundary.ok());
@@ -195,7 +194,7 @@ TEST(Parameterize, RefusesASourceOnTheBoundaryOrOutOfRange) {
 
 TEST(ObjWriter, WritesOneVtPerVertexInTheInputOrder) {
   const TriMesh mesh = testing::loadGood("good/quad_grid.obj");
-  const Parameterization p = param(mesh, BoundaryChoice::Circle, WeightKind::Uniform);
+  const Parameterization p = param(mesh, BoundaryKind::Circle, WeightKind::Uniform);
   const std::string text = writeObj(mesh, &p.uv);
   auto reread = loadMesh(text, MeshFormat::Obj);
   ASSERT_TRUE(reread.ok()) << reread.error().message;
@@ -237,16 +236,14 @@ TEST(Progress, ParameterizationReportsEveryStageAndCanBeCancelled) {
   }
 }
 
-TEST(Progress, CancelledTraceBatchKeepsTheFinishedPaths) {
+TEST(Progress, CancellingATraceBatchIsACancelledErrorAtTheNextCheck) {
   const TriMesh mesh = makeHeightField(40);
   int calls = 0;
-  const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(defaultSource(mesh).value()),
-                                                boundaryTargets(mesh), false,
-                                                [&](const char*, double) { return ++calls < 10; });
-  EXPECT_TRUE(batch.cancelled);
-  EXPECT_EQ(batch.targets.size(), batch.status.size());
-  EXPECT_GT(batch.status.size(), 0u);
-  EXPECT_LT(batch.status.size(), boundaryTargets(mesh).size());
+  auto batch = traceStraightestPaths(mesh, SurfacePoint::vertex(defaultSource(mesh).value()), boundaryTargets(mesh),
+                                     TraceOptions{false}, [&](const char*, double) { return ++calls < 10; });
+  ASSERT_FALSE(batch.ok());
+  EXPECT_EQ(batch.error().code, ErrorCode::Cancelled);
+  EXPECT_EQ(calls, 10);  // stopped at the check that said no, not later
 }
 
 }  // namespace

@@ -23,13 +23,13 @@ TriMesh scaled(const TriMesh& mesh, double s) {
 TEST(Robustness, PathsAndParameterizationAreScaleInvariant) {
   const TriMesh base = makeSample("face").value();
   const int32_t source = defaultSource(base).value();
-  const PathBatch reference = traceStraightestPaths(base, SurfacePoint::vertex(source), boundaryTargets(base), false);
+  const PathBatch reference = traceStraightestPaths(base, SurfacePoint::vertex(source), boundaryTargets(base), TraceOptions{false}).value();
   ParamOptions options;
   const Parameterization referenceParam = parameterize(base, options).value();
   for (double s : {1e-6, 1e6}) {
     const TriMesh mesh = scaled(base, s);
     EXPECT_EQ(defaultSource(mesh).value(), source);
-    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), false);
+    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), TraceOptions{false}).value();
     for (size_t i = 0; i < batch.status.size(); ++i) {
       EXPECT_EQ(batch.status[i], reference.status[i]) << "scale " << s << " path " << i;
       EXPECT_NEAR(batch.length[i] / s, reference.length[i], 1e-9 * reference.length[i]) << "scale " << s;
@@ -110,13 +110,13 @@ TEST(Robustness, AlmostClosedCapReportsTheBaseNormalFallbackAndStaysBijectiveOnA
   EXPECT_TRUE(base.fallback);
   EXPECT_NE(base.note.find("cancel"), std::string::npos) << base.note;
   EXPECT_NEAR(base.normal.z, 1.0, 1e-9);  // the pole's own normal
-  const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(0), boundaryTargets(mesh), false);
+  const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(0), boundaryTargets(mesh), TraceOptions{false}).value();
   for (TraceStatus s : batch.status) EXPECT_LT(static_cast<int>(s), kTraceStatusCount);
   ParamOptions o;
-  o.boundary = BoundaryChoice::Circle;
+  o.boundary = BoundaryKind::Circle;
   const Parameterization p = parameterize(mesh, o).value();
   EXPECT_TRUE(p.metrics.bijective);  // Tutte: a convex boundary and convex weights never fold
-  o.boundary = BoundaryChoice::Measured;
+  o.boundary = BoundaryKind::Measured;
   auto measured = parameterize(mesh, o);  // may be poor, but it is a result or a clear error
   if (measured) {
     EXPECT_EQ(std::isfinite(measured.value().metrics.l2), measured.value().metrics.bijective);

@@ -289,7 +289,7 @@ TEST(TraceStraightestPaths, WithoutPointsGivesEverySingleTraceBitForBit) {
       auto targets = randomFacePoints(mesh, 40, 400 + s);
       for (int i = 0; i < 60; ++i) targets.push_back(SurfacePoint::vertex(vertex(rng)));
       targets.push_back(source);
-      const PathBatch batch = traceStraightestPaths(mesh, source, targets, false);
+      const PathBatch batch = traceStraightestPaths(mesh, source, targets, TraceOptions{false}).value();
       ASSERT_EQ(batch.status.size(), targets.size());
       EXPECT_TRUE(batch.points.empty());
       StraightestPathTracer tracer(mesh, source);
@@ -311,7 +311,7 @@ TEST(TraceStraightestPaths, WithoutPointsGivesEverySingleTraceBitForBit) {
 TEST(TraceStraightestPaths, PacksEveryPathWithItsOffsets) {
   const TriMesh mesh = makeSample("mountain").value();
   const SurfacePoint source = SurfacePoint::vertex(centerVertex(mesh));
-  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), true);
+  const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), TraceOptions{true}).value();
   ASSERT_EQ(batch.status.size(), mesh.boundaryLoops()[0].size());
   ASSERT_EQ(batch.offsets.size(), batch.status.size() + 1);
   EXPECT_EQ(batch.offsets.back(), static_cast<int64_t>(batch.points.size()));
@@ -326,7 +326,7 @@ TEST(TraceStraightestPaths, PacksEveryPathWithItsOffsets) {
       EXPECT_EQ(norm(last - position(mesh, batch.targets[i])), 0.0);  // ends exactly at the target
     }
   }
-  EXPECT_GT(batch.reached(), 0);
+  EXPECT_GT(summarize(batch).reached, 0);
 }
 
 TEST(HeatMethod, NeverExceedsTheStraightestDistanceBeyondItsError) {

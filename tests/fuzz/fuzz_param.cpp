@@ -42,9 +42,10 @@ void dump(const TriMesh& m, const ParamOptions& o, const Expected<Parameterizati
                  m.isBoundaryVertex(v) ? " (boundary)" : "");
   for (int32_t f = 0; f < m.numFaces(); ++f)
     std::fprintf(stderr, "  f %d: %d %d %d\n", f, m.triangle(f)[0], m.triangle(f)[1], m.triangle(f)[2]);
-  std::fprintf(stderr, "options: boundary %d, weights %s, autoSource %d, source kind %d index %d\n",
-               static_cast<int>(o.boundary), weightKindName(o.weights), o.autoSource, static_cast<int>(o.source.kind),
-               o.source.index);
+  std::fprintf(stderr, "options: boundary %s, weights %s, source %s kind %d index %d\n",
+               o.boundary ? boundaryKindName(*o.boundary) : "auto", weightKindName(o.weights),
+               o.source ? "given" : "auto", o.source ? static_cast<int>(o.source->kind) : -1,
+               o.source ? o.source->index : -1);
   if (!r.ok()) {
     std::fprintf(stderr, "error %s: %s\n", errorCodeName(r.error().code), r.error().message.c_str());
     return;
@@ -85,32 +86,33 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const TriMesh mesh = fuzz::transformAndBuild(in, gen);
 
   ParamOptions options;
-  static const BoundaryChoice boundaries[] = {BoundaryChoice::Measured, BoundaryChoice::Circle, BoundaryChoice::Square,
-                                              BoundaryChoice::Auto};
+  static const std::optional<BoundaryKind> boundaries[] = {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Square,
+                                              std::nullopt};
   static const WeightKind weights[] = {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Uniform,
                                        WeightKind::Cotan};
   options.boundary = boundaries[in.ConsumeIntegralInRange(0, 3)];
   options.weights = weights[in.ConsumeIntegralInRange(0, 7) == 0 ? 3 : in.ConsumeIntegralInRange(0, 2)];
   options.solver = in.ConsumeBool() ? LinearSolver::SparseLU : LinearSolver::BiCGSTAB;
-  options.autoSource = in.ConsumeBool();
-  if (!options.autoSource) {
-    options.source = fuzz::randomPoint(in, mesh);
+  const bool autoSource = in.ConsumeBool();
+  if (!autoSource) {
+    SurfacePoint source = fuzz::randomPoint(in, mesh);
     if (in.ConsumeIntegralInRange(0, 3) > 0) {  // mostly an interior source
       for (int32_t v = 0; v < mesh.numVertices(); ++v) {
-        const int32_t w = (v + options.source.index) % mesh.numVertices();
-        if (options.source.kind == SurfacePoint::Kind::Vertex && !mesh.isBoundaryVertex(w)) {
-          options.source.index = w;
+        const int32_t w = (v + source.index) % mesh.numVertices();
+        if (source.kind == SurfacePoint::Kind::Vertex && !mesh.isBoundaryVertex(w)) {
+          source.index = w;
           break;
         }
       }
     }
+    options.source = source;
   }
 
   auto result = parameterize(mesh, options);
   if (std::getenv("FUZZ_VERBOSE")) {
     dump(mesh, options, result);
-    if (options.boundary == BoundaryChoice::Auto)
-      for (BoundaryChoice b : {BoundaryChoice::Measured, BoundaryChoice::Circle}) {
+    if (options.boundary == std::nullopt)
+      for (BoundaryKind b : {BoundaryKind::Measured, BoundaryKind::Circle}) {
         ParamOptions o = options;
         o.boundary = b;
         dump(mesh, o, parameterize(mesh, o));
@@ -122,9 +124,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const ErrorCode c = result.error().code;
     FUZZ_CHECK(c == ErrorCode::Topology || c == ErrorCode::InvalidArgument, "parameterize: unexpected %s: %s",
                errorCodeName(c), result.error().message.c_str());
-    FUZZ_CHECK(!disk || c != ErrorCode::Topology || options.boundary == BoundaryChoice::Measured ||
+    FUZZ_CHECK(!disk || c != ErrorCode::Topology || options.boundary == BoundaryKind::Measured ||
                    result.error().message.find("interior") != std::string::npos,
-               "disk refused with a topology error (%s boundary): %s", options.boundary == BoundaryChoice::Auto
+               "disk refused with a topology error (%s boundary): %s", options.boundary == std::nullopt
                    ? "auto" : "fixed", result.error().message.c_str());
     return 0;
   }
@@ -144,15 +146,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                "boundary vertex %zu: uv (%g, %g), polygon (%g, %g)", i, a[0], a[1], b[0], b[1]);
   }
   FUZZ_CHECK(p.weights == options.weights, "weights kind changed");
-  switch (options.boundary) {
-    case BoundaryChoice::Measured: FUZZ_CHECK(p.boundary == BoundaryKind::Measured, "boundary kind"); break;
-    case BoundaryChoice::Circle: FUZZ_CHECK(p.boundary == BoundaryKind::Circle, "boundary kind"); break;
-    case BoundaryChoice::Square: FUZZ_CHECK(p.boundary == BoundaryKind::Square, "boundary kind"); break;
-    case BoundaryChoice::Auto:
-      FUZZ_CHECK(p.candidates.size() >= 2 && p.candidates.size() <= 3, "auto: %zu candidates", p.candidates.size());
-      for (const BoundaryCandidate& c : p.candidates)
-        FUZZ_CHECK(!(c.l2 < p.metrics.l2), "auto kept L2 %.17g over a candidate with %.17g", p.metrics.l2, c.l2);
-      break;
+  if (options.boundary) {
+    FUZZ_CHECK(p.boundary == *options.boundary, "boundary kind");
+  } else {
+    FUZZ_CHECK(p.candidates.size() >= 2 && p.candidates.size() <= 3, "auto: %zu candidates", p.candidates.size());
+    for (const BoundaryCandidate& c : p.candidates)
+      FUZZ_CHECK(!(c.l2 < p.metrics.l2), "auto kept L2 %.17g over a candidate with %.17g", p.metrics.l2, c.l2);
   }
   checkMetrics(mesh, p.metrics, "parameterize");
   FUZZ_CHECK(p.fallbacks >= 0 && p.weightFallbacks >= 0, "negative fallback counts");

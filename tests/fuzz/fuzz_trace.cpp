@@ -211,7 +211,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                  "bounded trace ended differently without hitting the bound");
   }
   // The batch API gives the same paths, packed.
-  const PathBatch batch = traceStraightestPaths(mesh, source, targets, true);
+  const PathBatch batch = traceStraightestPaths(mesh, source, targets, TraceOptions{true}).value();
   FUZZ_CHECK(batch.status.size() == targets.size() && batch.offsets.size() == targets.size() + 1 &&
                  batch.length.size() == targets.size(),
              "batch sizes");
@@ -231,9 +231,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       FUZZ_CHECK(a.x == b.x && a.y == b.y && a.z == b.z, "batch path %zu point %zu differs", i, k);
     }
   }
-  FUZZ_CHECK(batch.reached() == reached, "batch.reached()");
+  FUZZ_CHECK(summarize(batch).reached == reached, "summarize(batch).reached");
   // Lengths only (as the measured boundary traces): every single trace's result, bit for bit.
-  const PathBatch lengths = traceStraightestPaths(mesh, source, targets, false);
+  const PathBatch lengths = traceStraightestPaths(mesh, source, targets, TraceOptions{false}).value();
   FUZZ_CHECK(lengths.status.size() == targets.size() && lengths.offsets.size() == targets.size() + 1 &&
                  lengths.points.empty(),
              "lengths-only batch sizes");

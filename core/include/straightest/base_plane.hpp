@@ -15,6 +15,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "straightest/surface_point.hpp"
 
@@ -33,6 +34,10 @@ struct BasePlane {
 /// Area-weighted normal at a surface point (unit; zero only if every incident face is degenerate).
 Vec3 areaWeightedNormal(const TriMesh& mesh, const SurfacePoint& p);
 
+/// areaWeightedNormal at every vertex in one pass over the faces (zero for unreferenced vertices):
+/// the shading normals the page draws with.
+std::vector<Vec3> vertexNormals(const TriMesh& mesh);
+
 BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source);
 
 struct CuttingPlane {
@@ -41,5 +46,10 @@ struct CuttingPlane {
 };
 
 std::optional<CuttingPlane> cuttingPlane(const BasePlane& base, const Vec3& destination);
+
+/// The unit direction from S toward D within the base plane (D − S without its base-normal
+/// component): the walk's first heading, and with the base normal the span of the cutting plane.
+/// nullopt exactly where cuttingPlane is.
+std::optional<Vec3> inPlaneDirection(const BasePlane& base, const Vec3& destination);
 
 }  // namespace straightest

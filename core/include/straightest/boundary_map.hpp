@@ -24,6 +24,7 @@
 
 #include "straightest/progress.hpp"
 #include "straightest/surface_point.hpp"
+#include "straightest/timings.hpp"
 
 namespace straightest {
 
@@ -39,13 +40,25 @@ struct BoundaryMap {
   std::vector<Vec2> polygon;      // their positions in the plane
   int64_t fallbacks = 0;          // measured: traces that failed and used the Dijkstra radius
   int64_t movedToHull = 0;        // measured: points moved outward by the convexification
-  double traceMs = 0;             // measured: time spent tracing
 };
 
 /// Requires a disk (checked by the caller). `source` must be an interior surface point for measured.
-Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress = {});
+/// Records the time of its traces as "trace" in `timings`.
+Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress = {},
+                                       Timings* timings = nullptr);
 BoundaryMap circleBoundary(const TriMesh& mesh);
 BoundaryMap squareBoundary(const TriMesh& mesh);
+
+/// The frame a parameterization is shown in: the polygon's bounding box moved to the origin and
+/// scaled by its longer side into [0, 1]² (aspect kept). The convex-combination interior lies inside
+/// the convex boundary polygon, so this is also the bounding box of the whole uv map: the polygon
+/// alone, before any solve, fixes where every uv lands.
+struct UnitSquareFrame {
+  Vec2 origin;
+  double scale = 1;
+  Vec2 operator()(const Vec2& q) const { return (q - origin) / scale; }
+};
+UnitSquareFrame unitSquareFrame(const std::vector<Vec2>& polygon);
 
 /// Interior edges of the mesh whose two ends are both on the loop ("chords"), as indices into the loop.
 std::vector<std::array<int32_t, 2>> boundaryChords(const TriMesh& mesh, const std::vector<int32_t>& loop);

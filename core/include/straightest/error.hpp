@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace straightest {
 
@@ -27,10 +28,14 @@ enum class ErrorCode {
   Topology,           // the algorithm needs another topology (disk, boundary, ...)
   InvalidArgument,    // an option or index given by the caller is wrong
   Cancelled,          // a progress callback asked to stop
+  Internal,           // a bug: an unexpected exception (the CLI exits 1 for it, 2 for every other code)
 };
 
 /// Stable snake_case name of a category ("non_manifold_edge"); used in JSON and JS errors.
 const char* errorCodeName(ErrorCode code);
+
+/// Every category name, in ErrorCode order (the npm package's ErrorCategory type lists the same).
+std::vector<std::string> errorCodeNames();
 
 struct Error {
   ErrorCode code;
@@ -53,5 +58,20 @@ class Expected {
  private:
   std::variant<T, Error> v_;
 };
+
+/// The error for the exception being handled (call inside a catch block): allocation failure is
+/// TooLarge ("… too large for the available memory"), anything else Internal. The CLI and the
+/// bindings both end their work in this one mapping.
+Error errorFromCurrentException();
+
+/// Runs fn (returning Expected<T>) and turns an escaping exception into errorFromCurrentException().
+template <class Fn>
+auto guarded(Fn&& fn) -> decltype(fn()) {
+  try {
+    return fn();
+  } catch (...) {
+    return errorFromCurrentException();
+  }
+}
 
 }  // namespace straightest

@@ -9,6 +9,8 @@
 //    refinement (a few percent on coarse meshes).
 #pragma once
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "straightest/surface_point.hpp"
@@ -27,6 +29,10 @@ std::vector<double> dijkstraDistances(const TriMesh& mesh, const SurfacePoint& s
 /// area-weighted centroid. A Topology error when a mesh with boundary has no interior vertex.
 Expected<int32_t> defaultSource(const TriMesh& mesh);
 
+/// The one place "auto" becomes a point: nullopt → the default source (as a vertex); a given point is
+/// validated (see validateSurfacePoint). Every caller (core, CLI, npm package) maps its "auto" to nullopt.
+Expected<SurfacePoint> resolveSource(const TriMesh& mesh, const std::optional<SurfacePoint>& source);
+
 class HeatMethod {
  public:
   explicit HeatMethod(const TriMesh& mesh);
@@ -41,6 +47,22 @@ class HeatMethod {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+};
+
+enum class DistanceMethod { Heat, Dijkstra };
+Expected<DistanceMethod> parseDistanceMethod(const std::string& name);
+
+/// Distances on one mesh by either method; the heat method's factorization is made at the first heat
+/// query and reused by every later one (the mesh must outlive this object).
+class GeodesicDistances {
+ public:
+  explicit GeodesicDistances(const TriMesh& mesh) : mesh_(mesh) {}
+  /// Distances from a valid surface point to every vertex.
+  std::vector<double> from(const SurfacePoint& source, DistanceMethod method);
+
+ private:
+  const TriMesh& mesh_;
+  std::unique_ptr<HeatMethod> heat_;
 };
 
 }  // namespace straightest

@@ -1,37 +1,47 @@
 // parameterize.hpp — a disk mesh mapped to the plane: a boundary map (measured, circle, square, or
-// auto: all three, keeping the one with the lowest L2 stretch) and interior convex-combination
-// weights, solved with Eigen (one factorization for u and v); judged with texture stretch.
+// auto: all three, keeping the preferred one by preferredMap) and interior convex-combination
+// weights, solved by the linear solver chosen in the options (multigrid-preconditioned BiCGSTAB by
+// default); judged with texture stretch.
 //
 // Topology: a single connected disk (one boundary loop, Euler characteristic 1); anything else is a
 // Topology error naming what was found. The source (measured boundary) must be an interior point.
-// UVs are scaled into [0, 1]² keeping the aspect ratio; unreferenced vertices get (0, 0).
+// UVs are scaled into [0, 1]² by their bounding box (aspect kept); unreferenced vertices get (0, 0).
+// With convex-combination weights (all but cotan) the interior lies inside the convex boundary
+// polygon, so that box is the polygon's (unitSquareFrame): boundary_polygons.hpp gives every
+// polygon in this frame without a solve.
 #pragma once
-#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "straightest/boundary_map.hpp"
 #include "straightest/interior_weights.hpp"
 #include "straightest/texture_stretch.hpp"
+#include "straightest/timings.hpp"
 
 namespace straightest {
 
-enum class BoundaryChoice { Measured, Circle, Square, Auto };
 /// Multigrid (default): BiCGSTAB preconditioned by smoothed-aggregation multigrid (multigrid.hpp).
 /// SparseLU: Eigen's direct LU (COLAMD). BiCGSTAB: preconditioned by incomplete LU (ILUT).
 /// An iterative solve that does not converge falls back to SparseLU.
 enum class LinearSolver { Multigrid, SparseLU, BiCGSTAB };
 Expected<LinearSolver> parseLinearSolver(const std::string& name);
 
-Expected<BoundaryChoice> parseBoundaryChoice(const std::string& name);
+/// A boundary kind, or "auto" (nullopt: try every kind and keep the preferred map). One enum plus
+/// "auto" rather than a second enum that repeats the kinds: every list of kinds (name tables, the
+/// comparison, the polygons) is then a list of BoundaryKind, and "auto" reads the same as the
+/// source's "auto" (nullopt).
+Expected<std::optional<BoundaryKind>> parseBoundaryChoice(const std::string& name);
 Expected<WeightKind> parseWeightKind(const std::string& name);
 
 struct ParamOptions {
-  bool autoSource = true;
-  SurfacePoint source;  // when !autoSource
-  BoundaryChoice boundary = BoundaryChoice::Measured;
+  std::optional<SurfacePoint> source;                       // nullopt: the default source
+  std::optional<BoundaryKind> boundary = BoundaryKind::Measured;  // nullopt: auto
   WeightKind weights = WeightKind::ShapePreserving;
   LinearSolver solver = LinearSolver::Multigrid;
+  /// When set, receives "source", "trace", "boundary", "weights", "solve", "metrics" and "total"
+  /// (every one, 0 for a stage that did not run).
+  Timings* timings = nullptr;
 };
 
 struct BoundaryCandidate {
@@ -40,9 +50,11 @@ struct BoundaryCandidate {
   int64_t flipped, degenerate;
 };
 
-struct ParamTimings {
-  double source = 0, trace = 0, boundary = 0, weights = 0, solve = 0, metrics = 0, total = 0;
-};
+/// The one rule that picks a map among candidates (boundary 'auto' and the comparison's best): a
+/// bijective map (finite L2 stretch) beats any other; among bijective maps the lower L2 stretch wins;
+/// among non-bijective ones the fewer flipped + degenerate triangles. Ties keep the incumbent (so
+/// the earlier candidate in measured, circle, square order).
+bool preferredMap(double l2, int64_t badTriangles, double incumbentL2, int64_t incumbentBadTriangles);
 
 struct Parameterization {
   SurfacePoint source;
@@ -56,11 +68,14 @@ struct Parameterization {
   int64_t weightFallbacks = 0;        // vertices whose weights fell back to uniform
   double residual = 0;                // relative residual of the linear solve
   std::vector<BoundaryCandidate> candidates;  // auto: every boundary tried
-  ParamTimings timingsMs;
 };
 
 /// Checks that the mesh is a single disk (message says what was found otherwise).
 Expected<bool> requireDisk(const TriMesh& mesh);
+
+/// The source the measured boundary is centred on: resolveSource, then moved onto an edge or vertex
+/// within kSnapSource as the tracer will; an InvalidArgument error when that point is on the boundary.
+Expected<SurfacePoint> interiorSource(const TriMesh& mesh, const std::optional<SurfacePoint>& source);
 
 /// Progress stages: "source", "trace", "weights", "solve", "metrics" (auto: "trace" once, then "solve"
 /// and "metrics" per candidate). Cancelling returns a Cancelled error.

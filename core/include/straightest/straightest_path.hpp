@@ -21,10 +21,12 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "straightest/base_plane.hpp"
 #include "straightest/progress.hpp"
+#include "straightest/timings.hpp"
 
 namespace straightest {
 
@@ -46,6 +48,7 @@ inline constexpr double kOnPlaneRel = 1e-9;
 struct TraceOptions {
   bool keepPoints = true;   // store the path's surface points and positions
   int64_t maxSteps = 0;     // 0: 2·faces + vertices + 16 (more than any simple walk can take)
+  Timings* timings = nullptr;  // batch: receives "prepare" (base plane, tables) and "trace" (all walks)
 };
 
 struct StraightestPath {
@@ -123,22 +126,41 @@ struct PathBatch {
   SurfacePoint source;
   BasePlane base;
   std::vector<SurfacePoint> targets;
+  std::vector<Vec3> targetPositions;
   std::vector<TraceStatus> status;
   std::vector<double> length;
   std::vector<int64_t> facesCrossed;
   std::vector<uint8_t> reversed;
+  std::vector<Vec3> directions;  // per target: inPlaneDirection toward it (NaN × 3 where undefined)
   std::vector<Vec3> points;
   std::vector<int64_t> offsets;
-  double prepareMs = 0, traceMs = 0;  // setup (base plane, tables) and all traces
-  bool cancelled = false;             // the progress callback stopped it: only the first paths are here
-  int64_t reached() const;
 };
 
 /// The vertices of the longest boundary loop, in order (empty for a closed mesh).
 std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh);
 
-/// Traces every target (each a valid surface point; see validateSurfacePoint). Progress stage: "trace".
-PathBatch traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
-                                std::vector<SurfacePoint> targets, bool keepPoints, const Progress& progress = {});
+/// A destination as callers name it: a surface point, or every vertex of the longest boundary loop.
+struct BoundaryVertices {};
+using TargetSpec = std::variant<SurfacePoint, BoundaryVertices>;
+
+/// The targets in order, each point validated (an error names "target i"), each BoundaryVertices
+/// expanded into boundaryTargets (a Topology error on a closed mesh).
+Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::vector<TargetSpec>& specs);
+
+/// What a batch amounts to: the CLI's "summary" and the npm result's counts.
+struct PathSummary {
+  int64_t paths = 0, reached = 0;
+  std::vector<int64_t> byStatus;  // count per TraceStatus (kTraceStatusCount entries)
+  double meanLength = 0;          // over reached paths (0 when none)
+  double maxLength = 0;           // over reached paths
+  int64_t facesCrossed = 0;       // over all paths
+};
+PathSummary summarize(const PathBatch& batch);
+
+/// Traces every target (each a valid surface point; see validateSurfacePoint). Progress stage: "trace";
+/// cancelling returns a Cancelled error (never a partial batch).
+Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
+                                          std::vector<SurfacePoint> targets, const TraceOptions& options = {},
+                                          const Progress& progress = {});
 
 }  // namespace straightest

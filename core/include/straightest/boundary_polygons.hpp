@@ -1,0 +1,28 @@
+// boundary_polygons.hpp — where the boundary of a disk goes under each boundary kind, without
+// solving for the interior: the polygon of every requested kind in the [0, 1]² frame that
+// parameterize with that boundary puts its uv and boundaryPolygon in (unitSquareFrame of the polygon:
+// the convex-combination interior lies inside it). The measured kind traces lengths only.
+// What the page overlays on a uv layout to compare the boundaries, at the cost of the traces.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "straightest/boundary_map.hpp"
+
+namespace straightest {
+
+struct BoundaryPolygon {
+  BoundaryKind kind = BoundaryKind::Measured;
+  std::vector<int32_t> loop;     // the boundary vertices in order
+  std::vector<Vec2> polygon;     // one point per loop vertex, in [0, 1]² (empty when error)
+  std::optional<Error> error;    // why this kind has no polygon (e.g. measured with a boundary source)
+};
+
+/// One entry per kind, in the given order. The mesh must be a disk (else a Topology error for the
+/// whole call); `source` (nullopt: the default source) is needed by measured only, and a bad one is
+/// that entry's error. Progress stage "trace" (measured); cancelling returns a Cancelled error.
+Expected<std::vector<BoundaryPolygon>> boundaryPolygons(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
+                                                        const std::vector<BoundaryKind>& kinds,
+                                                        const Progress& progress = {});
+
+}  // namespace straightest

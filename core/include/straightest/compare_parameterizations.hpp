@@ -1,0 +1,36 @@
+// compare_parameterizations.hpp — every boundary kind × every weight kind of one disk, parameterized
+// and judged side by side, with the best row picked by preferredMap (the rule boundary 'auto' uses).
+// What the page's comparison table shows.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "straightest/parameterize.hpp"
+
+namespace straightest {
+
+struct ComparisonRow {
+  BoundaryKind boundary = BoundaryKind::Measured;
+  WeightKind weights = WeightKind::ShapePreserving;
+  double l2 = 0, linf = 0;  // +inf when not bijective
+  int64_t flipped = 0, degenerate = 0;
+  bool bijective = false;
+  double timeMs = 0;            // wall time of this cell's parameterization (what the table compares)
+  std::optional<Error> error;   // this cell failed (no numbers); e.g. measured with no interior source
+};
+
+struct Comparison {
+  std::vector<ComparisonRow> rows;  // boundary-major: for each boundary, every weights in order
+  int64_t best = -1;                // index into rows by preferredMap over the rows without error; -1 if none
+};
+
+/// The source is resolved once (nullopt: the default source) and shared by every cell. The mesh must
+/// be a disk (else a Topology error for the whole call). Progress stage "compare": the fraction of
+/// cells done; cancelling (at any point, also inside a cell) returns a Cancelled error.
+Expected<Comparison> compareParameterizations(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
+                                              const std::vector<BoundaryKind>& boundaries,
+                                              const std::vector<WeightKind>& weights,
+                                              LinearSolver solver = LinearSolver::Multigrid,
+                                              const Progress& progress = {});
+
+}  // namespace straightest

@@ -1,0 +1,193 @@
+// result_fields.hpp — the one field list of every result the CLI prints and the npm package returns.
+// visitFields(result, visitor) names each field once, in camelCase, with its kind; the CLI's JSON
+// writer (snake_case, nlohmann) and the bindings' JS writer (emscripten::val, typed arrays) are two
+// small visitors. A visitor provides:
+//   number(name, double), count(name, int64_t), flag(name, bool), text(name, std::string),
+//   point(name, SurfacePoint), vec3(name, Vec3), nothing(name)            — scalars (nothing: null)
+//   counts(name, std::vector<int64_t>), texts(name, std::vector<std::string>) — small lists
+//   object(name, fill)  — a nested object: fill(childVisitor)
+//   list(name, std::vector<T>) — a list of results, each written with visitFields
+//   bulk(name, const T* data, size_t n, Bulk kind) — a large array of n numbers (typed array in JS;
+//                                                    the CLI leaves it out)
+//   points(name, std::vector<SurfacePoint>), textColumn(name, std::vector<std::string>) — one entry per
+//                                       path (the CLI leaves these out and writes one row per path)
+#pragma once
+#include <string>
+#include <vector>
+
+#include "straightest/base_plane.hpp"
+#include "straightest/boundary_polygons.hpp"
+#include "straightest/compare_parameterizations.hpp"
+#include "straightest/enum_names.hpp"
+#include "straightest/parameterize.hpp"
+#include "straightest/straightest_path.hpp"
+#include "straightest/timings.hpp"
+
+namespace straightest {
+
+/// The element type a bulk array is handed over as.
+enum class Bulk { Float32, Float64, Int32, Uint32 };
+
+static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Vec3) == 3 * sizeof(double),
+              "bulk arrays read Vec2 and Vec3 as packed doubles");
+
+/// Vec2 / Vec3 arrays as packed doubles (nullptr when empty, with n = 0).
+inline const double* packed(const std::vector<Vec2>& v) { return reinterpret_cast<const double*>(v.data()); }
+inline const double* packed(const std::vector<Vec3>& v) { return reinterpret_cast<const double*>(v.data()); }
+
+template <class V>
+void visitFields(const Error& e, V& v) {
+  v.text("error", e.message);
+  v.text("category", errorCodeName(e.code));
+}
+
+template <class V>
+void visitFields(const Timings& t, V& v) {
+  for (const auto& [stage, ms] : t.stages()) v.number(stage.c_str(), ms);
+}
+
+template <class V>
+void visitFields(const MeshSummary& s, V& v) {
+  v.count("vertices", s.vertices);
+  v.count("faces", s.faces);
+  v.count("edges", s.edges);
+  v.counts("boundaryLoops", s.boundaryLoopSizes);
+  v.count("eulerCharacteristic", s.eulerCharacteristic);
+  v.count("components", s.components);
+  v.count("degenerateFaces", s.degenerateFaces);
+  v.count("reorientedFaces", s.reorientedFaces);
+  v.count("unreferencedVertices", s.unreferencedVertices);
+  v.object("bbox", [&](auto& box) {
+    box.vec3("min", s.bbox.min);
+    box.vec3("max", s.bbox.max);
+  });
+  v.texts("problems", s.problems);
+}
+
+/// The base plane of a source (source itself written by the caller, who knows which point it used).
+template <class V>
+void visitFields(const BasePlane& b, V& v) {
+  v.vec3("origin", b.origin);
+  v.vec3("normal", b.normal);
+  v.flag("fallback", b.fallback);
+  v.text("note", b.note);
+}
+
+template <class V>
+void visitFields(const PathSummary& s, V& v) {
+  v.count("paths", s.paths);
+  v.count("reached", s.reached);
+  v.object("failures", [&](auto& failures) {
+    for (const EnumName<TraceStatus>& e : kTraceStatusNames)
+      if (e.value != TraceStatus::Reached && s.byStatus[static_cast<size_t>(e.value)] > 0)
+        failures.count(e.name, s.byStatus[static_cast<size_t>(e.value)]);
+  });
+  v.number("meanLength", s.meanLength);
+  v.number("maxLength", s.maxLength);
+  v.count("facesCrossed", s.facesCrossed);
+}
+
+/// A batch column by column (path i's points are points[offsets[i] .. offsets[i+1])).
+template <class V>
+void visitFields(const PathBatch& b, V& v) {
+  v.point("source", b.source);
+  v.vec3("sourcePosition", b.base.origin);
+  v.vec3("normal", b.base.normal);
+  v.flag("baseFallback", b.base.fallback);
+  v.text("baseNote", b.base.note);
+  v.points("targets", b.targets);
+  const size_t n = b.status.size();
+  std::vector<std::string> statuses;
+  statuses.reserve(n);
+  for (TraceStatus s : b.status) statuses.push_back(traceStatusName(s));
+  v.textColumn("statuses", statuses);
+  v.bulk("lengths", b.length.data(), n, Bulk::Float64);
+  v.bulk("facesCrossed", b.facesCrossed.data(), n, Bulk::Uint32);
+  v.bulk("directions", packed(b.directions), 3 * b.directions.size(), Bulk::Float64);
+  v.bulk("points", packed(b.points), 3 * b.points.size(), Bulk::Float32);
+  v.bulk("offsets", b.offsets.data(), b.offsets.size(), Bulk::Uint32);
+}
+
+template <class V>
+void visitFields(const BoundaryCandidate& c, V& v) {
+  v.text("boundary", boundaryKindName(c.kind));
+  v.number("l2", c.l2);
+  v.number("linf", c.linf);
+  v.count("flipped", c.flipped);
+  v.count("degenerate", c.degenerate);
+}
+
+template <class V>
+void visitFields(const Parameterization& p, V& v) {
+  const StretchMetrics& m = p.metrics;
+  v.point("source", p.source);
+  v.text("boundary", boundaryKindName(p.boundary));
+  v.text("weights", weightKindName(p.weights));
+  v.bulk("uv", packed(p.uv), 2 * p.uv.size(), Bulk::Float32);
+  v.bulk("faceStretch", m.faceStretch.data(), m.faceStretch.size(), Bulk::Float32);
+  v.bulk("boundaryPolygon", packed(p.boundaryPolygon), 2 * p.boundaryPolygon.size(), Bulk::Float32);
+  v.bulk("boundaryLoop", p.boundaryLoop.data(), p.boundaryLoop.size(), Bulk::Int32);
+  v.object("stretch", [&](auto& o) {
+    o.number("l2", m.l2);
+    o.number("linf", m.linf);
+  });
+  v.flag("bijective", m.bijective);
+  v.count("flipped", m.flipped);
+  v.count("degenerate", m.degenerate);
+  v.count("fallbacks", p.fallbacks);
+  v.count("weightFallbacks", p.weightFallbacks);
+  v.object("angleDistortion", [&](auto& o) {
+    o.number("mean", m.angleDistortionMean);
+    o.number("max", m.angleDistortionMax);
+  });
+  v.object("areaDistortion", [&](auto& o) {
+    o.number("mean", m.areaDistortionMean);
+    o.number("max", m.areaDistortionMax);
+  });
+  v.number("residual", p.residual);
+  v.list("candidates", p.candidates);
+}
+
+template <class V>
+void visitFields(const BoundaryPolygon& b, V& v) {
+  v.text("boundary", boundaryKindName(b.kind));
+  if (b.error) v.nothing("polygon");
+  else v.bulk("polygon", packed(b.polygon), 2 * b.polygon.size(), Bulk::Float32);
+  v.bulk("loop", b.loop.data(), b.loop.size(), Bulk::Int32);
+  if (b.error) {
+    visitFields(*b.error, v);
+  } else {
+    v.nothing("error");
+    v.nothing("category");
+  }
+}
+
+template <class V>
+void visitFields(const ComparisonRow& r, V& v) {
+  v.text("boundary", boundaryKindName(r.boundary));
+  v.text("weights", weightKindName(r.weights));
+  if (r.error) {
+    for (const char* name : {"l2", "linf", "flipped", "degenerate", "bijective"}) v.nothing(name);
+  } else {
+    v.number("l2", r.l2);
+    v.number("linf", r.linf);
+    v.count("flipped", r.flipped);
+    v.count("degenerate", r.degenerate);
+    v.flag("bijective", r.bijective);
+  }
+  v.number("timeMs", r.timeMs);
+  if (r.error) {
+    visitFields(*r.error, v);
+  } else {
+    v.nothing("error");
+    v.nothing("category");
+  }
+}
+
+template <class V>
+void visitFields(const Comparison& c, V& v) {
+  v.list("rows", c.rows);
+  v.count("best", c.best);
+}
+
+}  // namespace straightest

@@ -1,0 +1,91 @@
+// The comparison table: every boundary × weights as parameterize computes it, and the best row by
+// the rule boundary 'auto' uses.
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "straightest/compare_parameterizations.hpp"
+#include "straightest/samples.hpp"
+#include "test_meshes.hpp"
+
+namespace straightest {
+namespace {
+
+const std::vector<BoundaryKind> kKinds = {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Square};
+const std::vector<WeightKind> kWeights = {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Cotan,
+                                          WeightKind::Uniform};
+
+TEST(PreferredMap, BijectiveFirstThenLessStretchThenFewerBadTriangles) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(preferredMap(5.0, 0, inf, 0));    // bijective beats not, whatever the numbers
+  EXPECT_FALSE(preferredMap(inf, 0, 5.0, 3));
+  EXPECT_TRUE(preferredMap(1.1, 0, 1.2, 0));
+  EXPECT_FALSE(preferredMap(1.2, 0, 1.1, 0));
+  EXPECT_FALSE(preferredMap(1.1, 0, 1.1, 0));   // a tie keeps the incumbent
+  EXPECT_TRUE(preferredMap(inf, 2, inf, 3));
+  EXPECT_FALSE(preferredMap(inf, 3, inf, 3));
+}
+
+TEST(CompareParameterizations, EveryCellIsTheParameterizationAndBestIsWhatAutoPicks) {
+  const TriMesh mesh = makeSample("face").value();
+  const Comparison c = compareParameterizations(mesh, std::nullopt, kKinds, kWeights).value();
+  ASSERT_EQ(c.rows.size(), kKinds.size() * kWeights.size());
+  for (size_t b = 0; b < kKinds.size(); ++b)
+    for (size_t w = 0; w < kWeights.size(); ++w) {
+      const ComparisonRow& row = c.rows[b * kWeights.size() + w];
+      EXPECT_EQ(row.boundary, kKinds[b]);
+      EXPECT_EQ(row.weights, kWeights[w]);
+      ASSERT_FALSE(row.error) << row.error->message;
+      ParamOptions options;
+      options.boundary = kKinds[b];
+      options.weights = kWeights[w];
+      const Parameterization p = parameterize(mesh, options).value();
+      EXPECT_EQ(row.l2, p.metrics.l2);
+      EXPECT_EQ(row.linf, p.metrics.linf);
+      EXPECT_EQ(row.flipped, p.metrics.flipped);
+      EXPECT_EQ(row.bijective, p.metrics.bijective);
+      EXPECT_GE(row.timeMs, 0);
+    }
+  ASSERT_GE(c.best, 0);
+  for (const ComparisonRow& row : c.rows)
+    EXPECT_FALSE(preferredMap(row.l2, row.flipped + row.degenerate, c.rows[c.best].l2,
+                              c.rows[c.best].flipped + c.rows[c.best].degenerate));
+  // Per weights, the best boundary of its three rows is the one boundary 'auto' keeps.
+  for (WeightKind w : kWeights) {
+    const Comparison one = compareParameterizations(mesh, std::nullopt, kKinds, {w}).value();
+    ParamOptions options;
+    options.boundary = std::nullopt;
+    options.weights = w;
+    EXPECT_EQ(one.rows[one.best].boundary, parameterize(mesh, options).value().boundary) << weightKindName(w);
+  }
+}
+
+TEST(CompareParameterizations, AFailedCellKeepsItsErrorAndIsNeverBest) {
+  const TriMesh mesh = makeSample("cap").value();
+  const SurfacePoint onBoundary = SurfacePoint::vertex(mesh.boundaryLoops()[0][0]);
+  const Comparison c = compareParameterizations(mesh, onBoundary, kKinds, {WeightKind::Uniform}).value();
+  ASSERT_EQ(c.rows.size(), 3u);
+  ASSERT_TRUE(c.rows[0].error);
+  EXPECT_EQ(c.rows[0].error->code, ErrorCode::InvalidArgument);
+  EXPECT_FALSE(c.rows[1].error);
+  EXPECT_GE(c.best, 1);
+}
+
+TEST(CompareParameterizations, NeedsADiskAndCancelsAsAnError) {
+  EXPECT_EQ(compareParameterizations(testing::icosphere(1), std::nullopt, kKinds, kWeights).error().code,
+            ErrorCode::Topology);
+  const TriMesh mesh = makeSample("mountain").value();
+  int calls = 0;
+  const auto stopped = compareParameterizations(mesh, std::nullopt, kKinds, kWeights, LinearSolver::Multigrid,
+                                                [&](const char* stage, double) {
+                                                  EXPECT_STREQ(stage, "compare");
+                                                  return ++calls < 3;
+                                                });
+  ASSERT_FALSE(stopped.ok());
+  EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
+  EXPECT_EQ(calls, 3);
+}
+
+}  // namespace
+}  // namespace straightest

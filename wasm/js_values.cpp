@@ -1,0 +1,139 @@
+// The adapters of js_values.hpp.
+#include "js_values.hpp"
+
+namespace straightest::js {
+namespace {
+
+std::string describe(const val& v) {
+  if (v.isUndefined()) return "undefined";
+  const val text = val::global("JSON").call<val>("stringify", v);
+  return text.isString() ? text.as<std::string>() : "undefined";
+}
+
+/// A point index: a whole number in [0, 2^31).
+Expected<int32_t> indexFrom(const val& v) {
+  const double index = v.as<double>();
+  if (!(index >= 0 && index <= 2147483647.0 && index == static_cast<double>(static_cast<int32_t>(index))))
+    return Error{ErrorCode::InvalidArgument, "surface point index " + describe(v) + " is not valid"};
+  return static_cast<int32_t>(index);
+}
+
+bool isNumber(const val& v) { return v.typeOf().as<std::string>() == "number"; }
+
+/// A surface point, or nullopt when `p` has none of the four shapes.
+std::optional<Expected<SurfacePoint>> pointFrom(const val& p) {
+  auto make = [](const val& index, auto build) -> Expected<SurfacePoint> {
+    auto i = indexFrom(index);
+    if (!i) return i.error();
+    return build(i.value());
+  };
+  if (isNumber(p)) return make(p, [](int32_t v) { return SurfacePoint::vertex(v); });
+  if (p.isNull() || p.isUndefined() || p.typeOf().as<std::string>() != "object") return std::nullopt;
+  if (isNumber(p["vertex"])) return make(p["vertex"], [](int32_t v) { return SurfacePoint::vertex(v); });
+  const val bary = p["bary"];
+  if (isNumber(p["face"]) && !bary.isUndefined() && !bary.isNull() && bary["length"].as<double>() == 3)
+    return make(p["face"], [&](int32_t f) {
+      return SurfacePoint::face(f, {bary[0].as<double>(), bary[1].as<double>(), bary[2].as<double>()});
+    });
+  if (isNumber(p["halfedge"]) && isNumber(p["t"]))
+    return make(p["halfedge"], [&](int32_t h) { return SurfacePoint::edge(h, p["t"].as<double>()); });
+  return std::nullopt;
+}
+
+Error shapeError(const std::string& what, bool allowAuto, const val& p) {
+  return Error{ErrorCode::InvalidArgument, what + " must be " + (allowAuto ? "'auto', " : "") +
+                                               "a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}; got " +
+                                               describe(p)};
+}
+
+}  // namespace
+
+Expected<std::optional<SurfacePoint>> sourceFrom(const val& p, const std::string& what) {
+  if (p.isString() && p.as<std::string>() == kAutoName) return std::optional<SurfacePoint>();
+  auto point = pointFrom(p);
+  if (!point) return shapeError(what, true, p);
+  if (!*point) return point->error();
+  return std::optional<SurfacePoint>(point->value());
+}
+
+Expected<std::vector<TargetSpec>> targetsFrom(const val& targets) {
+  const auto isBoundary = [](const val& v) { return v.isString() && v.as<std::string>() == "boundary"; };
+  if (isBoundary(targets)) return std::vector<TargetSpec>{BoundaryVertices{}};
+  if (!targets.isArray())
+    return Error{ErrorCode::InvalidArgument,
+                 "targets must be 'boundary' or an array of surface points (and 'boundary' entries)"};
+  std::vector<TargetSpec> specs;
+  const auto n = targets["length"].as<unsigned>();
+  specs.reserve(n);
+  for (unsigned i = 0; i < n; ++i) {
+    const val t = targets[i];
+    if (isBoundary(t)) {
+      specs.emplace_back(BoundaryVertices{});
+      continue;
+    }
+    auto point = pointFrom(t);
+    if (!point) return shapeError("targets[" + std::to_string(i) + "]", false, t);
+    if (!*point) return point->error();
+    specs.emplace_back(point->value());
+  }
+  return specs;
+}
+
+Progress progressFrom(const val& fn) {
+  if (fn.isUndefined() || fn.isNull()) return {};
+  return [fn](const char* stage, double fraction) { return !fn(std::string(stage), fraction).isFalse(); };
+}
+
+BuildLimits limitsFrom(const val& options) {
+  BuildLimits limits;
+  if (options.isUndefined() || options.isNull()) return limits;
+  const val mv = options["maxVertices"], mf = options["maxFaces"];
+  if (!mv.isUndefined()) limits.maxVertices = static_cast<int64_t>(mv.as<double>());
+  if (!mf.isUndefined()) limits.maxFaces = static_cast<int64_t>(mf.as<double>());
+  return limits;
+}
+
+val stringArray(const std::vector<std::string>& names) {
+  val a = val::array();
+  for (const std::string& n : names) a.call<void>("push", n);
+  return a;
+}
+
+val pointToJs(const SurfacePoint& p) {
+  val o = val::object();
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: o.set("vertex", p.index); break;
+    case SurfacePoint::Kind::Edge:
+      o.set("halfedge", p.index);
+      o.set("t", p.t);
+      break;
+    case SurfacePoint::Kind::Face: {
+      val b = val::array();
+      b.call<void>("push", p.bary[0], p.bary[1], p.bary[2]);
+      o.set("face", p.index);
+      o.set("bary", b);
+      break;
+    }
+  }
+  return o;
+}
+
+void JsWriter::vec3(const char* name, const Vec3& v) {
+  val a = val::array();
+  a.call<void>("push", v.x, v.y, v.z);
+  out_.set(name, a);
+}
+
+void JsWriter::counts(const char* name, const std::vector<int64_t>& xs) {
+  val a = val::array();
+  for (int64_t x : xs) a.call<void>("push", static_cast<double>(x));
+  out_.set(name, a);
+}
+
+void JsWriter::points(const char* name, const std::vector<SurfacePoint>& ps) {
+  val a = val::array();
+  for (const SurfacePoint& p : ps) a.call<void>("push", pointToJs(p));
+  out_.set(name, a);
+}
+
+}  // namespace straightest::js
