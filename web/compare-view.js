@@ -37,7 +37,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       });
       if (request.stale()) return;
       hooks.compare = reply.rows;
-      showTable(reply.rows, reply.best);
+      showTable(reply.rows, reply.rows[reply.best] ?? null);
       const total = reply.rows.reduce((sum, row) => sum + row.timeMs, 0);
       status.textContent = `${reply.rows.length} runs in ${formatMs(total)}`;
     } catch (err) {

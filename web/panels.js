@@ -70,8 +70,8 @@ export function showInfo(info, label) {
  * (the mesh has no boundary) }; drawn: { plain, stride } of the path view.
  */
 export function showPathStats(reply, request, drawn) {
-  const { summary } = reply;
-  const { count, reached } = summary;
+  const { summary } = reply; // the core's
+  const { paths: count, reached } = summary;
   const source = $('stats-source');
   source.textContent = describePoint(reply.source, false) + (request.isDefault ? ' (default)' : '');
   source.title = describePoint(reply.source);
@@ -84,7 +84,7 @@ export function showPathStats(reply, request, drawn) {
   $('stats-failed').textContent = String(count - reached);
 
   const list = $('stats-failures');
-  const failures = Object.entries(summary.byStatus);
+  const failures = Object.entries(summary.failures);
   list.replaceChildren(...failures.map(([status, n]) => {
     const item = document.createElement('li');
     item.innerHTML = `<code></code> <span></span>`;
@@ -97,7 +97,9 @@ export function showPathStats(reply, request, drawn) {
   $('stats-length').textContent = reached
     ? `${formatNumber(summary.meanLength)} / ${formatNumber(summary.maxLength)}`
     : '–';
-  $('stats-faces').textContent = count ? `${summary.facesSum} / ${summary.facesMax}` : '–';
+  let facesMax = 0;
+  for (const n of reply.facesCrossed) facesMax = Math.max(facesMax, n);
+  $('stats-faces').textContent = count ? `${summary.facesCrossed} / ${facesMax}` : '–';
   const { timings } = reply;
   const time = $('stats-time');
   time.textContent = `${timings.trace.toFixed(1)} ms`;

@@ -23,8 +23,7 @@ import { isCancelled } from './worker-client.js';
 const $ = (id) => document.getElementById(id);
 
 // Above this many vertices the page does not parameterize automatically after loading (seconds of
-// work per solve; the button runs it, with progress and Cancel) and skips the layout's overlay
-// polygons of the other two boundaries (another solve each).
+// work per solve; the button runs it, with progress and Cancel).
 const LARGE_MESH_VERTICES = 300_000;
 
 /** Saves `blob` under `name` through a temporary download link. */
@@ -155,7 +154,7 @@ export function createParamView({ session, view, surface, pathSource }) {
       `source ${formatMs(t.source)}, trace ${formatMs(t.trace)}, boundary ${formatMs(t.boundary)}, ` +
       `weights ${formatMs(t.weights)}, solve ${formatMs(t.solve)}, metrics ${formatMs(t.metrics)}; ` +
       `relative residual ${reply.residual.toExponential(1)}; ${formatMs(reply.timeMs)} in the worker ` +
-      '(plus the overlay polygons)');
+      '(plus the other boundaries\' polygons)');
   }
 
   // ---------------------------------------------------------------- the 2D layout
@@ -218,7 +217,6 @@ export function createParamView({ session, view, surface, pathSource }) {
       source: sourceOption(),
       boundary: $('boundary-select').value,
       weights: $('weights-select').value,
-      overlays: !large(), // the other boundaries' polygons: another solve each
     };
     showNote('Parameterizing…', 'busy');
     $('param-panel').dataset.state = 'running';
@@ -251,11 +249,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     hooks.parameterizations += 1;
     showStats(reply, requested);
     const failed = reply.overlays.filter((o) => o.error);
-    const notes = failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`);
-    if (reply.overlays.some((o) => o.skipped)) {
-      notes.push('Large mesh: the layout shows only this boundary (the others would take a solve each).');
-    }
-    showNote(notes.join(' '));
+    showNote(failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`).join(' '));
     $('param-panel').dataset.state = 'done';
     updateTexture();
     showStretch();

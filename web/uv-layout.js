@@ -245,7 +245,7 @@ function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces }, x
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'left';
   let cx = x;
-  for (const { boundary: kind, polygon, skipped } of overlays) {
+  for (const { boundary: kind, polygon } of overlays) {
     const isChosen = kind === boundary;
     ctx.strokeStyle = BOUNDARY_COLORS[kind];
     ctx.globalAlpha = polygon ? 1 : 0.4;
@@ -257,7 +257,7 @@ function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces }, x
     ctx.setLineDash([]);
     ctx.font = `${isChosen ? 600 : 400} 11.5px system-ui, sans-serif`;
     ctx.fillStyle = isChosen ? '#e4e7ec' : '#a3abb8';
-    const label = polygon ? kind : `${kind} (${skipped ? 'skipped' : 'failed'})`;
+    const label = polygon ? kind : `${kind} (failed)`;
     ctx.fillText(label, cx + 23, y + 6);
     ctx.globalAlpha = 1;
     cx += 23 + ctx.measureText(label).width + 14;
