@@ -3,7 +3,7 @@ import type { Mesh, Straightest } from './index.js';
 
 /** Builds a straightest Mesh from a three.js BufferGeometry (indexed or not). */
 export function meshFromBufferGeometry(st: Straightest, geometry: BufferGeometry): Mesh;
-/** A BufferGeometry (Float32 positions, Uint32 index) of a straightest Mesh. */
+/** A BufferGeometry (Float32 positions, the core's area-weighted vertex normals, Uint32 index) of a straightest Mesh. */
 export function toBufferGeometry(mesh: Mesh): BufferGeometry;
 /** Sets geometry's 'uv' attribute from straightest's uv (2 floats per vertex); returns the geometry. */
 export function applyUV(geometry: BufferGeometry, uv: ArrayLike<number>): BufferGeometry;

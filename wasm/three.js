@@ -16,10 +16,11 @@ export function meshFromBufferGeometry(st, geometry) {
   return st.meshFromArrays(positions, indices);
 }
 
-/** A BufferGeometry (Float32 positions, Uint32 index) of a straightest Mesh. */
+/** A BufferGeometry (Float32 positions, the core's area-weighted vertex normals, Uint32 index) of a straightest Mesh. */
 export function toBufferGeometry(mesh) {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(new Float32Array(mesh.positions()), 3));
+  geometry.setAttribute('normal', new BufferAttribute(mesh.vertexNormals(), 3));
   geometry.setIndex(new BufferAttribute(mesh.indices(), 1));
   return geometry;
 }
