@@ -2,15 +2,14 @@
 // job (loading a mesh, then its paths, then its parameterization, …) and in it one bar per stage
 // with its percentage, fed by the worker's 'progress' messages (the core's progress callbacks; see
 // worker.js). A stage that the core only reports as started and finished (parsing, the weights, the
-// solver's setup) shows a moving bar while it runs. The Cancel button stops the job (main.js
+// solver's setup) shows a moving bar while it runs. The Cancel button stops the job (session.js
 // restarts the worker). The panel appears only when a job takes longer than a moment and hides when
 // the worker is idle again; everything here is DOM, and the page stays interactive meanwhile.
 //
-// Test hooks (window.__straightest.progress): { busy, jobs, messages, stages: { 'type:stage':
-// fraction }, times: { 'type:stage': [startMs, endMs] } } — busy while a job runs (and its bars
-// linger), the number of jobs and progress messages, the largest fraction each stage of the
-// current (or last) job reached, and when (ms after the job began) it was first reported and
-// reached 100%, keyed by the request type ('file', 'paths', 'parameterize', …).
+// Test hooks: window.__straightest.progress (see test-hooks.js), keyed by the request type
+// ('file', 'paths', 'parameterize', …) and stage.
+
+import { hooks } from './test-hooks.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -48,12 +47,11 @@ function requestTitle(type, payload) {
 }
 
 /** onCancel(): the Cancel button was pressed. */
-export function createProgressView({ hooks, onCancel }) {
+export function createProgressView({ onCancel }) {
   const panel = $('progress-panel');
   const list = $('progress-groups');
   const elapsed = $('progress-elapsed');
   const cancelButton = $('cancel-button');
-  hooks.progress = { busy: false, jobs: 0, messages: 0, stages: {}, times: {} };
 
   let active = 0; // tasks running
   let jobStart = 0; // performance.now() when the job began; 0 when idle

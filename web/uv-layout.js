@@ -1,38 +1,10 @@
-// Drawing helpers of the parameterization view (no three.js, no geometry): the colour scale of the
-// per-face stretch, the checkerboard texture's canvas and the 2D UV-layout canvas. Everything drawn
-// here comes from the worker's arrays as they are; the page computes no uv or stretch itself.
+// Drawing helpers of the parameterization view (no geometry): the checkerboard texture's canvas and
+// the 2D UV-layout canvas. Everything drawn here comes from the worker's arrays as they are; the
+// page computes no uv or stretch itself (the colour scales are colormap.js).
 
-/** Colours of the boundary polygons in the layout (and its legend), per boundary. */
-export const BOUNDARY_COLORS = {
-  measured: '#f0b429', // the paper's boundary: the accent gold
-  circle: '#4ea8ff',
-  square: '#5fd08a',
-};
+import { BOUNDARY_COLORS, STRETCH_INFINITE, stretchIndex, stretchRgb, stretchTable } from './colormap.js';
 
-export const LAYOUT_BACKGROUND = '#101318';
-
-// Per-face L2 stretch, 1 (an isometry: good) … ≥ 2 (bad): green → yellow → red (ColorBrewer RdYlGn,
-// reversed); flipped or degenerate faces (infinite stretch) are magenta.
-const STRETCH_STOPS = [[26, 152, 80], [145, 207, 96], [254, 224, 139], [252, 141, 89], [215, 48, 39]];
-export const STRETCH_INFINITE = [255, 0, 255];
-export const STRETCH_MIN = 1;
-export const STRETCH_MAX = 2;
-
-/** The stretch colour as [r, g, b] in 0…255. */
-export function stretchRgb(stretch) {
-  if (!Number.isFinite(stretch)) return STRETCH_INFINITE;
-  const t = Math.min(Math.max((stretch - STRETCH_MIN) / (STRETCH_MAX - STRETCH_MIN), 0), 1);
-  const x = t * (STRETCH_STOPS.length - 1);
-  const k = Math.min(Math.floor(x), STRETCH_STOPS.length - 2);
-  const f = x - k;
-  return STRETCH_STOPS[k].map((c, i) => Math.round(c + f * (STRETCH_STOPS[k + 1][i] - c)));
-}
-
-/** A CSS linear-gradient of the stretch scale (legends). */
-export function stretchGradient() {
-  const stops = STRETCH_STOPS.map((c, i) => `rgb(${c.join(',')}) ${(100 * i) / (STRETCH_STOPS.length - 1)}%`);
-  return `linear-gradient(to right, ${stops.join(', ')})`;
-}
+const LAYOUT_BACKGROUND = '#101318';
 
 /**
  * The checkerboard of the texture: `cells` × `cells` squares, light and dark, with a thin darker
@@ -219,7 +191,7 @@ function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
   const sx = side * scale;
   const ox = x0 * scale - left;
   const oy = y0 * scale - top;
-  const lut = heat ? stretchTable() : null;
+  const lut = heat ? stretchTable('srgb') : null;
   const faces = indices.length / 3;
   for (let f = 0; f < faces; f++) {
     const a = indices[3 * f];
@@ -243,8 +215,7 @@ function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
     let g = RASTER_FILL[1];
     let bl = RASTER_FILL[2];
     if (lut) {
-      const s = faceStretch[f];
-      const k = Number.isFinite(s) ? 3 * Math.round(255 * Math.min(Math.max(s - STRETCH_MIN, 0) / (STRETCH_MAX - STRETCH_MIN), 1)) : 768;
+      const k = 3 * stretchIndex(faceStretch[f]);
       [r, g, bl] = [lut[k], lut[k + 1], lut[k + 2]];
     }
     for (let y = y1; y <= y2; y++) {
@@ -266,19 +237,6 @@ function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
   ctx.putImageData(image, left, top);
 }
 
-let stretchLut = null;
-/** stretchRgb at 256 steps of [STRETCH_MIN, STRETCH_MAX], then the infinite colour: 3 bytes each. */
-function stretchTable() {
-  if (!stretchLut) {
-    stretchLut = new Uint8Array(3 * 257);
-    for (let i = 0; i < 256; i++) {
-      stretchLut.set(stretchRgb(STRETCH_MIN + (i / 255) * (STRETCH_MAX - STRETCH_MIN)), 3 * i);
-    }
-    stretchLut.set(STRETCH_INFINITE, 768);
-  }
-  return stretchLut;
-}
-
 /**
  * Below the frame, three lines: a swatch per boundary polygon (the chosen one bold), the caption,
  * and the key of the fill (the stretch scale) or of the lines.
@@ -287,7 +245,7 @@ function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces }, x
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'left';
   let cx = x;
-  for (const { boundary: kind, polygon, skipped } of overlays) {
+  for (const { boundary: kind, polygon } of overlays) {
     const isChosen = kind === boundary;
     ctx.strokeStyle = BOUNDARY_COLORS[kind];
     ctx.globalAlpha = polygon ? 1 : 0.4;
@@ -299,7 +257,7 @@ function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces }, x
     ctx.setLineDash([]);
     ctx.font = `${isChosen ? 600 : 400} 11.5px system-ui, sans-serif`;
     ctx.fillStyle = isChosen ? '#e4e7ec' : '#a3abb8';
-    const label = polygon ? kind : `${kind} (${skipped ? 'skipped' : 'failed'})`;
+    const label = polygon ? kind : `${kind} (failed)`;
     ctx.fillText(label, cx + 23, y + 6);
     ctx.globalAlpha = 1;
     cx += 23 + ctx.measureText(label).width + 14;

@@ -5,40 +5,45 @@
 // with its import map (import.meta.resolve) and passes the URL in the 'init' request.
 //
 // Protocol (every request carries an `id`; the reply echoes it; 'init' comes first):
-//   → { id, type: 'init', moduleUrl }                        ← { id, type: 'ready', samples: string[] }
+//   → { id, type: 'init', moduleUrl }   ← { id, type: 'ready', samples: string[], boundaryKinds }
+//        (the boundary names mesh.parameterize() takes, 'auto' aside, in the core's order)
 //   → { id, type: 'sample', name, restore? }                 ← { id, type: 'mesh', ... } (below)
-//   → { id, type: 'file', name, format, bytes: ArrayBuffer, restore? } ← { id, type: 'mesh', ... }
+//   → { id, type: 'file', name, bytes: ArrayBuffer, restore? }  ← { id, type: 'mesh', ... }
+//        (the format follows the file name's extension, else the content)
 //        'mesh' replies: { id, type: 'mesh', label, positions: Float32Array, indices: Uint32Array,
 //                          normals: Float32Array, info, timeMs }  (buffers transferred)
-//        normals: area-weighted unit vertex normals for smooth shading (made here so the page's
-//        main thread has no per-vertex work on a large mesh).
+//        normals: the core's area-weighted unit vertex normals for smooth shading.
 //        restore: true when the page still shows this mesh and only the worker must load it again
 //        (after a restart): the reply then has no positions and indices.
 //   → { id, type: 'paths', source, targets }                 ← { id, type: 'paths', ... } (below)
 //        source: a SurfacePoint or 'auto' (the default source);
 //        targets: 'boundary' | Array<SurfacePoint | 'boundary'> — a 'boundary' entry stands for every
-//        vertex of the longest boundary loop (nothing on a closed mesh), so the page can combine the
-//        boundary with points the user picked.
+//        vertex of the longest boundary loop (the core expands it; nothing on a closed mesh), so the
+//        page can combine the boundary with points the user picked.
 //        'paths' replies: { source, sourcePosition: [x,y,z], normal, baseFallback, baseNote,
 //                           targets, targetPositions: Float32Array (xyz per target, from the core),
 //                           count, reached, statuses, lengths: Float64Array,
 //                           facesCrossed: Uint32Array, points: Float32Array, offsets: Uint32Array,
+//                           directions: Float64Array (per path the unit in-plane direction of its
+//                           cutting plane, NaN × 3 where there is none), summary (the core's:
+//                           { paths, reached, failures, meanLength, maxLength, facesCrossed }),
 //                           timings: { prepare, trace }, timeMs }  (buffers transferred)
 //   → { id, type: 'distances', source }                      ← { id, type: 'distances', source,
 //        distances: Float32Array (heat method, one per vertex), max, timeMs }
-//   → { id, type: 'parameterize', source, boundary, weights, overlays } ← { id, type: 'parameterization', ... }
-//        source: a SurfacePoint or 'auto'; boundary: 'measured' | 'circle' | 'square' | 'auto';
+//   → { id, type: 'parameterize', source, boundary, weights } ← { id, type: 'parameterization', ... }
+//        source: a SurfacePoint or 'auto'; boundary: one of boundaryKinds or 'auto';
 //        weights: 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform'.
 //        The reply holds every field of mesh.parameterize() (uv, faceStretch, boundaryPolygon and
-//        boundaryLoop transferred) plus timeMs and `overlays`: [{ boundary, polygon, error, skipped }]
-//        for 'measured', 'circle' and 'square' — each boundary's polygon in the same [0,1]² frame (or
-//        polygon null and the core's message when that boundary failed), for the layout overlay.
-//        With overlays: false (the page's choice on large meshes: each costs another solve) only the
-//        chosen boundary's polygon is there; the others have polygon null and skipped: true.
+//        boundaryLoop transferred) plus timeMs and `overlays`: [{ boundary, polygon, error }], one per
+//        boundary kind — each boundary's polygon in the same [0,1]² frame (or polygon null and the
+//        core's message when that boundary failed), for the layout overlay: the chosen one from the
+//        parameterization, the others from mesh.boundaryPolygons() (no solve).
 //   → { id, type: 'compare', source }                        ← { id, type: 'progress', stage:
 //        'compare', fraction, done, total } after each cell, then { id, type: 'comparison', source,
-//        rows: [{ boundary, weights, l2, linf, flipped, degenerate, bijective, timeMs, error }] }
-//        (3 boundaries × 4 weights; a cell that fails has error set and no numbers)
+//        rows: [{ boundary, weights, l2, linf, flipped, degenerate, bijective, timeMs, error,
+//        category }], best } — mesh.compareParameterizations(): every boundary kind × every weights
+//        (a cell that fails has error set and no numbers); best: the index of the preferred row (the
+//        rule of boundary 'auto'), -1 when every row failed
 //   → { id, type: 'exportObj', uv: Float32Array }            ← { id, type: 'obj', text }
 //        OBJ of the current mesh in its input vertex order, with the given uv as `vt` lines.
 //   any failure                                              ← { id, type: 'error', message, category }
@@ -57,31 +62,28 @@
 // its first check) is completed when a later one starts.
 //
 // Cancelling: the work runs inside synchronous WASM calls, so the worker cannot read a message that
-// would stop it; the page terminates the worker instead and starts a new one (see main.js).
+// would stop it; the page terminates the worker instead and starts a new one (see session.js).
 
 let modulePromise = null; // resolves to the object returned by createStraightest()
 let currentMesh = null; // the mesh later operations will work on; deleted when replaced
-// Per-mesh data the handlers reuse: whether the mesh has a boundary, the boundary targets once known
-// and the overlay polygons per source.
-let currentData = null; // { closed, boundary, polygons }
-
-const BOUNDARIES = ['measured', 'circle', 'square'];
-const WEIGHTS = ['shape-preserving', 'mean-value', 'cotan', 'uniform'];
+let currentClosed = false; // the current mesh has no boundary (its 'boundary' targets are none)
+let boundaryKinds = []; // the core's boundary and weight kinds (st.boundaryKinds, st.weightKinds),
+let weightKinds = []; // once initialized
 
 function straightest() {
   if (!modulePromise) throw new Error('the geometry worker was not initialized');
   return modulePromise;
 }
 
-function formatFromName(name) {
-  const ext = /\.([^.]+)$/.exec(name ?? '')?.[1]?.toLowerCase();
-  return ext === 'obj' || ext === 'off' ? ext : 'auto';
-}
-
 // ------------------------------------------------------------------ progress
 
 const THROTTLE_MS = 50; // at most one intermediate 'progress' message per 50 ms and request
-const PARAMETERIZE_STAGES = ['source', 'trace', 'weights', 'solve', 'metrics'];
+
+/** The core's stages of mesh.parameterize() for `boundary`, in order: only measured and auto trace. */
+function parameterizeStages(boundary) {
+  const traced = ['measured', 'auto', undefined].includes(boundary);
+  return ['source', ...(traced ? ['trace'] : []), 'weights', 'solve', 'metrics'];
+}
 
 /** The stages a request goes through, in order (see the protocol above). */
 function plannedStages(request) {
@@ -94,9 +96,7 @@ function plannedStages(request) {
     case 'distances':
       return ['heat', 'upload'];
     case 'parameterize': {
-      const traced = ['measured', 'auto', undefined].includes(request.boundary);
-      const core = PARAMETERIZE_STAGES.filter((stage) => stage !== 'trace' || traced);
-      return [...core, ...(request.overlays === false ? [] : ['overlays']), 'upload'];
+      return [...parameterizeStages(request.boundary), 'overlays', 'upload'];
     }
     case 'compare':
       return ['compare'];
@@ -160,35 +160,6 @@ class StageProgress {
 
 // ------------------------------------------------------------------ meshes
 
-/** Area-weighted vertex normals, unit length (zero for unreferenced vertices), as Float32. */
-function vertexNormals(positions, indices) {
-  const sums = new Float64Array(positions.length);
-  for (let f = 0; f < indices.length; f += 3) {
-    const a = 3 * indices[f];
-    const b = 3 * indices[f + 1];
-    const c = 3 * indices[f + 2];
-    const ux = positions[b] - positions[a];
-    const uy = positions[b + 1] - positions[a + 1];
-    const uz = positions[b + 2] - positions[a + 2];
-    const vx = positions[c] - positions[a];
-    const vy = positions[c + 1] - positions[a + 1];
-    const vz = positions[c + 2] - positions[a + 2];
-    // The cross product's length is twice the face area: the sum weights the faces by area.
-    const nx = uy * vz - uz * vy;
-    const ny = uz * vx - ux * vz;
-    const nz = ux * vy - uy * vx;
-    sums[a] += nx; sums[a + 1] += ny; sums[a + 2] += nz;
-    sums[b] += nx; sums[b + 1] += ny; sums[b + 2] += nz;
-    sums[c] += nx; sums[c + 1] += ny; sums[c + 2] += nz;
-  }
-  const normals = new Float32Array(positions.length);
-  for (let v = 0; v < sums.length; v += 3) {
-    const length = Math.hypot(sums[v], sums[v + 1], sums[v + 2]);
-    if (length > 0) for (let c = 0; c < 3; c++) normals[v + c] = sums[v + c] / length;
-  }
-  return normals;
-}
-
 /**
  * Replaces the current mesh and builds the 'mesh' reply (positions as Float32 for WebGL; none when
  * restoring a mesh the page still shows).
@@ -202,10 +173,9 @@ function meshReply(mesh, label, startTime, progress, restore) {
   try {
     info = mesh.info();
     if (!restore) {
-      const exact = mesh.positions();
+      positions = Float32Array.from(mesh.positions());
       indices = mesh.indices();
-      normals = vertexNormals(exact, indices);
-      positions = Float32Array.from(exact);
+      normals = mesh.vertexNormals();
     }
   } catch (err) {
     mesh.delete();
@@ -213,11 +183,7 @@ function meshReply(mesh, label, startTime, progress, restore) {
   }
   currentMesh?.delete();
   currentMesh = mesh;
-  currentData = {
-    closed: (info.boundaryLoops ?? []).length === 0,
-    boundary: null,
-    polygons: new Map(), // source key -> overlays (see boundaryOverlays)
-  };
+  currentClosed = (info.boundaryLoops ?? []).length === 0;
   const reply = {
     type: 'mesh',
     label,
@@ -240,19 +206,11 @@ function owned(array) {
   return array.byteOffset === 0 && array.byteLength === array.buffer.byteLength ? array : array.slice();
 }
 
-/** The vertices of the longest boundary loop as targets (computed once per mesh). */
-function boundaryTargets(mesh, source) {
-  if (currentData.closed) return [];
-  currentData.boundary ??= mesh.straightestPaths({ source, targets: 'boundary', points: false }).targets;
-  return currentData.boundary;
-}
-
-/** Expands the request's targets into what straightestPaths takes. */
-function resolveTargets(mesh, source, targets) {
-  if (targets === 'boundary') return currentData.closed ? [] : 'boundary';
+/** The request's targets as straightestPaths takes them: 'boundary' entries are none on a closed mesh. */
+function resolveTargets(targets) {
+  if (targets === 'boundary') return currentClosed ? [] : 'boundary';
   if (!Array.isArray(targets)) throw new Error("targets must be 'boundary' or an array");
-  if (targets.length === 1 && targets[0] === 'boundary') return resolveTargets(mesh, source, 'boundary');
-  return targets.flatMap((t) => (t === 'boundary' ? boundaryTargets(mesh, source) : [t]));
+  return currentClosed ? targets.filter((t) => t !== 'boundary') : targets;
 }
 
 /** Error → { message, category } as the page shows it. */
@@ -264,43 +222,29 @@ function describeError(err) {
 }
 
 /**
- * The boundary polygons of 'measured', 'circle' and 'square' for the layout overlay, one
- * parameterization each. A polygon depends only on the boundary and the source, not on the weights,
- * so the cheapest weights do and the result is kept per source; `known` (the reply's own
- * boundary and polygon) saves one of the three solves. Without `all`, only `known` is listed (the
- * others skipped). Reports the 'overlays' stage (one step per solve).
+ * The boundary polygon of every kind for the layout overlay: `known` ({ boundary, polygon } of the
+ * parameterization) and the others from the core, around the same source (no solve; only the
+ * measured kind traces). Reports the 'overlays' stage.
  */
-function boundaryOverlays(mesh, source, known, all, progress) {
-  const key = JSON.stringify(source);
-  let overlays = currentData.polygons.get(key);
-  if (!overlays && !all) {
-    return BOUNDARIES.map((boundary) => (boundary === known.boundary
-      ? { boundary, polygon: known.polygon.slice(), error: null }
-      : { boundary, polygon: null, error: null, skipped: true }));
-  }
-  if (!overlays) {
-    let done = 0;
-    overlays = BOUNDARIES.map((boundary) => {
-      if (boundary === known.boundary) return { boundary, polygon: known.polygon.slice(), error: null };
-      progress.update('overlays', done++ / (BOUNDARIES.length - 1));
-      try {
-        const { boundaryPolygon } = mesh.parameterize({ source, boundary, weights: 'uniform' });
-        return { boundary, polygon: Float32Array.from(boundaryPolygon), error: null };
-      } catch (err) {
-        return { boundary, polygon: null, error: describeError(err).message };
-      }
-    });
-    currentData.polygons.set(key, overlays);
-  }
-  // Copies: the cached polygons stay here when the reply's buffers are transferred.
-  return overlays.map((o) => ({ ...o, polygon: o.polygon?.slice() ?? null }));
+function boundaryOverlays(mesh, source, known, progress) {
+  const others = mesh.boundaryPolygons({
+    source,
+    kinds: boundaryKinds.filter((kind) => kind !== known.boundary),
+    onProgress: (stage, fraction) => progress.update('overlays', fraction),
+  });
+  return boundaryKinds.map((boundary) => {
+    if (boundary === known.boundary) return { boundary, polygon: known.polygon.slice(), error: null };
+    const { polygon, error } = others.find((o) => o.boundary === boundary);
+    return { boundary, polygon: polygon && owned(polygon), error };
+  });
 }
 
 const handlers = {
   async init({ moduleUrl }) {
     modulePromise ??= import(moduleUrl).then(({ createStraightest }) => createStraightest());
     const st = await straightest();
-    return { reply: { type: 'ready', samples: st.sampleNames() } };
+    ({ boundaryKinds, weightKinds } = st);
+    return { reply: { type: 'ready', samples: st.sampleNames(), boundaryKinds } };
   },
 
   async sample({ name, restore }, progress) {
@@ -309,20 +253,18 @@ const handlers = {
     return meshReply(st.sample(name), name, start, progress, restore);
   },
 
-  async file({ name, format, bytes, restore }, progress) {
+  async file({ name, bytes, restore }, progress) {
     const st = await straightest();
     const start = performance.now();
     // One synchronous call: no progress inside it ('load' is 0 before and 1 after).
-    const mesh = st.loadMesh(new Uint8Array(bytes), format ?? formatFromName(name));
+    const mesh = st.loadMesh(new Uint8Array(bytes), st.formatFromFileName(name));
     return meshReply(mesh, name, start, progress, restore);
   },
 
   async paths({ source = 'auto', targets = 'boundary' }, progress) {
     const mesh = requireMesh();
     const start = performance.now();
-    const resolved = resolveTargets(mesh, source, targets);
-    const result = mesh.straightestPaths({ source, targets: resolved, onProgress: progress.callback });
-    if (resolved === 'boundary') currentData.boundary ??= result.targets;
+    const result = mesh.straightestPaths({ source, targets: resolveTargets(targets), onProgress: progress.callback });
     progress.update('upload', 0);
     const reply = {
       type: 'paths',
@@ -340,10 +282,12 @@ const handlers = {
       facesCrossed: owned(result.facesCrossed),
       points: owned(result.points),
       offsets: owned(result.offsets),
+      directions: owned(result.directions),
+      summary: result.summary,
       timings: result.timings,
       timeMs: performance.now() - start,
     };
-    const transfer = [reply.targetPositions, reply.lengths, reply.facesCrossed, reply.points, reply.offsets];
+    const transfer = [reply.targetPositions, reply.lengths, reply.facesCrossed, reply.points, reply.offsets, reply.directions];
     return { reply, transfer: transfer.map((a) => a.buffer) };
   },
 
@@ -359,7 +303,7 @@ const handlers = {
     return { reply, transfer: [distances.buffer] };
   },
 
-  async parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', overlays = true }, progress) {
+  async parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving' }, progress) {
     const mesh = requireMesh();
     const start = performance.now();
     const result = mesh.parameterize({ source, boundary, weights, onProgress: progress.callback });
@@ -375,7 +319,7 @@ const handlers = {
     };
     reply.overlays = boundaryOverlays(mesh, result.source, {
       boundary: result.boundary, polygon: result.boundaryPolygon,
-    }, overlays, progress);
+    }, progress);
     progress.update('upload', 0);
     const buffers = [reply.uv, reply.faceStretch, reply.boundaryPolygon, reply.boundaryLoop,
       ...reply.overlays.map((o) => o.polygon).filter(Boolean)];
@@ -384,24 +328,14 @@ const handlers = {
 
   async compare({ source = 'auto' }, progress) {
     const mesh = requireMesh();
-    const total = BOUNDARIES.length * WEIGHTS.length;
-    const rows = [];
-    for (const boundary of BOUNDARIES) {
-      for (const weights of WEIGHTS) {
-        const start = performance.now();
-        try {
-          const { stretch, flipped, degenerate, bijective } = mesh.parameterize({ source, boundary, weights });
-          rows.push({
-            boundary, weights, l2: stretch.l2, linf: stretch.linf, flipped, degenerate, bijective,
-            timeMs: performance.now() - start, error: null,
-          });
-        } catch (err) {
-          rows.push({ boundary, weights, timeMs: performance.now() - start, error: describeError(err).message });
-        }
-        progress.update('compare', rows.length / total, { done: rows.length, total });
-      }
-    }
-    return { reply: { type: 'comparison', source, rows } };
+    const total = boundaryKinds.length * weightKinds.length; // the core's default cells
+    const { rows, best } = mesh.compareParameterizations({
+      source,
+      onProgress: (stage, fraction) => {
+        progress.update('compare', fraction, { done: Math.round(fraction * total), total });
+      },
+    });
+    return { reply: { type: 'comparison', source, rows, best } };
   },
 
   async exportObj({ uv }, progress) {

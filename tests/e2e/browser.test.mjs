@@ -1,230 +1,24 @@
-// End-to-end tests of the web page in headless Debian Chromium (playwright-core, no bundled browser).
+// End-to-end tests of the web page in headless Debian Chromium (playwright-core, no bundled browser),
+// on node:test with shared fixtures (support/fixtures.mjs): one server and one browser for the run,
+// and a fresh browser context per test that opens /web/index.html and waits until it is ready.
 //
-//   node tests/e2e/browser.test.mjs            (TEST_FILTER=text runs only the tests whose name has it)
+//   node tests/e2e/browser.test.mjs       (TEST_FILTER=text runs only the tests whose name has it;
+//                                          E2E_TIME_SCALE=k multiplies every timeout)
 //
-// Starts scripts/serve.mjs on a free port, opens /web/index.html once per test, and prints
-// `ok - name` / `not ok - name: reason` per test and finally `N passed, M failed` (exit 1 on failure).
-// Needs the WASM build (wasm/dist/) and `npm install` (three, playwright-core).
+// Prints node:test's report and finally `N passed, M failed` (exit 1 on failure). Needs the WASM
+// build (wasm/dist/) and `npm install` (three, playwright-core).
 
-import fs from 'node:fs';
-import http from 'node:http';
-import os from 'node:os';
-import path from 'node:path';
-import zlib from 'node:zlib';
-import { chromium } from 'playwright-core';
-import { startServer } from '../../scripts/serve.mjs';
+import assert from 'node:assert/strict';
+import { describe } from 'node:test';
+import {
+  BIG_TEST_TIMEOUT_MS, BIG_WAIT_TIMEOUT_MS, counted, expectReady, pageTest, rawGet, settled, streamText, useBrowser,
+} from './support/fixtures.mjs';
+import { decodePng, fractionDiffering } from './support/images.mjs';
+import {
+  BIG_GRID_N, BIG_GRID_VERTICES, QUAD_GRID_OBJ, TETRAHEDRON_OFF, bigGridFile, removeBigGrid,
+} from './support/meshes.mjs';
 
-const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
-const CHROMIUM_ARGS = [
-  '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync',
-  '--no-first-run', '--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-];
-const WAIT_TIMEOUT_MS = 8_000; // any single wait in a page
-const BIG_WAIT_TIMEOUT_MS = 30_000; // waits for the work on the 200k-vertex mesh
-const TEST_TIMEOUT_MS = 20_000;
-const BIG_TEST_TIMEOUT_MS = 45_000; // tests on the 200k-vertex mesh
-const RUN_TIMEOUT_MS = 115_000; // the whole run must stay under 120 s
-const VIEWPORT = { width: 1000, height: 700 };
-
-// ------------------------------------------------------------------ helpers
-
-/** Decodes an 8-bit, non-interlaced RGB or RGBA PNG into { width, height, channels, data }. */
-function decodePng(png) {
-  const signature = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
-  if (!png.subarray(0, 8).equals(signature)) throw new Error('not a PNG file');
-  let width = 0, height = 0, bitDepth = 0, colorType = 0, interlace = 0;
-  const idat = [];
-  for (let pos = 8; pos < png.length; ) {
-    const length = png.readUInt32BE(pos);
-    const type = png.toString('latin1', pos + 4, pos + 8);
-    const data = png.subarray(pos + 8, pos + 8 + length);
-    if (type === 'IHDR') {
-      width = data.readUInt32BE(0);
-      height = data.readUInt32BE(4);
-      [bitDepth, colorType] = [data[8], data[9]];
-      interlace = data[12];
-    } else if (type === 'IDAT') {
-      idat.push(data);
-    } else if (type === 'IEND') {
-      break;
-    }
-    pos += 12 + length;
-  }
-  const channels = { 2: 3, 6: 4 }[colorType];
-  if (bitDepth !== 8 || !channels || interlace !== 0) {
-    throw new Error(`unsupported PNG: bit depth ${bitDepth}, color type ${colorType}, interlace ${interlace}`);
-  }
-  const raw = zlib.inflateSync(Buffer.concat(idat));
-  const stride = width * channels;
-  const data = Buffer.alloc(height * stride);
-  for (let y = 0; y < height; y++) {
-    const filter = raw[y * (stride + 1)];
-    const src = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
-    const row = y * stride;
-    for (let x = 0; x < stride; x++) {
-      const left = x >= channels ? data[row + x - channels] : 0;
-      const up = y > 0 ? data[row - stride + x] : 0;
-      const upLeft = y > 0 && x >= channels ? data[row - stride + x - channels] : 0;
-      let predictor;
-      switch (filter) {
-        case 0: predictor = 0; break;
-        case 1: predictor = left; break;
-        case 2: predictor = up; break;
-        case 3: predictor = (left + up) >> 1; break;
-        case 4: {
-          const p = left + up - upLeft;
-          const [pa, pb, pc] = [Math.abs(p - left), Math.abs(p - up), Math.abs(p - upLeft)];
-          predictor = pa <= pb && pa <= pc ? left : pb <= pc ? up : upLeft;
-          break;
-        }
-        default: throw new Error(`bad PNG filter type ${filter} in row ${y}`);
-      }
-      data[row + x] = (src[x] + predictor) & 0xff;
-    }
-  }
-  return { width, height, channels, data };
-}
-
-/** Fraction of pixels whose colour differs from `rgb` by more than `tolerance` in some channel. */
-function fractionDiffering({ width, height, channels, data }, rgb, tolerance = 8) {
-  let differing = 0;
-  for (let i = 0; i < width * height; i++) {
-    const p = i * channels;
-    if (rgb.some((c, k) => Math.abs(data[p + k] - c) > tolerance)) differing++;
-  }
-  return differing / (width * height);
-}
-
-/** Raw GET without URL normalisation (so `..` reaches the server as sent). */
-function rawGet(port, path) {
-  return new Promise((resolve, reject) => {
-    const req = http.get({ host: '127.0.0.1', port, path, timeout: 5000 }, (res) => {
-      res.resume();
-      res.on('end', () => resolve({ status: res.statusCode, headers: res.headers }));
-    });
-    req.on('timeout', () => req.destroy(new Error(`GET ${path} timed out`)));
-    req.on('error', reject);
-  });
-}
-
-/** Reads a download's stream into a string. */
-async function streamText(stream, encoding = 'utf8') {
-  const chunks = [];
-  for await (const chunk of stream) chunks.push(chunk);
-  return Buffer.concat(chunks).toString(encoding);
-}
-
-function assert(condition, message) {
-  if (!condition) throw new Error(message);
-}
-
-function withTimeout(promise, ms, what) {
-  let timer;
-  const timeout = new Promise((_, reject) => {
-    timer = setTimeout(() => reject(new Error(`${what} timed out after ${ms} ms`)), ms);
-  });
-  return Promise.race([promise, timeout]).finally(() => clearTimeout(timer));
-}
-
-// ------------------------------------------------------------------ page fixture
-
-/**
- * Opens the page in a fresh context and records console errors and uncaught page errors.
- * setup(context), if given, runs before the page loads (e.g. to route requests).
- */
-async function openPage(browser, baseUrl, setup = null) {
-  const context = await browser.newContext({ viewport: VIEWPORT });
-  await setup?.(context);
-  const page = await context.newPage();
-  page.setDefaultTimeout(WAIT_TIMEOUT_MS);
-  const problems = [];
-  page.on('console', (msg) => {
-    if (msg.type() === 'error') problems.push(`console error: ${msg.text()}`);
-  });
-  page.on('pageerror', (err) => problems.push(`page error: ${err.message}`));
-  page.on('requestfailed', (req) => problems.push(`request failed: ${req.url()} (${req.failure()?.errorText})`));
-  await page.goto(`${baseUrl}/web/index.html`);
-  return { page, context, problems };
-}
-
-/** Waits until the page has finished loading something and returns its state and hooks. */
-async function settled(page, predicate = 'true') {
-  try {
-    await page.waitForFunction(
-      `document.body.dataset.state !== 'loading' && window.__straightest && (${predicate})`,
-    );
-  } catch (err) {
-    const state = await page.evaluate(() => document.body.dataset.state).catch(() => 'unknown');
-    const status = await page.textContent('#status', { timeout: 1000 }).catch(() => '');
-    throw new Error(`page stayed in state '${state}' (status: ${status.trim()}): ${err.message.split('\n')[0]}`);
-  }
-  return page.evaluate(() => ({
-    state: document.body.dataset.state,
-    lastInfo: window.__straightest.lastInfo,
-    lastError: window.__straightest.lastError,
-  }));
-}
-
-async function expectReady(page, predicate) {
-  const result = await settled(page, predicate);
-  assert(result.state === 'ready',
-    `page state is '${result.state}'${result.lastError ? `: ${result.lastError.message}` : ''}`);
-  return result;
-}
-
-function expectNoProblems(problems) {
-  assert(problems.length === 0, problems.join('; '));
-}
-
-// A 3×3 vertex grid (z = 0) with 4 quads: the OBJ loader triangulates them into 8 faces.
-const QUAD_GRID_OBJ = [
-  '# 3x3 quad grid',
-  'v 0 0 0', 'v 1 0 0', 'v 2 0 0',
-  'v 0 1 0', 'v 1 1 0.2', 'v 2 1 0',
-  'v 0 2 0', 'v 1 2 0', 'v 2 2 0',
-  'f 1 2 5 4', 'f 2 3 6 5',
-  'f 4 5 8 7', 'f 5 6 9 8',
-  '',
-].join('\n');
-
-// A consistently oriented tetrahedron: closed, genus 0.
-const TETRAHEDRON_OFF = 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n';
-
-/** OBJ text of an n × n height-field grid over [0,1]² (two triangles per cell): a disk. */
-function heightFieldObj(n) {
-  const lines = [`# ${n}x${n} height field`];
-  for (let j = 0; j < n; j++) {
-    for (let i = 0; i < n; i++) {
-      const [x, y] = [i / (n - 1), j / (n - 1)];
-      lines.push(`v ${x.toFixed(6)} ${y.toFixed(6)} ${(0.15 * Math.sin(3 * x) * Math.cos(2 * y)).toFixed(6)}`);
-    }
-  }
-  for (let j = 0; j + 1 < n; j++) {
-    for (let i = 0; i + 1 < n; i++) {
-      const a = j * n + i + 1; // OBJ indices start at 1
-      lines.push(`f ${a} ${a + 1} ${a + n + 1}`, `f ${a} ${a + n + 1} ${a + n}`);
-    }
-  }
-  return `${lines.join('\n')}\n`;
-}
-
-// The large mesh of the responsiveness tests: 448 × 448 = 200,704 vertices, 399,618 faces, and
-// 4 × 447 = 1788 boundary vertices (~14 MB). Written once to a temporary file: Playwright hands a
-// file path to the input directly, while a buffer would be decoded on the page's main thread.
-const BIG_GRID_N = 448;
-const BIG_GRID_VERTICES = BIG_GRID_N * BIG_GRID_N;
-let bigGridDir = null;
-function bigGridFile() {
-  if (!bigGridDir) {
-    bigGridDir = fs.mkdtempSync(path.join(os.tmpdir(), 'straightest-e2e-'));
-    fs.writeFileSync(path.join(bigGridDir, 'grid-200k.obj'), heightFieldObj(BIG_GRID_N));
-  }
-  return path.join(bigGridDir, 'grid-200k.obj');
-}
-function removeBigGrid() {
-  if (bigGridDir) fs.rmSync(bigGridDir, { recursive: true, force: true });
-  bigGridDir = null;
-}
+useBrowser({ onExit: removeBigGrid });
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
@@ -247,36 +41,31 @@ async function readTicker(page) {
   return page.evaluate(() => ({ ticks: window.__ticker.ticks, maxGap: window.__ticker.maxGap }));
 }
 
-// ------------------------------------------------------------------ tests
-
-const tests = [];
-const test = (name, fn, timeout = TEST_TIMEOUT_MS) => tests.push({ name, fn, timeout });
-
-test('server redirects / to the page, serves WASM MIME types and refuses path traversal', async ({ port }) => {
-  const root = await rawGet(port, '/');
-  assert(root.status === 302 && root.headers.location === '/web/index.html',
-    `GET / gave ${root.status} -> ${root.headers.location}`);
-  const page = await rawGet(port, '/web/index.html');
-  assert(page.status === 200 && page.headers['content-type'].startsWith('text/html'),
-    `index.html: ${page.status} ${page.headers['content-type']}`);
-  const wasm = await rawGet(port, '/wasm/dist/straightest-core.wasm');
-  assert(wasm.status === 200 && wasm.headers['content-type'] === 'application/wasm',
-    `straightest-core.wasm: ${wasm.status} ${wasm.headers['content-type']}`);
-  const js = await rawGet(port, '/wasm/index.js');
-  assert(js.status === 200 && js.headers['content-type'].startsWith('text/javascript'),
-    `wasm/index.js: ${js.status} ${js.headers['content-type']}`);
-  for (const path of ['/../etc/passwd', '/web/../../etc/passwd', '/%2e%2e/etc/passwd', '/web/%2E%2E%2F..%2Fetc/passwd']) {
-    const res = await rawGet(port, path);
-    assert(res.status === 403 || res.status === 404, `${path} gave ${res.status}`);
-  }
-  const missing = await rawGet(port, '/web/no-such-file.js');
-  assert(missing.status === 404, `missing file gave ${missing.status}`);
+describe('the static server', () => {
+  counted('server redirects / to the page, serves WASM MIME types and refuses path traversal', {}, async ({ port }) => {
+    const root = await rawGet(port, '/');
+    assert(root.status === 302 && root.headers.location === '/web/index.html',
+      `GET / gave ${root.status} -> ${root.headers.location}`);
+    const page = await rawGet(port, '/web/index.html');
+    assert(page.status === 200 && page.headers['content-type'].startsWith('text/html'),
+      `index.html: ${page.status} ${page.headers['content-type']}`);
+    const wasm = await rawGet(port, '/wasm/dist/straightest-core.wasm');
+    assert(wasm.status === 200 && wasm.headers['content-type'] === 'application/wasm',
+      `straightest-core.wasm: ${wasm.status} ${wasm.headers['content-type']}`);
+    const js = await rawGet(port, '/wasm/index.js');
+    assert(js.status === 200 && js.headers['content-type'].startsWith('text/javascript'),
+      `wasm/index.js: ${js.status} ${js.headers['content-type']}`);
+    for (const path of ['/../etc/passwd', '/web/../../etc/passwd', '/%2e%2e/etc/passwd', '/web/%2E%2E%2F..%2Fetc/passwd']) {
+      const res = await rawGet(port, path);
+      assert(res.status === 403 || res.status === 404, `${path} gave ${res.status}`);
+    }
+    const missing = await rawGet(port, '/web/no-such-file.js');
+    assert(missing.status === 404, `missing file gave ${missing.status}`);
+  });
 });
 
-test('page loads the mountain sample without console errors', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    const { lastInfo } = await expectReady(page);
+describe('loading meshes', () => {
+  pageTest('page loads the mountain sample without console errors', {}, async ({ page, loaded: { lastInfo } }) => {
     assert(lastInfo.vertices === 2500, `lastInfo.vertices is ${lastInfo.vertices}, expected 2500`);
     const vertices = await page.textContent('#info-vertices');
     assert(vertices.trim() === '2500', `info panel shows '${vertices}' vertices, expected 2500`);
@@ -287,16 +76,9 @@ test('page loads the mountain sample without console errors', async ({ browser, 
       assert(options.includes(name), `sample select lacks '${name}' (has ${options.join(', ')})`);
     }
     assert(await page.isHidden('#error-panel'), 'error panel is visible');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('mountain sample renders visible geometry on the canvas', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page);
+  pageTest('mountain sample renders visible geometry on the canvas', {}, async ({ page }) => {
     await page.waitForFunction(() => window.__straightest.renders > 0);
     const background = await page.evaluate(() => window.__straightest.background);
     const image = decodePng(await page.locator('#view-canvas').screenshot());
@@ -304,16 +86,9 @@ test('mountain sample renders visible geometry on the canvas', async ({ browser,
     const fraction = fractionDiffering(image, background);
     assert(fraction > 0.05,
       `only ${(fraction * 100).toFixed(1)}% of pixels differ from the background (need > 5%)`);
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('a malformed OBJ shows its error message in the error panel', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page);
+  pageTest('a malformed OBJ shows its error message in the error panel', {}, async ({ page }) => {
     await page.setInputFiles('#file-input', {
       name: 'bad.obj',
       mimeType: 'text/plain',
@@ -325,16 +100,9 @@ test('a malformed OBJ shows its error message in the error panel', async ({ brow
     const text = await page.textContent('#error-panel');
     assert(/out of range|\b9\b/.test(text), `error panel text does not mention vertex 9: '${text.trim()}'`);
     assert(lastError && lastError.message.length > 0, 'window.__straightest.lastError is empty');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('a valid quad-grid OBJ updates the info panel (9 vertices, 8 faces)', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page);
+  pageTest('a valid quad-grid OBJ updates the info panel (9 vertices, 8 faces)', {}, async ({ page }) => {
     await page.setInputFiles('#file-input', {
       name: 'grid.obj',
       mimeType: 'text/plain',
@@ -349,16 +117,9 @@ test('a valid quad-grid OBJ updates the info panel (9 vertices, 8 faces)', async
     const euler = (await page.textContent('#info-euler')).trim();
     assert(euler === '1', `a disk has Euler characteristic 1, panel shows '${euler}'`);
     assert(await page.isHidden('#error-panel'), 'error panel is visible');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('dropping an OFF file onto the view loads it (closed tetrahedron: χ = 2, no boundary)', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page);
+  pageTest('dropping an OFF file onto the view loads it (closed tetrahedron: χ = 2, no boundary)', {}, async ({ page }) => {
     const dataTransfer = await page.evaluateHandle((text) => {
       const transfer = new DataTransfer();
       transfer.items.add(new File([text], 'tetrahedron.off', { type: 'text/plain' }));
@@ -373,16 +134,13 @@ test('dropping an OFF file onto the view loads it (closed tetrahedron: χ = 2, n
     assert(euler === '2', `a closed sphere-like mesh has χ = 2, panel shows '${euler}'`);
     assert(boundary.startsWith('0'), `a closed mesh has no boundary loop, panel shows '${boundary}'`);
     assert(await page.isHidden('#drop-overlay'), 'drop overlay still visible after the drop');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
+  });
 });
 
-test('mountain shows straightest paths from the default source to its 196 boundary vertices', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.paths');
+describe('straightest paths', () => {
+  pageTest('mountain shows straightest paths from the default source to its 196 boundary vertices', {
+    ready: 'window.__straightest.paths',
+  }, async ({ page }) => {
     const paths = await page.evaluate(() => window.__straightest.paths);
     assert(paths.count === 196, `window.__straightest.paths.count is ${paths.count}, expected 196`);
     assert(typeof paths.source?.vertex === 'number', `default source is ${JSON.stringify(paths.source)}, expected a vertex`);
@@ -405,16 +163,13 @@ test('mountain shows straightest paths from the default source to its 196 bounda
     }
     const fraction = blue / (image.width * image.height);
     assert(fraction > 0.005, `only ${(fraction * 100).toFixed(2)}% of the pixels show the path colour`);
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('clicking the mesh moves the source to a face point and retraces; Reset goes back', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.paths');
+  // The worker is idle before the click: the progress panel over the view would take a click made
+  // while the automatic parameterization still runs.
+  pageTest('clicking the mesh moves the source to a face point and retraces; Reset goes back', {
+    ready: 'window.__straightest.param && !window.__straightest.progress.busy',
+  }, async ({ page }) => {
     const before = await page.evaluate(() => ({ ...window.__straightest }));
     const statsBefore = await page.textContent('#stats-panel');
     const box = await page.locator('#view-canvas').boundingBox();
@@ -438,16 +193,13 @@ test('clicking the mesh moves the source to a face point and retraces; Reset goe
     const reset = await page.evaluate(() => window.__straightest.paths.source);
     assert(JSON.stringify(reset) === JSON.stringify(before.paths.source),
       `Reset gave source ${JSON.stringify(reset)}, expected ${JSON.stringify(before.paths.source)}`);
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('shift+click adds a destination; hovering a path shows its length, status and faces crossed', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.paths');
+  // The worker is idle before the click: the progress panel over the view would take a click made
+  // while the automatic parameterization still runs.
+  pageTest('shift+click adds a destination; hovering a path shows its length, status and faces crossed', {
+    ready: 'window.__straightest.param && !window.__straightest.progress.busy',
+  }, async ({ page }) => {
     const traces = await page.evaluate(() => window.__straightest.traces);
     const box = await page.locator('#view-canvas').boundingBox();
     await page.keyboard.down('Shift');
@@ -474,16 +226,11 @@ test('shift+click adds a destination; hovering a path shows its length, status a
     assert(/Path \d+ of 197/.test(tip) && /length [\d.]+/.test(tip) && /\d+ faces crossed/.test(tip) &&
       /reached|hit_boundary|returned_to_source|loop|step_limit|no_exit|degenerate_plane/.test(tip),
       `hover tooltip: '${tip}'`);
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('a closed mesh shows its info and a note instead of paths', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.paths');
+  pageTest('a closed mesh shows its info and a note instead of paths', {
+    ready: 'window.__straightest.paths',
+  }, async ({ page }) => {
     await page.setInputFiles('#file-input', {
       name: 'tetrahedron.off', mimeType: 'text/plain', buffer: Buffer.from(TETRAHEDRON_OFF),
     });
@@ -491,17 +238,13 @@ test('a closed mesh shows its info and a note instead of paths', async ({ browse
     assert((await page.textContent('#stats-paths')).trim() === '0', 'stats panel does not show 0 paths');
     assert(await page.isVisible('#stats-note'), 'no note for the closed mesh');
     assert(/closed/i.test(await page.textContent('#stats-note')), 'the note does not say the mesh is closed');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
+  });
 });
 
-test('mountain is parameterized after loading: stats, UV layout and a checkerboard on the mesh', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    // The automatic parameterization runs once the paths are drawn.
-    await expectReady(page, 'window.__straightest.param');
+describe('parameterization', () => {
+  pageTest('mountain is parameterized after loading: stats, UV layout and a checkerboard on the mesh', {
+    ready: 'window.__straightest.param', // the automatic parameterization runs once the paths are drawn
+  }, async ({ page }) => {
     const param = await page.evaluate(() => window.__straightest.param);
     assert(param.boundary === 'measured' && param.weights === 'shape-preserving',
       `default parameterization is ${param.boundary} / ${param.weights}`);
@@ -550,16 +293,11 @@ test('mountain is parameterized after loading: stats, UV layout and a checkerboa
     const plain = await steps();
     assert(checker > 1500 && checker > 2 * plain,
       `${checker} dark/light steps with the checkerboard, ${plain} without: no checkerboard on the mesh`);
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('comparison table, stretch heat map and the OBJ/PNG downloads', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.param');
+  pageTest('comparison table, stretch heat map and the OBJ/PNG downloads', {
+    ready: 'window.__straightest.param',
+  }, async ({ page }) => {
     await page.click('#compare-button');
     await page.waitForFunction(() => window.__straightest.compare);
     const rows = await page.evaluate(() => window.__straightest.compare);
@@ -594,16 +332,11 @@ test('comparison table, stretch heat map and the OBJ/PNG downloads', async ({ br
     const [png] = await Promise.all([page.waitForEvent('download'), page.click('#export-png-button')]);
     const layout = decodePng(Buffer.from(await streamText(await png.createReadStream(), 'latin1'), 'latin1'));
     assert(layout.width > 100 && png.suggestedFilename().endsWith('.png'), `layout PNG ${png.suggestedFilename()}`);
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-});
+  });
 
-test('a closed mesh shows the core’s disk message in the parameterization panel', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.param');
+  pageTest('a closed mesh shows the core’s disk message in the parameterization panel', {
+    ready: 'window.__straightest.param',
+  }, async ({ page }) => {
     await page.setInputFiles('#file-input', {
       name: 'tetrahedron.off', mimeType: 'text/plain', buffer: Buffer.from(TETRAHEDRON_OFF),
     });
@@ -618,16 +351,13 @@ test('a closed mesh shows the core’s disk message in the parameterization pane
     assert((await page.textContent('#stats-paths')).trim() === '0', 'the paths view did not update');
     assert(await page.isDisabled('#compare-button') && await page.isDisabled('#export-obj-button'),
       'compare/export stay enabled on a non-disk');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
+  });
 });
 
-test('a 200k-vertex OBJ loads, traces and parameterizes in the worker while the page keeps ticking', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.param && !window.__straightest.progress.busy');
+describe('a 200k-vertex mesh in the worker', () => {
+  pageTest('a 200k-vertex OBJ loads, traces and parameterizes in the worker while the page keeps ticking', {
+    ready: 'window.__straightest.param && !window.__straightest.progress.busy', timeout: BIG_TEST_TIMEOUT_MS,
+  }, async ({ page }) => {
     await startTicker(page);
     const started = Date.now();
     await page.setInputFiles('#file-input', bigGridFile());
@@ -672,16 +402,11 @@ test('a 200k-vertex OBJ loads, traces and parameterizes in the worker while the 
     assert(param.bijective && Number.isFinite(param.l2), `parameterization: ${JSON.stringify(param)}`);
     assert(await page.isHidden('#progress-panel'), 'the progress panel stays visible when idle');
     assert(await page.isHidden('#error-panel'), 'error panel is visible');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-}, BIG_TEST_TIMEOUT_MS);
+  });
 
-test('Cancel stops the parameterization of the 200k-vertex mesh; the mesh stays and the worker works again', async ({ browser, baseUrl }) => {
-  const { page, context, problems } = await openPage(browser, baseUrl);
-  try {
-    await expectReady(page, 'window.__straightest.param && !window.__straightest.progress.busy');
+  pageTest('Cancel stops the parameterization of the 200k-vertex mesh; the mesh stays and the worker works again', {
+    ready: 'window.__straightest.param && !window.__straightest.progress.busy', timeout: BIG_TEST_TIMEOUT_MS,
+  }, async ({ page }) => {
     // Once the paths are drawn the page parameterizes the mesh: with the 'auto' boundary (a solve
     // for each of the three) that is seconds of work. Cancel it midway.
     await page.selectOption('#boundary-select', 'auto');
@@ -720,98 +445,42 @@ test('Cancel stops the parameterization of the 200k-vertex mesh; the mesh stays 
     const late = await page.evaluate(() => window.__straightest);
     assert(late.param === null && late.parameterizations === parameterizations,
       'a reply of the terminated worker reached the page');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
-}, BIG_TEST_TIMEOUT_MS);
+  });
+});
 
-test('a too_large error (WebAssembly allocation failed) shows a readable message', async ({ browser, baseUrl }) => {
-  // The worker answers every 'file' request as the npm package does when WASM memory runs out: a
-  // listener registered before worker.js's own (imported first) replies and stops the event.
-  const message = 'the mesh is too large for the available memory (WebAssembly allocation failed)';
+// The worker answers every 'file' request as the npm package does when WASM memory runs out: a
+// listener registered before worker.js's own (imported first) replies and stops the event.
+const TOO_LARGE_MESSAGE = 'the mesh is too large for the available memory (WebAssembly allocation failed)';
+function routeWorkerToTooLarge(context) {
   const prelude = `self.addEventListener('message', (event) => {
     if (event.data?.type !== 'file') return;
     event.stopImmediatePropagation();
-    self.postMessage({ id: event.data.id, type: 'error', category: 'too_large', message: ${JSON.stringify(message)} });
+    self.postMessage({ id: event.data.id, type: 'error', category: 'too_large', message: ${JSON.stringify(TOO_LARGE_MESSAGE)} });
   });`;
-  const { page, context, problems } = await openPage(browser, baseUrl, (ctx) => ctx.route(
+  return context.route(
     (url) => url.pathname === '/web/worker.js' && url.search === '',
     (route) => route.fulfill({
       contentType: 'text/javascript',
       body: `import ${JSON.stringify(`data:text/javascript,${encodeURIComponent(prelude)}`)};\nimport './worker.js?real';\n`,
     }),
-  ));
-  try {
-    await expectReady(page);
+  );
+}
+
+describe('errors', () => {
+  pageTest('a too_large error (WebAssembly allocation failed) shows a readable message', {
+    setup: routeWorkerToTooLarge,
+  }, async ({ page }) => {
     await page.setInputFiles('#file-input', { name: 'huge.obj', mimeType: 'text/plain', buffer: Buffer.from(QUAD_GRID_OBJ) });
     const { state, lastError } = await settled(page, `document.body.dataset.state === 'error'`);
     assert(state === 'error' && lastError?.category === 'too_large', `state '${state}', error ${JSON.stringify(lastError)}`);
     assert(await page.isVisible('#error-panel'), 'error panel is not visible');
     const title = (await page.textContent('#error-title')).trim();
     assert(title.includes('huge.obj'), `error title '${title}'`);
-    assert((await page.textContent('#error-message')).includes(message), 'the core message is not shown');
+    assert((await page.textContent('#error-message')).includes(TOO_LARGE_MESSAGE), 'the core message is not shown');
     assert((await page.textContent('#error-category')).trim() === 'too_large', 'category not shown');
     const hint = await page.textContent('#error-hint');
     assert(await page.isVisible('#error-hint') && /memory/i.test(hint) && /smaller/i.test(hint), `hint: '${hint}'`);
     // The mesh on display stays.
     assert((await page.textContent('#info-vertices')).trim() === '2500', 'the mountain is no longer listed');
-    expectNoProblems(problems);
-  } finally {
-    await context.close();
-  }
+  });
 });
-
-// ------------------------------------------------------------------ runner
-
-async function main() {
-  let server;
-  let browser;
-  let passed = 0;
-  let failed = 0;
-  const watchdog = setTimeout(async () => {
-    console.log(`not ok - whole run: exceeded ${RUN_TIMEOUT_MS} ms`);
-    console.log(`${passed} passed, ${failed + 1} failed`);
-    server?.closeAllConnections();
-    removeBigGrid();
-    await withTimeout(browser?.close() ?? Promise.resolve(), 3000, 'browser close').catch(() => {});
-    process.exit(1);
-  }, RUN_TIMEOUT_MS);
-  watchdog.unref();
-  try {
-    server = await startServer({ port: 0 });
-    const { port } = server.address();
-    browser = await chromium.launch({
-      executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, timeout: 20_000,
-    });
-    const env = { browser, port, baseUrl: `http://127.0.0.1:${port}` };
-    const filter = process.env.TEST_FILTER ?? '';
-    for (const { name, fn, timeout } of tests.filter((t) => t.name.includes(filter))) {
-      const start = Date.now();
-      const took = () => `(${((Date.now() - start) / 1000).toFixed(1)} s)`;
-      try {
-        await withTimeout(fn(env), timeout, 'test');
-        passed++;
-        console.log(`ok - ${name} ${took()}`);
-      } catch (err) {
-        failed++;
-        console.log(`not ok - ${name}: ${String(err.message).split('\n')[0]} ${took()}`);
-      }
-    }
-  } catch (err) {
-    failed++;
-    console.log(`not ok - setup: ${String(err.message).split('\n')[0]}`);
-  } finally {
-    await browser?.close().catch(() => {});
-    if (server) {
-      server.closeAllConnections();
-      await new Promise((resolve) => server.close(resolve));
-    }
-    clearTimeout(watchdog);
-    removeBigGrid();
-  }
-  console.log(`${passed} passed, ${failed} failed`);
-  process.exit(failed > 0 ? 1 : 0);
-}
-
-await main();

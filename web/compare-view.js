@@ -1,0 +1,131 @@
+// The "Compare" panel: every boundary kind with every weights in the worker (12 runs, with their
+// progress), as a table grouped by boundary with the best row marked and the row on display
+// outlined; clicking a row shows that combination.
+
+import { hooks } from './test-hooks.js';
+import { latest } from './latest.js';
+import { BOUNDARY_COLORS } from './colormap.js';
+import { isCancelled } from './worker-client.js';
+import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
+
+const $ = (id) => document.getElementById(id);
+
+/**
+ * session: session.js; source(): the source option of the runs; current(): the parameterization on
+ * display ({ boundary, weights } or null); onChoose(boundary, weights): a row was clicked;
+ * onSettled(): a run ended (the buttons may change).
+ */
+export function createCompareView({ session, source, current, onChoose, onSettled }) {
+  const runs = latest();
+  let comparing = false; // a compare request is in flight
+
+  async function run() {
+    const request = runs.begin(session.meshes);
+    const progress = $('compare-progress');
+    const status = $('compare-status');
+    progress.value = 0;
+    progress.hidden = false;
+    status.textContent = 'starting…';
+    $('compare-button').disabled = true;
+    comparing = true;
+    try {
+      const reply = await session.request('compare', { source: source() }, [], ({ done, total }) => {
+        if (request.stale() || done === undefined) return;
+        progress.max = total;
+        progress.value = done;
+        status.textContent = `${done} / ${total}`;
+      });
+      if (request.stale()) return;
+      hooks.compare = reply.rows;
+      showTable(reply.rows, reply.rows[reply.best] ?? null);
+      const total = reply.rows.reduce((sum, row) => sum + row.timeMs, 0);
+      status.textContent = `${reply.rows.length} runs in ${formatMs(total)}`;
+    } catch (err) {
+      if (request.stale() || isCancelled(err)) return;
+      status.textContent = `failed: ${err.message}`;
+    } finally {
+      if (!request.stale()) {
+        comparing = false;
+        progress.hidden = true;
+        onSettled();
+      }
+    }
+  }
+
+  function showTable(rows, best) {
+    const table = $('compare-table');
+    const body = table.tBodies[0];
+    body.replaceChildren();
+    for (const boundary of session.boundaryKinds) {
+      // A header row per boundary, then its rows, one per weights.
+      const header = body.insertRow();
+      header.className = 'group';
+      const th = document.createElement('th');
+      th.scope = 'rowgroup';
+      th.colSpan = 5;
+      th.innerHTML = '<span class="dot"></span>';
+      th.firstChild.style.background = BOUNDARY_COLORS[boundary];
+      th.append(`${boundary} boundary`);
+      header.append(th);
+      for (const row of rows.filter((r) => r.boundary === boundary)) {
+        const tr = body.insertRow();
+        tr.dataset.boundary = row.boundary;
+        tr.dataset.weights = row.weights;
+        tr.title = row.error ?? `Show ${row.boundary} / ${WEIGHT_LABELS[row.weights]}`;
+        const cells = row.error
+          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', formatMs(row.timeMs).replace(' ms', '')]
+          : [WEIGHT_LABELS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
+            String(row.flipped + row.degenerate), row.timeMs.toFixed(row.timeMs >= 100 ? 0 : 1)];
+        for (const text of cells) tr.insertCell().textContent = text;
+        if (best && row.boundary === best.boundary && row.weights === best.weights) tr.classList.add('best');
+        if (row.error) tr.classList.add('failed');
+        if (!row.error && row.flipped + row.degenerate > 0) tr.cells[3].classList.add('bad');
+      }
+    }
+    table.hidden = false;
+    $('compare-legend').hidden = false;
+    markCurrent();
+  }
+
+  /** Outlines the table row of the parameterization on display. */
+  function markCurrent() {
+    const shown = current();
+    for (const tr of $('compare-table').tBodies[0].rows) {
+      if (!tr.dataset.boundary) continue;
+      tr.classList.toggle('current', !!shown &&
+        tr.dataset.boundary === shown.boundary && tr.dataset.weights === shown.weights);
+    }
+  }
+
+  $('compare-button').addEventListener('click', () => run());
+  $('compare-table').tBodies[0].addEventListener('click', (event) => {
+    const tr = event.target.closest('tr');
+    if (!tr?.dataset.boundary || tr.classList.contains('failed')) return;
+    onChoose(tr.dataset.boundary, tr.dataset.weights);
+  });
+
+  return {
+    markCurrent,
+
+    /** No table (a new mesh). */
+    clear() {
+      runs.supersede();
+      comparing = false;
+      $('compare-table').tBodies[0].replaceChildren();
+      $('compare-table').hidden = true;
+      $('compare-legend').hidden = true;
+      $('compare-progress').hidden = true;
+      $('compare-status').textContent = '';
+      hooks.compare = null;
+    },
+
+    /** Cancel stopped the worker: the runs in flight will not come. */
+    cancelled() {
+      runs.supersede();
+      if (!comparing) return;
+      comparing = false;
+      $('compare-progress').hidden = true;
+      $('compare-status').textContent = 'cancelled';
+    },
+  };
+}

@@ -1,0 +1,143 @@
+// The side panels' text: the mesh info, the path statistics, the error panel and the status line,
+// and how the page writes numbers and surface points. Only DOM: it shows what it is handed.
+
+import { hooks, setState } from './test-hooks.js';
+
+const $ = (id) => document.getElementById(id);
+
+// What to do about an error, per category, below the core's own message.
+const ERROR_HINTS = {
+  too_large: 'The browser could not give this mesh enough memory: WebAssembly memory is limited to ' +
+    '4 GB, and a mesh takes about 1.3 GB per million vertices once parameterized. Try a smaller or ' +
+    'decimated mesh.',
+  worker: 'Reload the page to start a new geometry worker.',
+};
+
+export function formatNumber(x) {
+  if (!Number.isFinite(x)) return String(x);
+  return Number.isInteger(x) ? String(x) : String(Number(x.toPrecision(3)));
+}
+
+/** 'vertex 12', 'face 34 (0.20, 0.30, 0.50)' (or just 'face 34' without the coordinates), … */
+export function describePoint(point, withCoordinates = true) {
+  if (typeof point === 'number') return `vertex ${point}`;
+  if (typeof point?.vertex === 'number') return `vertex ${point.vertex}`;
+  if (typeof point?.face === 'number') {
+    const bary = point.bary.map((b) => b.toFixed(2)).join(', ');
+    return withCoordinates ? `face ${point.face} (${bary})` : `face ${point.face}`;
+  }
+  if (typeof point?.halfedge === 'number') {
+    return withCoordinates ? `halfedge ${point.halfedge} (t = ${point.t.toFixed(2)})` : `halfedge ${point.halfedge}`;
+  }
+  return String(point);
+}
+
+export function setStatus(text) {
+  $('status').textContent = text;
+}
+
+/** Fills the info panel from mesh.info(); label: the sample or file name. */
+export function showInfo(info, label) {
+  $('info-source').textContent = label ? `— ${label}` : '';
+  $('info-vertices').textContent = formatNumber(info.vertices);
+  $('info-faces').textContent = formatNumber(info.faces);
+  $('info-edges').textContent = formatNumber(info.edges);
+  const loops = info.boundaryLoops ?? [];
+  $('info-boundary').textContent =
+    loops.length === 0 ? '0 (closed)' : `${loops.length} (${loops.join(', ')} edges)`;
+  $('info-euler').textContent = formatNumber(info.eulerCharacteristic);
+  $('info-components').textContent = formatNumber(info.components);
+  $('info-degenerate').textContent = formatNumber(info.degenerateFaces);
+  $('info-reoriented').textContent = formatNumber(info.reorientedFaces);
+  $('info-unreferenced').textContent = formatNumber(info.unreferencedVertices);
+  const { min, max } = info.bbox;
+  $('info-bbox').textContent = min.map((m, i) => formatNumber(max[i] - m)).join(' × ');
+
+  const list = $('info-problems');
+  list.replaceChildren();
+  const problems = info.problems ?? [];
+  for (const text of problems.length ? problems : ['none']) {
+    const item = document.createElement('li');
+    item.textContent = text;
+    if (!problems.length) item.className = 'muted';
+    list.append(item);
+  }
+}
+
+/**
+ * Fills the stats panel from a 'paths' reply. request: { isDefault (the source is the default one),
+ * boundary (the boundary destinations are in), added (the number of added destinations), closed
+ * (the mesh has no boundary) }; drawn: { plain, stride } of the path view.
+ */
+export function showPathStats(reply, request, drawn) {
+  const { summary } = reply; // the core's
+  const { paths: count, reached } = summary;
+  const source = $('stats-source');
+  source.textContent = describePoint(reply.source, false) + (request.isDefault ? ' (default)' : '');
+  source.title = describePoint(reply.source);
+  const parts = [];
+  if (request.boundary && !request.closed) parts.push(`${count - request.added} boundary`);
+  if (request.added) parts.push(`${request.added} added`);
+  $('stats-targets').textContent = parts.join(' + ') || 'none';
+  $('stats-paths').textContent = String(count);
+  $('stats-reached').textContent = count ? `${reached} (${((100 * reached) / count).toFixed(0)}%)` : '0';
+  $('stats-failed').textContent = String(count - reached);
+
+  const list = $('stats-failures');
+  const failures = Object.entries(summary.failures);
+  list.replaceChildren(...failures.map(([status, n]) => {
+    const item = document.createElement('li');
+    item.innerHTML = `<code></code> <span></span>`;
+    item.firstChild.textContent = status;
+    item.lastChild.textContent = `${n}`;
+    return item;
+  }));
+  list.hidden = failures.length === 0;
+
+  $('stats-length').textContent = reached
+    ? `${formatNumber(summary.meanLength)} / ${formatNumber(summary.maxLength)}`
+    : '–';
+  let facesMax = 0;
+  for (const n of reply.facesCrossed) facesMax = Math.max(facesMax, n);
+  $('stats-faces').textContent = count ? `${summary.facesCrossed} / ${facesMax}` : '–';
+  const { timings } = reply;
+  const time = $('stats-time');
+  time.textContent = `${timings.trace.toFixed(1)} ms`;
+  time.title = `tracing ${timings.trace.toFixed(2)} ms, setup ${timings.prepare.toFixed(2)} ms ` +
+    `(${reply.timeMs.toFixed(1)} ms in the worker in all)`;
+  $('stats-traces').textContent = String(hooks.traces);
+
+  const notes = [];
+  if (request.closed) {
+    notes.push('Closed mesh: no boundary, so no paths by default. Shift+click the mesh to add destinations.');
+  } else if (count === 0) {
+    notes.push('No destinations: tick “Boundary destinations” or shift+click the mesh to add some.');
+  }
+  if (reply.baseNote) notes.push(`Base plane: ${reply.baseNote}.`);
+  if (drawn?.plain) {
+    const every = drawn.stride > 1 ? ` through 1 point in ${drawn.stride}` : '';
+    notes.push(`${(reply.points.length / 3).toLocaleString('en-US')} path points: drawn as thin plain ` +
+      `lines${every} (failed ones solid red), and hovering a path is off.`);
+  }
+  $('stats-note').textContent = notes.join(' ');
+  $('stats-note').hidden = notes.length === 0;
+  $('clear-targets-button').disabled = request.added === 0;
+}
+
+/** Shows an error (message and category from the core) in the error panel; the page state is 'error'. */
+export function showError(err, title) {
+  hooks.lastError = { message: err.message, category: err.category ?? 'error' };
+  $('error-title').textContent = title;
+  $('error-message').textContent = err.message;
+  $('error-category').textContent = err.category ?? 'error';
+  const hint = ERROR_HINTS[err.category] ?? '';
+  $('error-hint').textContent = hint;
+  $('error-hint').hidden = !hint;
+  $('error-panel').hidden = false;
+  setStatus('Error — see above');
+  setState('error');
+}
+
+export function clearError() {
+  $('error-panel').hidden = true;
+}

@@ -1,0 +1,309 @@
+// The straightest paths in the 3D view: the path lines (fat and pickable, or plain for many paths),
+// the source and added-destination markers, the base plane disc at the source, and the hovered
+// path's highlight with its cutting plane. It draws the worker's 'paths' reply as it is.
+
+import * as THREE from 'three';
+import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
+import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
+import { Line2 } from 'three/addons/lines/Line2.js';
+import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
+import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
+
+const PATH_COLOR = 0x1f4fb8; // reached paths
+const FAILED_COLOR = 0xe5484d; // partial paths of failed traces (dashed)
+const HIGHLIGHT_COLOR = 0x19d3f0; // the hovered path and its cutting plane
+const FAILED_HIGHLIGHT_COLOR = 0xff9a8f; // the hovered path when its trace failed
+const SOURCE_COLOR = 0xffffff;
+const ADDED_COLOR = 0xc15cff; // destinations added with shift+click
+const BASE_PLANE_COLOR = 0x9cc2ff;
+
+// Above this many path segments the paths are plain 1-pixel LineSegments over the worker's points
+// (fat lines take a quad and 6 floats per segment) and hovering them is off (picking would walk
+// every segment and the surface on each pointer move).
+const FAT_LINE_SEGMENTS = 100_000;
+// Plain lines draw at most about this many points: every k-th point of each path (and its last).
+// Beyond that the points are closer than a pixel, and uploading and drawing them would only cost
+// time (a 1M-vertex mesh's boundary paths have ~5M points).
+const PLAIN_LINE_POINTS = 250_000;
+
+// Thin, slightly transparent lines: up to a few hundred paths meet at the source.
+const reachedMaterial = new LineMaterial({
+  color: PATH_COLOR, linewidth: 1, transparent: true, opacity: 0.75,
+});
+const failedMaterial = new LineMaterial({ color: FAILED_COLOR, linewidth: 1.8, dashed: true });
+const highlightMaterial = new LineMaterial({ color: HIGHLIGHT_COLOR, linewidth: 4.5 });
+const sourceMaterial = new THREE.MeshStandardMaterial({
+  color: SOURCE_COLOR, emissive: 0x555555, roughness: 0.4,
+});
+const addedMaterial = new THREE.MeshStandardMaterial({
+  color: ADDED_COLOR, emissive: 0x3a1050, roughness: 0.4,
+});
+const basePlaneMaterial = new THREE.MeshBasicMaterial({
+  color: BASE_PLANE_COLOR, transparent: true, opacity: 0.1, side: THREE.DoubleSide, depthWrite: false,
+});
+const basePlaneRimMaterial = new THREE.LineBasicMaterial({
+  color: BASE_PLANE_COLOR, transparent: true, opacity: 0.45, depthWrite: false,
+});
+const cutPlaneMaterial = new THREE.MeshBasicMaterial({
+  color: HIGHLIGHT_COLOR, transparent: true, opacity: 0.16, side: THREE.DoubleSide, depthWrite: false,
+});
+const cutPlaneRimMaterial = new THREE.LineBasicMaterial({
+  color: HIGHLIGHT_COLOR, transparent: true, opacity: 0.6, depthWrite: false,
+});
+const markerGeometry = new THREE.SphereGeometry(1, 24, 16); // scaled per marker
+// The plain-line fallback for many paths (see FAT_LINE_SEGMENTS): 1 pixel, failed paths solid red;
+// lighter than the fat lines, as thousands of them cover the surface.
+const plainReachedMaterial = new THREE.LineBasicMaterial({ color: PATH_COLOR, transparent: true, opacity: 0.4 });
+const plainFailedMaterial = new THREE.LineBasicMaterial({ color: FAILED_COLOR });
+
+/** Removes and frees everything in `group` (shared materials and the marker geometry stay). */
+function clearGroup(group) {
+  for (const child of [...group.children]) {
+    group.remove(child);
+    child.traverse((node) => {
+      if (node.geometry && node.geometry !== markerGeometry) node.geometry.dispose();
+    });
+  }
+}
+
+function marker(position, material, radius) {
+  const sphere = new THREE.Mesh(markerGeometry, material);
+  sphere.position.copy(position);
+  sphere.scale.setScalar(radius);
+  sphere.renderOrder = 2;
+  return sphere;
+}
+
+/** Number of segments of the listed paths. */
+function segmentCount({ offsets }, paths) {
+  let count = 0;
+  for (const i of paths) count += Math.max(0, offsets[i + 1] - offsets[i] - 1);
+  return count;
+}
+
+/**
+ * Many paths: plain LineSegments, one per [paths, material] group, over one shared position
+ * attribute holding every `stride`-th point of each path and its last (see PLAIN_LINE_POINTS), with
+ * an index pair per segment. No picking data. Returns { lines, stride }.
+ */
+function plainPathLines(reply, groups) {
+  const { points, offsets, count } = reply;
+  const stride = Math.max(1, Math.ceil(offsets[count] / PLAIN_LINE_POINTS));
+  // start[i]: the first kept point of path i; a path of n ≥ 2 points keeps ⌈(n−1)/stride⌉ + 1.
+  const start = new Uint32Array(count + 1);
+  for (let i = 0; i < count; i++) {
+    const n = offsets[i + 1] - offsets[i];
+    start[i + 1] = start[i] + (n < 2 ? n : Math.ceil((n - 1) / stride) + 1);
+  }
+  const kept = new Float32Array(3 * start[count]);
+  const copy = (from, to) => {
+    kept[3 * to] = points[3 * from];
+    kept[3 * to + 1] = points[3 * from + 1];
+    kept[3 * to + 2] = points[3 * from + 2];
+  };
+  for (let i = 0; i < count; i++) {
+    const [first, end] = [offsets[i], offsets[i + 1]];
+    let to = start[i];
+    for (let j = first; j < end; j += stride) copy(j, to++);
+    if (to < start[i + 1]) copy(end - 1, to); // the last point, when the stride skipped it
+  }
+  const positions = new THREE.BufferAttribute(kept, 3);
+  const lines = [];
+  for (const [paths, material] of groups) {
+    let segments = 0;
+    for (const i of paths) segments += Math.max(0, start[i + 1] - start[i] - 1);
+    if (segments === 0) continue;
+    const index = new Uint32Array(2 * segments);
+    let s = 0;
+    for (const i of paths) {
+      for (let j = start[i]; j + 1 < start[i + 1]; j++) {
+        index[s++] = j;
+        index[s++] = j + 1;
+      }
+    }
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', positions);
+    geometry.setIndex(new THREE.BufferAttribute(index, 1));
+    const object = new THREE.LineSegments(geometry, material);
+    object.renderOrder = 1;
+    lines.push(object);
+  }
+  return { lines, stride };
+}
+
+/**
+ * One LineSegments2 holding every segment of the listed paths, and for each segment the path it
+ * belongs to (userData.owner: to name the path under the cursor).
+ */
+function pathLines(reply, paths, material) {
+  const { points, offsets } = reply;
+  const count = segmentCount(reply, paths);
+  if (count === 0) return null;
+  const segments = new Float32Array(6 * count);
+  const owner = new Uint32Array(count);
+  let s = 0;
+  for (const i of paths) {
+    for (let j = offsets[i]; j + 1 < offsets[i + 1]; j++, s++) {
+      segments.set(points.subarray(3 * j, 3 * j + 6), 6 * s);
+      owner[s] = i;
+    }
+  }
+  const geometry = new LineSegmentsGeometry().setPositions(segments);
+  const lines = new LineSegments2(geometry, material);
+  if (material.dashed) lines.computeLineDistances();
+  lines.userData.owner = owner;
+  lines.renderOrder = 1;
+  return lines;
+}
+
+/** A translucent quad at `origin` with edges along unit vectors u, v over [u0,u1]×[v0,v1], plus its rim. */
+function planeQuad(origin, u, v, [u0, u1], [v0, v1], fill, rim) {
+  const corners = [[u0, v0], [u1, v0], [u1, v1], [u0, v1]].map(([a, b]) =>
+    origin.clone().addScaledVector(u, a).addScaledVector(v, b));
+  const geometry = new THREE.BufferGeometry().setFromPoints(corners);
+  geometry.setIndex([0, 1, 2, 0, 2, 3]);
+  const group = new THREE.Group();
+  const quad = new THREE.Mesh(geometry, fill);
+  const outline = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(corners), rim);
+  quad.renderOrder = outline.renderOrder = 3;
+  group.add(quad, outline);
+  return group;
+}
+
+/** The base plane at the source: a translucent disc of `radius` perpendicular to the base normal. */
+function basePlaneDisc(origin, normal, radius) {
+  const group = new THREE.Group();
+  const disc = new THREE.Mesh(new THREE.CircleGeometry(radius, 96), basePlaneMaterial);
+  const rimPoints = new THREE.EllipseCurve(0, 0, radius, radius).getPoints(96)
+    .map((p) => new THREE.Vector3(p.x, p.y, 0));
+  const rim = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(rimPoints), basePlaneRimMaterial);
+  disc.renderOrder = rim.renderOrder = 3;
+  group.add(disc, rim);
+  group.position.copy(origin);
+  group.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), normal);
+  return group;
+}
+
+/**
+ * view: the 3D view (scene.js). onClear(): the drawn paths are about to go (hovering ends).
+ */
+export function createPathView(view, { onClear = () => {} } = {}) {
+  const group = new THREE.Group(); // everything drawn for the current paths; rebuilt per trace
+  view.scene.add(group);
+  let shown = null; // the reply on display and the objects drawn for it (see show)
+  let baseVisible = true;
+
+  /**
+   * Builds the plain-line shaders while the GPU is idle: a program's first use waits for the GPU to
+   * finish its queued work, which with a software renderer can be a large mesh's frame of seconds.
+   */
+  function prewarmPlainLines() {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6), 3));
+    geometry.setIndex([0, 1]);
+    const warm = new THREE.Scene();
+    warm.add(new THREE.LineSegments(geometry, plainReachedMaterial), new THREE.LineSegments(geometry, plainFailedMaterial));
+    view.renderer.render(warm, view.camera);
+    geometry.dispose();
+    view.requestRender(); // the real scene replaces the warm-up frame
+  }
+  prewarmPlainLines();
+
+  function clear() {
+    onClear();
+    clearGroup(group);
+    shown = null;
+  }
+
+  /** Replaces the drawn paths, markers and base plane by a 'paths' reply; added: positions of the added destinations. */
+  function show(reply, added) {
+    clear();
+    const scale = view.scale;
+    const source = new THREE.Vector3(...reply.sourcePosition);
+    const normal = new THREE.Vector3(...reply.normal).normalize();
+    const reached = [];
+    const failed = [];
+    reply.statuses.forEach((status, i) => (status === 'reached' ? reached : failed).push(i));
+
+    failedMaterial.dashSize = 0.012 * scale;
+    failedMaterial.gapSize = 0.008 * scale;
+    let lines;
+    let stride = 1;
+    const plain = segmentCount(reply, reply.statuses.keys()) > FAT_LINE_SEGMENTS;
+    if (plain) {
+      ({ lines, stride } = plainPathLines(reply, [[reached, plainReachedMaterial], [failed, plainFailedMaterial]]));
+    } else {
+      lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)]
+        .filter(Boolean);
+    }
+    const basePlane = basePlaneDisc(source, normal, 0.42 * scale);
+    basePlane.visible = baseVisible;
+    const highlight = new Line2(new LineGeometry(), highlightMaterial);
+    highlight.visible = false;
+    highlight.renderOrder = 2;
+    const cutPlane = new THREE.Group();
+    group.add(...lines, basePlane, highlight, cutPlane, marker(source, sourceMaterial, 0.011 * scale));
+    for (const position of added) group.add(marker(position, addedMaterial, 0.008 * scale));
+    // Plain lines have no picking data; so many paths lie on a large mesh whose surface would be
+    // ray cast on every pointer move.
+    const pickable = plain ? [] : lines;
+    shown = { reply, source, normal, lines: pickable, plain, stride, basePlane, highlight, cutPlane, hovered: -1 };
+  }
+
+  /**
+   * Highlights path i (or nothing for -1) and draws its cutting plane: the plane through the source
+   * spanned by the base normal and the path's in-plane direction, as a quad covering the path.
+   */
+  function highlight(i) {
+    if (!shown || shown.hovered === i) return;
+    const { reply, source, normal, highlight: line, cutPlane } = shown;
+    shown.hovered = i;
+    clearGroup(cutPlane);
+    line.visible = false;
+    view.requestRender();
+    if (i < 0) return;
+
+    const path = reply.points.subarray(3 * reply.offsets[i], 3 * reply.offsets[i + 1]);
+    if (path.length >= 6) {
+      line.geometry.dispose();
+      line.geometry = new LineGeometry().setPositions(path);
+      highlightMaterial.color.set(reply.statuses[i] === 'reached' ? HIGHLIGHT_COLOR : FAILED_HIGHLIGHT_COLOR);
+      line.visible = true;
+    }
+    const along = new THREE.Vector3().fromArray(reply.directions, 3 * i);
+    if (!Number.isFinite(along.x)) return; // the destination lies along the normal: no plane to draw
+    // Extent of the quad: the path and its destination in the (along, n) coordinates of the plane,
+    // plus a margin.
+    const uRange = [0, 0];
+    const vRange = [0, 0];
+    const extend = (p) => {
+      const d = p.clone().sub(source);
+      const [a, b] = [d.dot(along), d.dot(normal)];
+      uRange[0] = Math.min(uRange[0], a); uRange[1] = Math.max(uRange[1], a);
+      vRange[0] = Math.min(vRange[0], b); vRange[1] = Math.max(vRange[1], b);
+    };
+    const target = reply.targetPositions.subarray(3 * i, 3 * i + 3);
+    if (Number.isFinite(target[0])) extend(new THREE.Vector3(...target));
+    const p = new THREE.Vector3();
+    for (let j = 0; j < path.length; j += 3) extend(p.set(path[j], path[j + 1], path[j + 2]));
+    const margin = 0.04 * view.scale;
+    uRange[0] -= margin; uRange[1] += margin;
+    vRange[0] -= margin; vRange[1] += margin;
+    cutPlane.add(planeQuad(source, along, normal, uRange, vRange, cutPlaneMaterial, cutPlaneRimMaterial));
+  }
+
+  return {
+    show,
+    clear,
+    highlight,
+    /** The reply on display and what was drawn for it: { reply, lines (pickable), plain, stride, … }, or null. */
+    get shown() {
+      return shown;
+    },
+    setBaseVisible(visible) {
+      baseVisible = visible;
+      if (shown) shown.basePlane.visible = visible;
+      view.requestRender();
+    },
+  };
+}

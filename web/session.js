@@ -1,0 +1,197 @@
+// The page's session with the geometry worker: starting it, loading a mesh (a sample or a file),
+// Cancel (restart the worker and reload the mesh on display into the new one), and which reply is
+// still wanted — every kind of request follows "latest request wins" (latest.js).
+//
+// The mesh on display is described here (label, info, where it came from); what is drawn for it is
+// the display's business: load() hands the reply to display.showMesh() and then awaits
+// display.showPaths(). Views that depend on the mesh listen to the session's events:
+//   'meshchange'  a new mesh is on display (or none, after cancelling its reload)
+//   'meshready'   its paths are drawn (time for the follow-up work, e.g. parameterizing)
+//   'cancel'      Cancel stopped the worker: whatever it was computing will not come
+
+import { hooks, setState } from './test-hooks.js';
+import { latest } from './latest.js';
+import { clearError, setStatus, showError } from './panels.js';
+import { createWorkerClient, isCancelled, workerError } from './worker-client.js';
+
+const $ = (id) => document.getElementById(id);
+
+const MODULE_URL = import.meta.resolve('straightest'); // the worker imports the npm package from here
+
+/**
+ * observer: the progress view (told about every request); display: { showMesh(reply),
+ * dropMesh(), showPaths(): Promise } of main.js.
+ */
+export function createSession({ observer, display }) {
+  const events = new EventTarget();
+  const emit = (type) => events.dispatchEvent(new Event(type));
+  const client = createWorkerClient({ url: new URL('./worker.js', import.meta.url), observer });
+
+  const loads = latest(); // only the most recent load may update the view
+  const reloads = latest(); // the reloads into a restarted worker
+  const meshes = latest(); // advances with every mesh on display: replies for an older mesh are stale
+  let restoring = false; // the mesh on display is being reloaded into a restarted worker
+  let displayed = null; // where the mesh on display came from: { sample } or { file } (see reloadInto)
+  let label = ''; // the sample or file name of the mesh on display
+  let status = ''; // the status line of the mesh on display
+  let boundaryKinds = []; // the worker's names of the parameterization's boundaries
+
+  /**
+   * Sends a request to the worker; resolves with its reply, rejects with an Error (+ category;
+   * 'cancelled' when Cancel stopped it). onProgress receives the 'progress' messages before the reply.
+   */
+  function request(type, payload = {}, transfer = [], onProgress = null) {
+    return client.request(type, payload, transfer, onProgress);
+  }
+
+  /**
+   * Loads a mesh with send(load) (load.stale() once a newer load or a cancel took over) and shows
+   * it and its paths. origin: { sample } or { file }, kept to reload the mesh after a cancel.
+   */
+  async function load(what, send, origin) {
+    const current = loads.begin();
+    setState('loading');
+    setStatus(`Loading ${what}…`);
+    try {
+      const reply = await send(current);
+      if (current.stale()) return;
+      label = reply.label;
+      hooks.lastInfo = reply.info;
+      meshes.supersede();
+      display.showMesh(reply);
+      emit('meshchange');
+      clearError();
+      hooks.lastError = null;
+      displayed = origin;
+      status = `${reply.label}: ${reply.info.vertices} vertices, ${reply.info.faces} faces ` +
+        `(${reply.timeMs.toFixed(0)} ms in the worker)`;
+      setStatus(status);
+      await display.showPaths(); // sets the state ('ready' once the paths are drawn)
+      // Then the follow-up work, so it does not delay the first view of the mesh and its paths.
+      if (!current.stale()) emit('meshready');
+    } catch (err) {
+      if (current.stale() || isCancelled(err)) return;
+      $('sample-select').value = displayed?.sample ?? '';
+      showError(err, `Could not load ${what}`);
+    }
+  }
+
+  function loadSample(name) {
+    return load(`sample “${name}”`, () => request('sample', { name }), { sample: name });
+  }
+
+  async function loadFile(file) {
+    const select = $('sample-select');
+    if (!select.querySelector('option[value=""]')) {
+      select.prepend(new Option('(local file)', ''));
+      select.options[0].disabled = true;
+    }
+    select.value = '';
+    return load(`“${file.name}”`, async (current) => {
+      const bytes = await file.arrayBuffer();
+      if (current.stale()) throw workerError('cancelled', 'cancelled'); // do not send it to a new worker
+      return request('file', { name: file.name, bytes }, [bytes]);
+    }, { file });
+  }
+
+  /** Nothing on display (after cancelling the reload of the mesh into a restarted worker). */
+  function dropMesh() {
+    meshes.supersede();
+    display.dropMesh();
+    label = '';
+    status = '';
+    displayed = null;
+    hooks.lastInfo = null;
+    hooks.paths = null;
+    emit('meshchange');
+  }
+
+  /**
+   * Cancel: the worker is busy inside a synchronous WASM call and cannot read a message, so it is
+   * terminated and a new one loads the mesh on display again. Every pending request rejects as
+   * 'cancelled', and every request begun before is stale from now on.
+   */
+  function cancel() {
+    const wasRestoring = restoring;
+    client.restart();
+    loads.supersede(); // a load in flight stops (no paths, no follow-up work after it)
+    emit('cancel');
+    if (wasRestoring) dropMesh(); // cancelling the reload itself: nothing is left in the worker
+    $('sample-select').value = displayed?.sample ?? '';
+    reloadInto();
+  }
+
+  /** Initializes the restarted worker and loads the mesh on display into it again. */
+  async function reloadInto() {
+    const origin = displayed;
+    const current = reloads.begin();
+    restoring = true;
+    setState('loading');
+    setStatus('Cancelled — restarting the geometry worker…');
+    try {
+      await request('init', { moduleUrl: MODULE_URL });
+      if (origin?.sample) {
+        await request('sample', { name: origin.sample, restore: true });
+      } else if (origin?.file) {
+        const bytes = await origin.file.arrayBuffer();
+        if (origin !== displayed) return;
+        await request('file', { name: origin.file.name, bytes, restore: true }, [bytes]);
+      }
+      if (origin !== displayed) return;
+      hooks.cancels += 1;
+      clearError();
+      setStatus(origin ? `Cancelled. ${status}` : 'Cancelled: no mesh loaded — choose a sample or open a file.');
+      setState('ready');
+    } catch (err) {
+      if (isCancelled(err) || origin !== displayed) return; // a newer cancel or load took over
+      showError(err, 'Could not restart the geometry worker');
+    } finally {
+      if (!current.stale()) restoring = false;
+    }
+  }
+
+  /** Starts the worker, lists its samples and loads the first one. */
+  async function start() {
+    setState('loading');
+    try {
+      const ready = await request('init', { moduleUrl: MODULE_URL });
+      const { samples } = ready;
+      hooks.samples = samples;
+      boundaryKinds = ready.boundaryKinds;
+      const select = $('sample-select');
+      select.replaceChildren(...samples.map((name) => new Option(name, name)));
+      select.value = samples.includes('mountain') ? 'mountain' : samples[0];
+      select.disabled = false;
+      await loadSample(select.value);
+    } catch (err) {
+      showError(err, 'Could not load the straightest module');
+    }
+  }
+
+  return {
+    request,
+    start,
+    loadSample,
+    loadFile,
+    cancel,
+    addEventListener: events.addEventListener.bind(events),
+    /** The channel of meshes on display: requests watch it (latest.js) to drop replies for an older mesh. */
+    meshes,
+    /** The sample or file name of the mesh on display ('' for none). */
+    get label() {
+      return label;
+    },
+    /** The status line of the mesh on display. */
+    get status() {
+      return status;
+    },
+    /** The boundary kinds of the parameterization ('auto' aside), in the core's order. */
+    get boundaryKinds() {
+      return boundaryKinds;
+    },
+    /** mesh.info() of the mesh on display, or null. */
+    get info() {
+      return hooks.lastInfo;
+    },
+  };
+}

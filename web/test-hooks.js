@@ -1,0 +1,34 @@
+// The page's test hooks, in one place: window.__straightest and document.body.dataset.state, the
+// only things the browser tests read besides the DOM. Every module that reports something writes
+// the field documented here (and nothing else on window).
+
+export const hooks = {
+  // 'loading' | 'ready' | 'error' (also document.body.dataset.state): 'ready' once the mesh and its
+  // paths are drawn.
+  state: 'loading',
+  samples: [], // the sample names the worker offers
+  lastInfo: null, // mesh.info() of the mesh on display
+  lastError: null, // { message, category } of the last error shown in the error panel
+  renders: 0, // frames rendered
+  background: null, // the 3D view's clear colour as [r, g, b] bytes
+  traces: 0, // completed path traces
+  paths: null, // { count, reached, source, traceMs, plain } of the paths on display
+  cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
+  // The parameterization view: { boundary, weights, l2, linf, bijective, flipped } after each
+  // parameterization (null before and after a failure), { message, category } of the last failure,
+  // the number of parameterizations shown, and the rows of the last comparison.
+  param: null,
+  paramError: null,
+  parameterizations: 0,
+  compare: null,
+  // The progress panel: busy while a job runs (and its bars linger), the number of jobs and progress
+  // messages, the largest fraction each stage ('type:stage') of the current (or last) job reached,
+  // and when (ms after the job began) it was first reported and reached 100%.
+  progress: { busy: false, jobs: 0, messages: 0, stages: {}, times: {} },
+};
+window.__straightest = hooks;
+
+export function setState(state) {
+  hooks.state = state;
+  document.body.dataset.state = state;
+}
