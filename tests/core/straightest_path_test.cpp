@@ -303,7 +303,9 @@ TEST(TraceStraightestPaths, WithoutPointsGivesEverySingleTraceBitForBit) {
         kinds.insert(path.status);
       }
       EXPECT_TRUE(kinds.count(TraceStatus::Reached));
-      if (mesh.numVertices() < 300) EXPECT_GE(kinds.size(), 2u) << "the L-shape has unreachable targets";
+      if (mesh.numVertices() < 300) {
+        EXPECT_GE(kinds.size(), 2u) << "the L-shape has unreachable targets";
+      }
     }
   }
 }
