@@ -59,6 +59,22 @@ TEST(ObjLoader, LoadsFromAnInMemoryBufferLikeFromAFile) {
   EXPECT_EQ(mesh.value().numFaces(), 1);
 }
 
+TEST(ObjLoader, StatementsOtherThanVAndFNeverReachTinyobjloader) {
+  // tinyobjloader converted the joint id 3e9 of a "vw" line to int (undefined behaviour; found by fuzzing).
+  auto mesh = loadMesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 3e9 1\nvt 0 1e-99999\nf 1 2 3\n", MeshFormat::Obj);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh.value().numFaces(), 1);
+}
+
+TEST(ObjLoader, KeywordsAreDelimitedBySpaceOrTabOnly) {
+  // A vertical tab before or after "v"/"f" does not make a statement (as in tinyobjloader); our reader
+  // and tinyobjloader read the same lines.
+  auto mesh = loadMesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\n\v\vf 2 4 3\nv\v5 5 5\n", MeshFormat::Obj);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh.value().numVertices(), 4);
+  EXPECT_EQ(mesh.value().numFaces(), 1);
+}
+
 TEST(OffLoader, ToleratesCommentsAndBlankLines) {
   const TriMesh mesh = loadGood("good/tetrahedron.off");
   EXPECT_EQ(mesh.numVertices(), 4);
