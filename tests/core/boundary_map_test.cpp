@@ -33,9 +33,21 @@ TEST(MeasuredBoundary, AnEdgePointingAtTheSourceKeepsTheMapBijective) {
   // Removing cell (7, 3) puts the boundary edge (8, 4) → (7, 4) on the ray from S = (4, 4): both ends
   // had the same polar angle and landed on one point of the hull, collapsing a triangle.
   const TriMesh mesh = testing::gridWithout({{7, 3}});
+  const SurfacePoint source = SurfacePoint::vertex(4 * 9 + 4);
+  const BoundaryMap boundary = measuredBoundary(mesh, source).value();
+  // The polygon is convex and counter-clockwise, and no two consecutive points coincide.
+  const size_t n = boundary.polygon.size();
+  ASSERT_EQ(n, boundary.loop.size());
+  double perimeter = 0;
+  for (size_t i = 0; i < n; ++i) perimeter += norm(boundary.polygon[(i + 1) % n] - boundary.polygon[i]);
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 a = boundary.polygon[i], b = boundary.polygon[(i + 1) % n], c = boundary.polygon[(i + 2) % n];
+    EXPECT_GT(norm(b - a), 1e-6 * perimeter) << "points " << i << " and " << (i + 1) % n << " coincide";
+    EXPECT_GE(cross(b - a, c - b), -1e-12 * perimeter * perimeter) << "turns clockwise at " << (i + 1) % n;
+  }
   ParamOptions options;
   options.autoSource = false;
-  options.source = SurfacePoint::vertex(4 * 9 + 4);
+  options.source = source;
   for (WeightKind w : {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Uniform}) {
     options.weights = w;
     auto p = parameterize(mesh, options);
