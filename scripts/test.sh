@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # npm test: installs what is missing, then runs every layer and prints each layer's totals:
-#   native   — native build + ctest (GoogleTest suite + CLI contract)
+#   lint     — scripts/lint.sh (npm run lint): C++ format, eslint, the TypeScript usage check; first, since
+#              it takes under a minute and a failure there needs no build to be found
+#   native   — native build (warnings are errors) + ctest (GoogleTest suite + CLI contract)
 #   wasm     — WASM build + ctest running the same GoogleTest sources under Node
 #   sanitize — the native suite again under AddressSanitizer + UndefinedBehaviorSanitizer
 #   fuzz     — every libFuzzer harness (tests/fuzz): its saved regression inputs, then a smoke run of
@@ -10,7 +12,7 @@
 #   browser  — the page in headless Chromium (tests/e2e)
 # Exits non-zero if any layer fails. Set LAYERS="native wasm" to run a subset.
 source "$(dirname "$0")/common.sh"
-LAYERS="${LAYERS:-native wasm sanitize fuzz js browser}"
+LAYERS="${LAYERS:-lint native wasm sanitize fuzz js browser}"
 LOG_DIR="$ROOT/build/test-logs"
 mkdir -p "$LOG_DIR"
 
@@ -68,8 +70,10 @@ for layer in $LAYERS; do
       if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
       record js "$p" "$f" "$(elapsed "$t")"
       ;;
-    fuzz|browser)
-      if [ "$layer" = fuzz ]; then
+    lint|fuzz|browser)
+      if [ "$layer" = lint ]; then
+        run_layer lint bash scripts/lint.sh
+      elif [ "$layer" = fuzz ]; then
         FUZZ_SEED="${FUZZ_SEED:-1}" run_layer fuzz bash scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
       else
         run_layer browser node tests/e2e/browser.test.mjs

@@ -186,5 +186,21 @@ TEST(ObjReader, CapsCountVerticesAndTrianglesAndTheFirstFailingFaceDecides) {
   EXPECT_EQ(objError(square + "f 1 2 3 4\nf 1 3 4\nf 1 2 7\n", BuildLimits{10, 2}).code, ErrorCode::TooLarge);
 }
 
+TEST(ObjReader, StatementsOtherThanVAndFAreSkippedWhateverTheyHold) {
+  // A "vw" joint id of 3e9 and a "vt" exponent of 99999 (a fuzzing finding: they once reached a
+  // reader that overflowed on them) are not geometry: the mesh is the v and f lines.
+  auto mesh = loadMesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 3e9 1\nvt 0 1e-99999\nf 1 2 3\n", MeshFormat::Obj);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh.value().numFaces(), 1);
+}
+
+TEST(ObjReader, KeywordsAreDelimitedBySpaceOrTabOnly) {
+  // A vertical tab before or after "v"/"f" does not make a statement: only space and tab end a keyword.
+  auto mesh = loadMesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\n\v\vf 2 4 3\nv\v5 5 5\n", MeshFormat::Obj);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().message;
+  EXPECT_EQ(mesh.value().numVertices(), 4);
+  EXPECT_EQ(mesh.value().numFaces(), 1);
+}
+
 }  // namespace
 }  // namespace straightest

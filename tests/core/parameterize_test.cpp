@@ -16,12 +16,6 @@ namespace {
 
 using testing::GridPattern;
 
-std::vector<Vec2> planarUV(const TriMesh& mesh, double scale = 1, double shear = 0) {
-  std::vector<Vec2> uv;
-  for (const Vec3& p : mesh.positions()) uv.push_back({scale * (p.x + shear * p.y), scale * p.y});
-  return uv;
-}
-
 Parameterization param(const TriMesh& mesh, std::optional<BoundaryKind> b, WeightKind w) {
   ParamOptions o;
   o.boundary = b;
@@ -29,55 +23,6 @@ Parameterization param(const TriMesh& mesh, std::optional<BoundaryKind> b, Weigh
   auto r = parameterize(mesh, o);
   if (!r) ADD_FAILURE() << r.error().message;
   return std::move(r).value();
-}
-
-TEST(TextureStretch, IsometryScoresOne) {
-  const TriMesh mesh = testing::flatGrid(8, GridPattern::Jittered);
-  const StretchMetrics m = textureStretch(mesh, planarUV(mesh));
-  EXPECT_NEAR(m.l2, 1, 1e-12);
-  EXPECT_NEAR(m.linf, 1, 1e-12);
-  EXPECT_NEAR(m.angleDistortionMax, 1, 1e-9);
-  EXPECT_NEAR(m.areaDistortionMax, 1, 1e-9);
-  EXPECT_TRUE(m.bijective);
-}
-
-TEST(TextureStretch, UniformScaleScoresOne) {
-  const TriMesh mesh = testing::flatGrid(8, GridPattern::UnionJack);
-  const StretchMetrics m = textureStretch(mesh, planarUV(mesh, 0.01));
-  EXPECT_NEAR(m.l2, 1, 1e-12);
-  EXPECT_NEAR(m.linf, 1, 1e-12);
-}
-
-TEST(TextureStretch, ShearHasTheSingularValuesOfItsInverse) {
-  // uv = (x + k y, y): the inverse Jacobian has S_s = (1, 0, 0), S_t = (−k, 1, 0); area is preserved.
-  const double k = 0.5;
-  const TriMesh mesh = testing::flatGrid(6, GridPattern::Regular);
-  const StretchMetrics m = textureStretch(mesh, planarUV(mesh, 1, k));
-  const double a = 1, b = -k, c = 1 + k * k;
-  EXPECT_NEAR(m.l2, std::sqrt((a + c) / 2), 1e-12);
-  EXPECT_NEAR(m.linf, std::sqrt(((a + c) + std::sqrt((a - c) * (a - c) + 4 * b * b)) / 2), 1e-12);
-  EXPECT_NEAR(m.areaDistortionMax, 1, 1e-9);
-  EXPECT_GT(m.angleDistortionMean, 1.5);
-}
-
-TEST(TextureStretch, FlippedTriangleMakesStretchInfiniteAndIsCounted) {
-  const TriMesh mesh = testing::flatGrid(5, GridPattern::Regular);
-  std::vector<Vec2> uv = planarUV(mesh);
-  uv[12] = {uv[12][0] + 1.6, uv[12][1] + 1.6};  // the centre vertex jumps over its neighbours
-  const StretchMetrics m = textureStretch(mesh, uv);
-  EXPECT_GT(m.flipped, 0);
-  EXPECT_FALSE(m.bijective);
-  EXPECT_TRUE(std::isinf(m.l2));
-  EXPECT_TRUE(std::isinf(m.linf));
-}
-
-TEST(TextureStretch, DegenerateTriangleIsCountedAndNotBijective) {
-  const TriMesh mesh = testing::flatGrid(3, GridPattern::Regular);
-  std::vector<Vec2> uv = planarUV(mesh);
-  uv[4] = {0.5, 0.0};  // the centre lands on the edge (0, 1): triangle (0, 1, 4) has zero area
-  const StretchMetrics m = textureStretch(mesh, uv);
-  EXPECT_GE(m.degenerate, 1);
-  EXPECT_TRUE(std::isinf(m.l2));
 }
 
 /// uv is a similarity image of the flat mesh: every edge scaled by one factor, orientation kept.
@@ -163,6 +108,59 @@ TEST(Parameterize, RefusesASourceOnTheBoundaryOrOutOfRange) {
   EXPECT_FALSE(parameterize(mesh, o).ok());
   EXPECT_FALSE(parseBoundaryChoice("ellipse").ok());
   EXPECT_FALSE(parseWeightKind("harmonic").ok());
+}
+
+TEST(Parameterize, RefusesASourceWithinSnappingDistanceOfTheBoundary) {
+  // The tracer moves a source within 1e-6 of a vertex onto it; a point 2e-8 from a boundary vertex
+  // became a boundary source with radius 0 (found by fuzzing). It must be refused like a boundary vertex.
+  const TriMesh mesh = testing::flatGrid(5, GridPattern::Regular);
+  const int32_t h = testing::findHalfedge(mesh, 1, 6);  // interior, from boundary vertex (1, 0) to (1, 1)
+  ASSERT_GE(h, 0);
+  ParamOptions options;
+  options.source = SurfacePoint::edge(h, 2e-8);
+  auto p = parameterize(mesh, options);
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().code, ErrorCode::InvalidArgument);
+  EXPECT_NE(p.error().message.find("on the boundary"), std::string::npos) << p.error().message;
+  options.source = SurfacePoint::edge(h, 0.5);  // well inside: fine
+  EXPECT_TRUE(parameterize(mesh, options).ok());
+}
+
+TEST(Parameterize, IsScaleInvariant) {
+  const TriMesh base = makeSample("face").value();
+  const Parameterization reference = parameterize(base, {}).value();
+  for (double s : {1e-6, 1e6}) {
+    const Parameterization p = parameterize(testing::scaled(base, s), {}).value();
+    EXPECT_NEAR(p.metrics.l2, reference.metrics.l2, 1e-9) << "scale " << s;
+    EXPECT_NEAR(p.metrics.linf, reference.metrics.linf, 1e-7) << "scale " << s;
+    ASSERT_EQ(p.uv.size(), reference.uv.size());
+    for (size_t v = 0; v < p.uv.size(); v += 17) {
+      EXPECT_NEAR(p.uv[v][0], reference.uv[v][0], 1e-9);
+      EXPECT_NEAR(p.uv[v][1], reference.uv[v][1], 1e-9);
+    }
+  }
+}
+
+TEST(Parameterize, AlmostFlatPatchIsNearlyAnIsometry) {
+  const Parameterization p = parameterize(testing::almostFlatGrid(21, 1e-10), {}).value();
+  EXPECT_NEAR(p.metrics.l2, 1.0, 1e-6);
+  EXPECT_TRUE(p.metrics.bijective);
+}
+
+TEST(Parameterize, AlmostClosedCapIsBijectiveOnACircleAndMeasuredGivesAResultOrAClearError) {
+  // A sphere with a small hole at the bottom: the base normal at the pole is the fallback (base_plane_test).
+  const TriMesh mesh = makeSphericalCap(1.0, testing::kPi - 0.05, 24);
+  ParamOptions o;
+  o.boundary = BoundaryKind::Circle;
+  const Parameterization p = parameterize(mesh, o).value();
+  EXPECT_TRUE(p.metrics.bijective);  // Tutte: a convex boundary and convex weights never fold
+  o.boundary = BoundaryKind::Measured;
+  auto measured = parameterize(mesh, o);  // may be poor, but it is a result or a clear error
+  if (measured) {
+    EXPECT_EQ(std::isfinite(measured.value().metrics.l2), measured.value().metrics.bijective);
+  } else {
+    EXPECT_FALSE(measured.error().message.empty());
+  }
 }
 
 TEST(ObjWriter, WritesOneVtPerVertexInTheInputOrder) {

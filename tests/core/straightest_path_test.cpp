@@ -32,6 +32,43 @@ void expectConsecutivePointsShareAFace(const TriMesh& mesh, const StraightestPat
   }
 }
 
+/// What every walk satisfies, whatever its status: it starts at the source; each position is its surface
+/// point's; consecutive points share a face, one face crossed per segment; the length is the sum of the
+/// segments; every point lies on the cutting plane, and there is no plane exactly when the status is
+/// degenerate_plane (or the destination shares a face with the source and is joined directly); a reached
+/// path ends at the destination and is no shorter than the chord.
+void expectWellFormedPath(const TriMesh& mesh, const StraightestPathTracer& tracer, const SurfacePoint& destination,
+                          const StraightestPath& path) {
+  const double size = mesh.summary().bbox.diagonal();
+  const Vec3 S = position(mesh, tracer.source()), D = position(mesh, destination);
+  const char* status = traceStatusName(path.status);
+  ASSERT_FALSE(path.points.empty()) << status;
+  ASSERT_EQ(path.points.size(), path.positions.size()) << status;
+  EXPECT_LE(norm(path.positions.front() - S), 1e-12 * size) << status;
+  EXPECT_EQ(path.facesCrossed, static_cast<int64_t>(path.points.size()) - 1) << status;
+  double sum = 0;
+  for (size_t i = 0; i < path.points.size(); ++i) {
+    EXPECT_LE(norm(position(mesh, path.points[i]) - path.positions[i]), 1e-9 * size) << status << " point " << i;
+    if (i > 0) sum += norm(path.positions[i] - path.positions[i - 1]);
+  }
+  expectConsecutivePointsShareAFace(mesh, path);
+  EXPECT_NEAR(path.length, sum, 1e-9 * (sum + size)) << status;
+  const auto plane = cuttingPlane(tracer.base(), D);
+  if (path.status == TraceStatus::DegeneratePlane) {
+    EXPECT_FALSE(plane.has_value());
+    EXPECT_EQ(path.points.size(), 1u);
+  } else if (!plane) {
+    EXPECT_EQ(path.status, TraceStatus::Reached) << status << " without a cutting plane";
+    EXPECT_LE(path.points.size(), 2u) << "a path without a cutting plane";
+  } else {
+    for (const Vec3& p : path.positions) EXPECT_LE(std::abs(dot(plane->normal, p - S)), 1e-7 * size) << status;
+  }
+  if (path.status == TraceStatus::Reached) {
+    EXPECT_LE(norm(path.positions.back() - D), 1e-9 * size);
+    EXPECT_GE(path.length, norm(D - S) * (1 - 1e-12) - 1e-12 * size);
+  }
+}
+
 /// On a plane, the straightest distance is the Euclidean distance and the path lies on its plane.
 void expectEuclideanPaths(const TriMesh& mesh, const SurfacePoint& source, const std::vector<SurfacePoint>& targets) {
   StraightestPathTracer tracer(mesh, source);
@@ -268,19 +305,34 @@ TEST(StraightestPathTracer, DestinationEqualToSourceIsReachedWithLengthZero) {
 }
 
 TEST(StraightestPathTracer, DestinationAlongTheBaseNormalIsADegeneratePlane) {
-  // A vertical wall hanging below a flat square: D straight below S.
-  const TriMesh mesh = testing::buildOrFail({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0}, {0.5, 0.5, -1}},
-                                            {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
-  StraightestPathTracer tracer(mesh, SurfacePoint::vertex(4));
-  // Vertex 5 is unreferenced, so use a point straight below via a face-free check of cuttingPlane.
-  EXPECT_FALSE(cuttingPlane(tracer.base(), {0.5, 0.5, -1}).has_value());
+  // A regular octahedron (closed: the base normal is the area-weighted normal). At the bottom apex S it
+  // is −z by symmetry, and the top apex D lies straight above S: every plane through S perpendicular to
+  // the base plane contains D, so none is determined by it.
+  const TriMesh mesh = testing::buildOrFail({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+                                            {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},    // top
+                                             {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});  // bottom
+  ASSERT_EQ(mesh.summary().eulerCharacteristic, 2);
+  const int32_t bottom = 5, top = 4;
+  StraightestPathTracer tracer(mesh, SurfacePoint::vertex(bottom));
+  EXPECT_NEAR(tracer.base().normal.z, -1.0, 1e-12);
+  EXPECT_FALSE(cuttingPlane(tracer.base(), mesh.position(top)).has_value());
+  const StraightestPath& path = tracer.trace(SurfacePoint::vertex(top));
+  EXPECT_EQ(path.status, TraceStatus::DegeneratePlane) << traceStatusName(path.status);
+  EXPECT_EQ(path.length, 0);
+  expectWellFormedPath(mesh, tracer, SurfacePoint::vertex(top), path);
+  // Any other destination has its plane, and on this convex closed surface it is reached.
+  for (int32_t v = 0; v < 4; ++v) {
+    const StraightestPath& side = tracer.trace(SurfacePoint::vertex(v));
+    EXPECT_EQ(side.status, TraceStatus::Reached) << "vertex " << v << ": " << traceStatusName(side.status);
+    expectWellFormedPath(mesh, tracer, SurfacePoint::vertex(v), side);
+  }
 }
 
-TEST(StraightestPathTracer, ThousandRandomPairsOnABumpyMeshAllTerminateWithAStatus) {
+TEST(StraightestPathTracer, ThousandRandomPairsOnABumpyMeshGiveWellFormedWalks) {
   const TriMesh mesh = makeSample("face").value();
   std::mt19937 rng(11);
   std::uniform_int_distribution<int32_t> vertex(0, mesh.numVertices() - 1);
-  int reached = 0, total = 0;
+  int reached = 0;
   for (int s = 0; s < 25; ++s) {
     const SurfacePoint source = s % 2 ? SurfacePoint::vertex(vertex(rng)) : randomFacePoints(mesh, 1, 100 + s)[0];
     StraightestPathTracer tracer(mesh, source);
@@ -288,8 +340,7 @@ TEST(StraightestPathTracer, ThousandRandomPairsOnABumpyMeshAllTerminateWithAStat
     for (int i = 0; i < 20; ++i) targets.push_back(SurfacePoint::vertex(vertex(rng)));
     for (const auto& target : targets) {
       const StraightestPath& path = tracer.trace(target);
-      ++total;
-      ASSERT_LT(static_cast<int>(path.status), kTraceStatusCount);
+      expectWellFormedPath(mesh, tracer, target, path);
       if (path.status == TraceStatus::Reached) {
         ++reached;
         EXPECT_GE(path.length, norm(position(mesh, target) - position(mesh, source)) - 1e-12);
@@ -297,7 +348,6 @@ TEST(StraightestPathTracer, ThousandRandomPairsOnABumpyMeshAllTerminateWithAStat
       EXPECT_LE(path.facesCrossed, 2 * mesh.numFaces() + mesh.numVertices() + 16);
     }
   }
-  EXPECT_EQ(total, 1000);
   EXPECT_GT(reached, 500);  // most pairs on a face-like disk are reachable
 }
 
@@ -327,7 +377,9 @@ TEST(TraceStraightestPaths, WithoutPointsGivesEverySingleTraceBitForBit) {
         kinds.insert(path.status);
       }
       EXPECT_TRUE(kinds.count(TraceStatus::Reached));
-      if (mesh.numVertices() < 300) EXPECT_GE(kinds.size(), 2u) << "the L-shape has unreachable targets";
+      if (mesh.numVertices() < 300) {
+        EXPECT_GE(kinds.size(), 2u) << "the L-shape has unreachable targets";
+      }
     }
   }
 }
@@ -353,52 +405,149 @@ TEST(TraceStraightestPaths, PacksEveryPathWithItsOffsets) {
   EXPECT_GT(summarize(batch).reached, 0);
 }
 
-TEST(HeatMethod, NeverExceedsTheStraightestDistanceBeyondItsError) {
-  const std::vector<std::pair<std::string, TriMesh>> meshes = [] {
-    std::vector<std::pair<std::string, TriMesh>> m;
-    m.emplace_back("plane", testing::flatGrid(31, GridPattern::Jittered));
-    m.emplace_back("cap", makeSphericalCap(1.0, kPi / 3, 24));
-    m.emplace_back("saddle", makeSample("saddle").value());
-    m.emplace_back("face", makeSample("face").value());
-    return m;
-  }();
-  for (const auto& [name, mesh] : meshes) {
-    const int32_t source = centerVertex(mesh);
-    const HeatMethod heat(mesh);
-    const auto distances = heat.distances(SurfacePoint::vertex(source));
-    const auto graph = dijkstraDistances(mesh, std::vector<int32_t>{source});
-    StraightestPathTracer tracer(mesh, SurfacePoint::vertex(source));
-    for (const auto& target : boundaryTargets(mesh)) {
-      const StraightestPath& path = tracer.trace(target);
-      if (path.status != TraceStatus::Reached) continue;
-      // The heat method is an approximation: allow it 5% above the straightest (itself an upper
-      // bound of the geodesic distance).
-      EXPECT_LE(distances[target.index], path.length * 1.05) << name;
-      EXPECT_GT(distances[target.index], 0) << name;
-      // The edge graph never beats the heat method's approximation of the geodesic distance by much.
-      EXPECT_GE(graph[target.index], distances[target.index] * 0.95) << name;
+// Badly conditioned inputs give the well-conditioned answer (tolerances relative to the mesh's own
+// scale) or a clear status, never a crash, a hang or a malformed path. Several were found by fuzzing
+// (tests/fuzz/regressions keeps the raw inputs).
+
+TEST(StraightestPathTracer, TargetNextToAVertexOnThePathIsReached) {
+  // Flat 10 × 10 grid. From S = (2, 2) toward v = (6, 4) the section passes exactly through v; a target
+  // on the edge v → (6, 5) at t = 1e-10 puts v on its cutting plane, yet none of the faces the walk
+  // uses at v holds it. It must be reached, with the straight-line length.
+  const TriMesh mesh = testing::flatGrid(10, GridPattern::Regular);
+  const int32_t s = 2 * 10 + 2, v = 4 * 10 + 6, up = 5 * 10 + 6;
+  const int32_t h = testing::findHalfedge(mesh, v, up);
+  ASSERT_GE(h, 0);
+  StraightestPathTracer tracer(mesh, SurfacePoint::vertex(s));
+  for (double t : {1e-10, 1e-12, 1e-7}) {
+    const SurfacePoint target = SurfacePoint::edge(h, t);
+    const StraightestPath& path = tracer.trace(target);
+    ASSERT_EQ(path.status, TraceStatus::Reached) << "t = " << t << ": " << traceStatusName(path.status);
+    // The walk goes through v, then the last tiny step v → D: longer than |SD| by less than 2 |vD|.
+    EXPECT_NEAR(path.length, norm(position(mesh, target) - mesh.position(s)), 2 * t + 1e-12) << "t = " << t;
+    EXPECT_EQ(path.points.back().kind, SurfacePoint::Kind::Edge);
+  }
+}
+
+TEST(StraightestPathTracer, SourceOnAnEdgeWithThePlaneAlmostAlongTheEdgeLeavesThroughAFace) {
+  // Flat 10 × 10 grids, rotated and moved far from the origin; S at the midpoint of a diagonal edge,
+  // D at t ≤ 1e-7 on an edge of the grid vertex one more cell along the diagonal, so the plane crosses
+  // the source edge at S at an angle below ~5e-8. The computed crossing of that edge landed up to ~1e-6
+  // from S (rounding at coordinates ~1000), was taken as the first step, and led the walk back through
+  // the edge to S (returned_to_source; hit_boundary in another run). Each target must be reached along
+  // the straight segment.
+  const int n = 10;
+  for (double angle : {0.0, 0.3, 1.1, 2.5})
+    for (const Vec3& offset : {Vec3{1000, -500, 250}, Vec3{-3000, 7000, 1}}) {
+      const double c = std::cos(angle), s = std::sin(angle);
+      const TriMesh mesh = testing::grid(
+          n, GridPattern::Regular, [&](double x, double y) { return offset + Vec3{c * x - s * y, s * x + c * y, 0}; });
+      for (int i = 2; i <= 5; ++i)
+        for (int j = 2; j <= 5; ++j) {
+          // The diagonal of square (i, j), in whichever direction the grid splits it, and the vertex one
+          // more cell along it (grid vertex (i, j) has index j n + i).
+          int32_t a = j * n + i, b = a + n + 1, far = b + n + 1, di = 1;
+          if (testing::findHalfedge(mesh, a, b) < 0) a = j * n + i + 1, b = a + n - 1, far = b + n - 1, di = -1;
+          const int32_t h = testing::findHalfedge(mesh, a, b);
+          ASSERT_GE(h, 0) << "no diagonal edge in square " << i << ", " << j;
+          const Vec3 S = (mesh.position(a) + mesh.position(b)) * 0.5;
+          StraightestPathTracer tracer(mesh, SurfacePoint::edge(h, 0.5));
+          for (double t : {1e-7, 3e-8, 1e-9})
+            for (int32_t next : {far - di, far - n}) {  // the edges from far back toward the diagonal's side
+              const int32_t e = testing::findHalfedge(mesh, far, next);
+              ASSERT_GE(e, 0);
+              const SurfacePoint target = SurfacePoint::edge(e, t);
+              const StraightestPath& path = tracer.trace(target);
+              ASSERT_EQ(path.status, TraceStatus::Reached)
+                  << "angle " << angle << ", square " << i << ", " << j << ", t " << t << ": "
+                  << traceStatusName(path.status);
+              EXPECT_NEAR(path.length, norm(position(mesh, target) - S), 1e-9);
+            }
+        }
+    }
+}
+
+TEST(StraightestPathTracer, PathsAreScaleInvariant) {
+  const TriMesh base = makeSample("face").value();
+  const int32_t source = defaultSource(base).value();
+  const PathBatch reference = traceStraightestPaths(base, SurfacePoint::vertex(source), boundaryTargets(base), TraceOptions{false}).value();
+  for (double s : {1e-6, 1e6}) {
+    const TriMesh mesh = testing::scaled(base, s);
+    EXPECT_EQ(defaultSource(mesh).value(), source);
+    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), TraceOptions{false}).value();
+    ASSERT_EQ(batch.status.size(), reference.status.size());
+    for (size_t i = 0; i < batch.status.size(); ++i) {
+      EXPECT_EQ(batch.status[i], reference.status[i]) << "scale " << s << " path " << i;
+      EXPECT_NEAR(batch.length[i] / s, reference.length[i], 1e-9 * reference.length[i]) << "scale " << s;
+      EXPECT_EQ(batch.facesCrossed[i], reference.facesCrossed[i]);
     }
   }
 }
 
-TEST(HeatMethod, GivesEuclideanDistanceOnAPlaneWithinAFewPercent) {
-  const TriMesh mesh = testing::flatGrid(41, GridPattern::UnionJack);
-  const HeatMethod heat(mesh);
-  const int32_t source = 20 * 41 + 20;
-  const auto d = heat.distances(SurfacePoint::vertex(source));
-  EXPECT_NEAR(d[source], 0, 1e-12);
-  for (int32_t v = 0; v < mesh.numVertices(); v += 37) {
-    const double e = norm(mesh.position(v) - mesh.position(source));
-    EXPECT_NEAR(d[v], e, 0.05 * e + 0.1) << "vertex " << v;
+TEST(StraightestPathOnAPlane, AlmostFlatPatchBehavesLikeAFlatOne) {
+  const TriMesh mesh = testing::almostFlatGrid(21, 1e-10);
+  const int32_t source = defaultSource(mesh).value();
+  StraightestPathTracer tracer(mesh, SurfacePoint::vertex(source));
+  EXPECT_NEAR(std::abs(tracer.base().normal.z), 1.0, 1e-12);
+  for (const SurfacePoint& t : boundaryTargets(mesh)) {
+    const StraightestPath& path = tracer.trace(t);
+    ASSERT_EQ(path.status, TraceStatus::Reached);
+    const double euclid = norm(position(mesh, t) - mesh.position(source));
+    EXPECT_NEAR(path.length, euclid, 1e-8 * euclid);
   }
 }
 
-TEST(DefaultSource, IsTheInteriorVertexFarthestFromTheBoundary) {
-  const TriMesh mesh = testing::flatGrid(9, GridPattern::Regular);
-  EXPECT_EQ(defaultSource(mesh).value(), 4 * 9 + 4);
-  EXPECT_EQ(defaultSource(makeSphericalCap(1, 1, 6)).value(), 0);
-  const TriMesh single = testing::buildOrFail({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
-  EXPECT_EQ(defaultSource(single).error().code, ErrorCode::Topology);
+TEST(StraightestPathOnAPlane, SliverTrianglesDoNotDerailTheWalk) {
+  // A flat strip whose middle row of vertices sits 1e-9 above the line y = 1: the triangles along it
+  // have angles ~1e-9. Paths across must still come out Euclidean (the plane is exactly the x-y plane).
+  const int n = 11;
+  const TriMesh mesh = testing::grid(n, GridPattern::Regular, [&](double x, double y) {
+    return Vec3{x, y == 1 ? 1 + 1e-9 * x : y, 0};
+  });
+  EXPECT_EQ(mesh.summary().degenerateFaces, 0);
+  StraightestPathTracer tracer(mesh, SurfacePoint::vertex(5 * n + 5));
+  for (const SurfacePoint& t : boundaryTargets(mesh)) {
+    const StraightestPath& path = tracer.trace(t);
+    ASSERT_EQ(path.status, TraceStatus::Reached);
+    const double euclid = norm(position(mesh, t) - mesh.position(5 * n + 5));
+    EXPECT_NEAR(path.length, euclid, 1e-9 * euclid);
+  }
+}
+
+TEST(StraightestPathTracer, NearDuplicateVerticesGiveWellFormedWalks) {
+  // Two vertices 1e-13 apart (not welded: the file's vertex order is kept), each used by faces.
+  std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0}, {0.5 + 1e-13, 0.5, 0}};
+  std::vector<Triangle> t{{0, 1, 5}, {1, 2, 5}, {2, 3, 4}, {3, 0, 4}, {0, 5, 4}, {2, 4, 5}};
+  const TriMesh mesh = testing::buildOrFail(p, t);
+  EXPECT_EQ(mesh.summary().eulerCharacteristic, 1);
+  EXPECT_EQ(mesh.summary().degenerateFaces, 2);  // the two slivers between the twins
+  for (int32_t s : {4, 5}) {
+    StraightestPathTracer tracer(mesh, SurfacePoint::vertex(s));
+    for (int32_t v = 0; v < 4; ++v) {
+      const StraightestPath& path = tracer.trace(SurfacePoint::vertex(v));
+      expectWellFormedPath(mesh, tracer, SurfacePoint::vertex(v), path);
+      if (path.status == TraceStatus::Reached) {
+        EXPECT_NEAR(path.length, norm(p[v] - p[s]), 1e-9);
+      }
+    }
+  }
+}
+
+TEST(StraightestPathOnASphericalCap, AlmostClosedCapGivesWellFormedWalksThatAgreeWithTheBatch) {
+  // A sphere with a small hole at the bottom (polar angle π − 0.05), traced from the pole to the rim:
+  // the base normal is the fallback (see BasePlane.AlmostClosedCap...); the sections wrap almost all
+  // the way around the sphere.
+  const TriMesh mesh = makeSphericalCap(1.0, kPi - 0.05, 24);
+  const SurfacePoint pole = SurfacePoint::vertex(0);
+  const std::vector<SurfacePoint> rim = boundaryTargets(mesh);
+  const PathBatch batch = traceStraightestPaths(mesh, pole, rim, TraceOptions{false}).value();
+  ASSERT_EQ(batch.status.size(), rim.size());
+  StraightestPathTracer tracer(mesh, pole);
+  for (size_t i = 0; i < rim.size(); ++i) {
+    const StraightestPath& path = tracer.trace(rim[i]);
+    expectWellFormedPath(mesh, tracer, rim[i], path);
+    EXPECT_EQ(batch.status[i], path.status) << "target " << i;
+    EXPECT_EQ(batch.length[i], path.length) << "target " << i;
+  }
 }
 
 }  // namespace

@@ -1,10 +1,11 @@
-// Meshes with known geometry, built for the path tests (flat grids in several triangulations, an
-// L-shaped domain, a cylinder patch, a saddle, an icosphere).
+// Meshes with known geometry for the core tests: flat grids in several triangulations (also almost flat,
+// or with cells cut out), an L-shaped domain, an icosphere, and any mesh scaled.
 #pragma once
 #include <array>
 #include <cmath>
 #include <map>
 #include <random>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,46 @@ TriMesh grid(int n, GridPattern pattern, Lift lift, unsigned seed = 7) {
 
 inline TriMesh flatGrid(int n, GridPattern pattern) {
   return grid(n, pattern, [](double x, double y) { return Vec3{x, y, 0}; });
+}
+
+/// A flat n × n grid whose heights are noise of the given amplitude (jittered triangulation).
+inline TriMesh almostFlatGrid(int n, double amplitude, unsigned seed = 5) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> noise(-amplitude, amplitude);
+  return grid(n, GridPattern::Jittered, [&](double x, double y) { return Vec3{x, y, noise(rng)}; });
+}
+
+/// The mesh with every position multiplied by s (same triangles, same vertex order).
+inline TriMesh scaled(const TriMesh& mesh, double s) {
+  std::vector<Vec3> p;
+  for (const Vec3& x : mesh.positions()) p.push_back(x * s);
+  return buildOrFail(p, mesh.triangles());
+}
+
+/// A flat 9 × 9 vertex grid (8 × 8 cells) without the cells listed, as (column, row) of their lower-left corner.
+inline TriMesh gridWithout(const std::vector<std::array<int, 2>>& removed) {
+  const int n = 9;
+  std::vector<Vec3> p;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) p.push_back({double(i), double(j), 0});
+  std::vector<Triangle> t;
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      bool skip = false;
+      for (const auto& c : removed) skip |= c[0] == i && c[1] == j;
+      if (skip) continue;
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      t.push_back({a, b, d});
+      t.push_back({a, d, c});
+    }
+  return buildOrFail(std::move(p), std::move(t));
+}
+
+/// The halfedge from vertex a to vertex b, or -1 when no face has that edge in that direction.
+inline int32_t findHalfedge(const TriMesh& mesh, int32_t a, int32_t b) {
+  for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h)
+    if (mesh.tail(h) == a && mesh.head(h) == b) return h;
+  return -1;
 }
 
 /// An L-shaped flat domain: the grid [0, 2m]² without the square (m, 2m]² (m cells a side).

@@ -241,6 +241,18 @@ TEST(Validation, RejectsEmptyOutOfRangeRepeatedAndNonFinite) {
   EXPECT_EQ(buildError({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}, {{0, 1, 2}}), ErrorCode::NonFinite);
 }
 
+TEST(Validation, RefusesCoordinatesWhoseSquaredAreasOverflow) {
+  // 1e100 gave faces of infinite area (|e1 × e2|² overflows; found by fuzzing); 1e40 is fine.
+  const std::vector<Triangle> t{{0, 1, 2}};
+  auto huge = TriMesh::build({{0, 0, 0}, {1e100, 0, 0}, {0, 1e100, 0}}, t);
+  ASSERT_FALSE(huge.ok());
+  EXPECT_EQ(huge.error().code, ErrorCode::NonFinite);
+  auto large = TriMesh::build({{0, 0, 0}, {1e40, 0, 0}, {0, 1e40, 0}}, t);
+  ASSERT_TRUE(large.ok()) << large.error().message;
+  EXPECT_TRUE(std::isfinite(large.value().faceArea(0)));
+  EXPECT_NEAR(large.value().faceArea(0) / 0.5e80, 1.0, 1e-12);
+}
+
 TEST(Validation, EnforcesConfigurableCaps) {
   BuildLimits limits;
   limits.maxVertices = 2;

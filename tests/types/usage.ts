@@ -1,0 +1,196 @@
+// The package's public API used as a consumer uses it, checked by `tsc -p tests/types` (strict) against
+// wasm/index.d.ts and wasm/three.d.ts: a declaration that is wrong, missing or too loose fails the check.
+// Each `@ts-expect-error` line is a misuse the declarations must refuse (tsc fails if it type-checks).
+// Never run: only type-checked.
+import {
+  createStraightest,
+  Mesh,
+  StraightestError,
+  type BasePlane,
+  type ErrorCategory,
+  type MeshInfo,
+  type Parameterization,
+  type ProgressCallback,
+  type SurfacePoint,
+  type TraceStatus,
+} from 'straightest';
+import { applyUV, meshFromBufferGeometry, toBufferGeometry } from 'straightest/three';
+import { BufferGeometry } from 'three';
+
+/** Compiles only when A and B are the same type (not merely assignable). */
+type Equal<A, B> = (<T>() => T extends A ? 1 : 2) extends <T>() => T extends B ? 1 : 2 ? true : false;
+function assertType<T extends true>(): T | void {}
+
+/** A consumer's exhaustive switch: a status added to or removed from TraceStatus breaks it. */
+function describe(status: TraceStatus): string {
+  switch (status) {
+    case 'reached': return 'reached';
+    case 'hit_boundary': return 'the section left the surface';
+    case 'returned_to_source': return 'a closed loop through the source';
+    case 'loop': return 'the walk revisited a crossing';
+    case 'step_limit': return 'too many steps';
+    case 'no_exit': return 'no face continues the section';
+    case 'degenerate_plane': return 'no cutting plane';
+    default: {
+      const unreachable: never = status;
+      return unreachable;
+    }
+  }
+}
+
+export async function consumer(bytes: Uint8Array, text: string, geometry: BufferGeometry): Promise<void> {
+  const st = await createStraightest();
+  await createStraightest({ wasmUrl: new URL('https://example.org/straightest-core.wasm') });
+  await createStraightest({ wasmUrl: '/assets/straightest-core.wasm', wasmBinary: new ArrayBuffer(8) });
+  await createStraightest({ locateFile: (name, dir) => dir + name });
+  // @ts-expect-error the options are an object, not a URL string
+  await createStraightest('/straightest-core.wasm');
+
+  // Loading: bytes, ArrayBuffer, views or text, a format name, caps.
+  const mesh: Mesh = st.loadMesh(bytes, 'obj');
+  st.loadMesh(new ArrayBuffer(64), 'off', { maxVertices: 1e6, maxFaces: 2e6 });
+  st.loadMesh(new DataView(bytes.buffer), 'auto');
+  st.loadMesh(text);
+  st.meshFromArrays(new Float64Array(9), new Uint32Array([0, 1, 2]));
+  st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 2], { maxFaces: 1 });
+  // @ts-expect-error STL is not a supported format
+  st.loadMesh(bytes, 'stl');
+  // @ts-expect-error a SharedArrayBuffer is refused at run time (toBytes), so the types refuse it too
+  st.loadMesh(new SharedArrayBuffer(64));
+  // @ts-expect-error a mesh is read from its contents, not from a number
+  st.loadMesh(42);
+  for (const name of st.sampleNames()) st.sample(name).delete();
+  st.sample('mountain');
+  const memory: number = st.memoryBytes + st.heapUsedBytes;
+  const statuses: TraceStatus[] = st.traceStatuses;
+  void memory;
+  void statuses;
+
+  const info: MeshInfo = mesh.info();
+  const loops: number[] = info.boundaryLoops;
+  const corner: [number, number, number] = info.bbox.min;
+  const notes: string[] = info.problems;
+  void [loops, corner, notes];
+  assertType<Equal<typeof info.eulerCharacteristic, number>>();
+  const positions: Float64Array = mesh.positions();
+  const indices: Uint32Array = mesh.indices();
+  void [positions, indices];
+
+  // Surface points in every form.
+  const points: SurfacePoint[] = [3, { vertex: 3 }, { face: 0, bary: [0.2, 0.3, 0.5] }, { halfedge: 4, t: 0.25 }];
+  // @ts-expect-error barycentric coordinates are three numbers
+  const twoBary: SurfacePoint = { face: 0, bary: [0.5, 0.5] };
+  // @ts-expect-error an edge point is a halfedge and a parameter t
+  const edgeWithoutT: SurfacePoint = { halfedge: 4 };
+  void [twoBary, edgeWithoutT];
+
+  const source: number = mesh.defaultSource();
+  const base: BasePlane = mesh.basePlane(source);
+  mesh.basePlane('auto');
+  mesh.basePlane();
+  const normal: [number, number, number] = base.normal;
+  const fallback: boolean = base.fallback;
+  void [normal, fallback];
+
+  // Straightest paths, with progress and cancellation.
+  const onProgress: ProgressCallback = (stage, fraction) => {
+    if (stage === 'trace' && fraction > 0.5) return false;
+  };
+  const paths = mesh.straightestPaths({ source: 'auto', targets: 'boundary', points: true, onProgress });
+  mesh.straightestPaths({ source: { face: 2, bary: [1 / 3, 1 / 3, 1 / 3] }, targets: points, points: false });
+  mesh.straightestPaths();
+  const lengths: Float64Array = paths.lengths;
+  const packed: Float32Array = paths.points;
+  const offsets: Uint32Array = paths.offsets;
+  const facesCrossed: Uint32Array = paths.facesCrossed;
+  const reachedAll: boolean = paths.reached === paths.count;
+  const trace: number = paths.timings.prepare + paths.timings.trace;
+  void [lengths, packed, offsets, facesCrossed, reachedAll, trace, paths.targetPositions, paths.sourcePosition];
+  for (const status of paths.statuses) describe(status);
+  // @ts-expect-error lengths are a Float64Array, not an array
+  const lengthList: number[] = paths.lengths;
+  // @ts-expect-error targets are 'boundary' or a list of surface points
+  mesh.straightestPaths({ targets: 'all' });
+  // @ts-expect-error a progress callback answers with a boolean (or nothing), not a string
+  mesh.straightestPaths({ onProgress: () => 'stop' });
+  // @ts-expect-error 'arrived' is not a trace status
+  const arrived: TraceStatus = 'arrived';
+  void [lengthList, arrived];
+
+  const heat: Float64Array = mesh.geodesicDistances(source, 'heat');
+  mesh.geodesicDistances({ vertex: 0 }, 'dijkstra');
+  mesh.geodesicDistances();
+  // @ts-expect-error the distance methods are 'heat' and 'dijkstra'
+  mesh.geodesicDistances(source, 'exact');
+  void heat;
+
+  // Parameterization.
+  const p: Parameterization = mesh.parameterize({
+    source: 'auto',
+    boundary: 'auto',
+    weights: 'shape-preserving',
+    solver: 'multigrid',
+    onProgress: (stage: string, fraction: number) => stage !== 'solve' || fraction < 1,
+  });
+  for (const weights of ['shape-preserving', 'mean-value', 'cotan', 'uniform'] as const)
+    for (const boundary of ['measured', 'circle', 'square'] as const)
+      for (const solver of ['multigrid', 'lu', 'bicgstab'] as const) mesh.parameterize({ weights, boundary, solver });
+  const uv: Float32Array = p.uv;
+  const stretch: number = p.stretch.l2 + p.stretch.linf;
+  const bijective: boolean = p.bijective;
+  const best = p.candidates.reduce((a, b) => (b.l2 < a.l2 ? b : a));
+  assertType<Equal<typeof best.boundary, 'measured' | 'circle' | 'square'>>();
+  const polygon: Float32Array = p.boundaryPolygon;
+  const loop: Int32Array = p.boundaryLoop;
+  const total: number = p.timings.total;
+  void [stretch, bijective, polygon, loop, total, p.faceStretch, p.residual];
+  // @ts-expect-error no 'ellipse' boundary
+  mesh.parameterize({ boundary: 'ellipse' });
+  // @ts-expect-error no 'harmonic' weights
+  mesh.parameterize({ weights: 'harmonic' });
+  // @ts-expect-error no 'cg' solver
+  mesh.parameterize({ solver: 'cg' });
+  // @ts-expect-error the chosen boundary is never 'auto' (that is only a request)
+  const chosen: 'auto' = p.boundary;
+  void chosen;
+
+  const obj: string = mesh.toOBJ(uv);
+  mesh.toOBJ();
+  void obj;
+
+  // Errors: a StraightestError is an Error with a machine-readable category.
+  try {
+    st.loadMesh('v 0 0 0\n', 'obj');
+  } catch (e) {
+    if (e instanceof StraightestError) {
+      const category: ErrorCategory = e.category;
+      const message: string = e.message;
+      const asError: Error = e;
+      void [category, message, asError];
+      if (e.category === 'cancelled' || e.category === 'too_large' || e.category === 'invalid_argument') throw e;
+      // @ts-expect-error 'usage' is the CLI's word; the package says 'invalid_argument'
+      if (e.category === 'usage') throw e;
+    }
+  }
+  // @ts-expect-error the category is read-only
+  new StraightestError().category = 'parse';
+
+  // three.js helpers.
+  const fromThree: Mesh = meshFromBufferGeometry(st, geometry);
+  const toThree: BufferGeometry = toBufferGeometry(fromThree);
+  const textured: BufferGeometry = applyUV(toThree, p.uv);
+  applyUV(geometry, [0, 0, 1, 0, 0, 1]);
+  // @ts-expect-error uv is numbers, two per vertex
+  applyUV(geometry, 'uv');
+  // @ts-expect-error the straightest instance comes first
+  meshFromBufferGeometry(geometry);
+  void textured;
+
+  // Meshes hold WASM memory until deleted.
+  const deleted: boolean = mesh.deleted;
+  // @ts-expect-error deleted is read-only
+  mesh.deleted = true;
+  mesh.delete();
+  fromThree.delete();
+  void deleted;
+}
