@@ -15,7 +15,6 @@
 #include "straightest/compare_parameterizations.hpp"
 #include "straightest/enum_names.hpp"
 #include "straightest/geodesic_distance.hpp"
-#include "straightest/mesh_format_name.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
@@ -257,7 +256,7 @@ val nameLists() {
 }
 
 std::string formatOfFileName(const std::string& name) {
-  return nameOf(kMeshFormatNames, formatFromFileName(name));
+  return nameOf(kMeshFormatNames, meshFormatFromFileName(name));
 }
 
 /// Bytes currently allocated by malloc in WASM memory (for leak checks).

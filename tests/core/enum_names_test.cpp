@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include "straightest/enum_names.hpp"
-#include "straightest/mesh_format_name.hpp"
 
 namespace straightest {
 namespace {
@@ -50,16 +49,6 @@ TEST(EnumNames, AutoIsTheAbsentBoundaryAndErrorsListEveryChoice) {
             "unknown weights 'harmonic' (use shape-preserving, mean-value, cotan or uniform)");
   EXPECT_EQ(choiceList({"a"}), "a");
   EXPECT_EQ(choiceList({"a", "b", "c"}, "|", "|"), "a|b|c");
-}
-
-TEST(FormatFromFileName, ReadsTheExtensionInAnyCase) {
-  EXPECT_EQ(formatFromFileName("bunny.obj"), MeshFormat::Obj);
-  EXPECT_EQ(formatFromFileName("C:\\meshes\\Lion.OFF"), MeshFormat::Off);
-  EXPECT_EQ(formatFromFileName("dir.obj/mesh"), MeshFormat::Auto);  // a directory's dot is no extension
-  EXPECT_EQ(formatFromFileName("mesh.obj.gz"), MeshFormat::Auto);
-  EXPECT_EQ(formatFromFileName("mesh.stl"), MeshFormat::Auto);
-  EXPECT_EQ(formatFromFileName("obj"), MeshFormat::Auto);
-  EXPECT_EQ(formatFromFileName(""), MeshFormat::Auto);
 }
 
 }  // namespace

@@ -40,6 +40,8 @@ TEST(FormatNames, FileNameExtensionChoosesTheFormatInAnyCase) {
   EXPECT_EQ(meshFormatFromFileName("mesh.obj"), MeshFormat::Obj);
   EXPECT_EQ(meshFormatFromFileName("dir.off/Mesh.OBJ"), MeshFormat::Obj);
   EXPECT_EQ(meshFormatFromFileName("/tmp/scan.Off"), MeshFormat::Off);
+  EXPECT_EQ(meshFormatFromFileName("C:\\meshes\\Lion.OFF"), MeshFormat::Off);
+  EXPECT_EQ(meshFormatFromFileName("dir.obj/mesh"), MeshFormat::Auto);  // a directory's dot is no extension
   EXPECT_EQ(meshFormatFromFileName(".off"), MeshFormat::Off);
   EXPECT_EQ(meshFormatFromFileName("mesh.ply"), MeshFormat::Auto);
   EXPECT_EQ(meshFormatFromFileName("mesh.obj.gz"), MeshFormat::Auto);
