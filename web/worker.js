@@ -338,7 +338,7 @@ const handlers = {
     return { reply: { type: 'comparison', source, rows, best } };
   },
 
-  async exportObj({ uv }, progress) {
+  async exportObj({ uv }) {
     const mesh = requireMesh();
     return { reply: { type: 'obj', text: mesh.toOBJ(uv) } };
   },

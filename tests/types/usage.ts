@@ -154,6 +154,29 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const chosen: 'auto' = p.boundary;
   void chosen;
 
+  // Data the core owns: boundary loops, normals, polygons without a solve, the comparison, names.
+  const loopVertices: Int32Array[] = mesh.boundaryLoops();
+  const normals: Float32Array = mesh.vertexNormals();
+  for (const b of mesh.boundaryPolygons({ source: 'auto', kinds: ['measured', 'circle'], onProgress })) {
+    const kind: 'measured' | 'circle' | 'square' = b.boundary;
+    const polygon: Float32Array | null = b.polygon;
+    const loop: Int32Array = b.loop;
+    const why: string | null = b.error;
+    void [kind, polygon, loop, why];
+  }
+  // @ts-expect-error 'auto' is a request, not a boundary kind with a polygon
+  mesh.boundaryPolygons({ kinds: ['auto'] });
+  const comparison = mesh.compareParameterizations({ boundaries: ['circle'], weights: ['uniform', 'cotan'] });
+  const bestRow: number = comparison.best;
+  const l2: number | null = comparison.rows[0].l2;
+  // @ts-expect-error a failed cell has no numbers: l2 may be null
+  const l2Number: number = comparison.rows[0].l2;
+  const directions: Float64Array = paths.directions;
+  const kinds: ('measured' | 'circle' | 'square')[] = st.boundaryKinds;
+  const format: 'obj' | 'off' | 'auto' = st.formatFromFileName('bunny.OBJ');
+  mesh.straightestPaths({ targets: ['boundary', 3, { vertex: 4 }] });
+  void [loopVertices, normals, bestRow, l2, l2Number, directions, kinds, format];
+
   const obj: string = mesh.toOBJ(uv);
   mesh.toOBJ();
   void obj;

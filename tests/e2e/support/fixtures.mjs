@@ -153,7 +153,7 @@ export async function settled(page, predicate = 'true') {
   } catch (err) {
     const state = await page.evaluate(() => document.body.dataset.state).catch(() => 'unknown');
     const status = await page.textContent('#status', { timeout: 1000 }).catch(() => '');
-    throw new Error(`page stayed in state '${state}' (status: ${status.trim()}): ${err.message.split('\n')[0]}`);
+    throw new Error(`page stayed in state '${state}' (status: ${status.trim()}): ${err.message.split('\n')[0]}`, { cause: err });
   }
   return page.evaluate(() => ({
     state: document.body.dataset.state,
