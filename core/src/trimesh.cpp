@@ -186,7 +186,6 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   mesh.adjacency_.resize(nf);
   for (int32_t f = 0; f < nf; ++f)
     mesh.adjacency_[f] = {mesh.triangles_[f], {twin[3 * f], twin[3 * f + 1], twin[3 * f + 2]}};
-  std::vector<int32_t>().swap(twin);
 
   // Vertex fans: one outgoing halfedge per vertex (the boundary one when there is one); a vertex whose
   // faces are not reached by rotating around it from there is non-manifold (several fans).
@@ -196,7 +195,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   for (int32_t h = 0; h < nh; ++h) {
     const int32_t v = mesh.tail(h);
     ++cornerCount[v];
-    if (mesh.twin(h) < 0) {
+    if (twin[h] < 0) {
       if (mesh.isBoundaryVertex_[v])
         return err(ErrorCode::NonManifoldVertex,
                    "vertex " + std::to_string(v) + " is where separate pieces of surface touch (two boundary "
@@ -224,7 +223,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   // Boundary loops, following boundary halfedges (the surface on the left), longest first.
   std::vector<uint8_t> visited(nh, 0);
   for (int32_t h0 = 0; h0 < nh; ++h0) {
-    if (mesh.twin(h0) >= 0 || visited[h0]) continue;
+    if (twin[h0] >= 0 || visited[h0]) continue;
     std::vector<int32_t> loop;
     int32_t h = h0;
     while (!visited[h]) {
@@ -248,7 +247,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     const Vec3 e1 = mesh.positions_[t[1]] - mesh.positions_[t[0]];
     const Vec3 e2 = mesh.positions_[t[2]] - mesh.positions_[t[0]];
     const double lengths[3] = {norm(e1), norm(mesh.positions_[t[2]] - mesh.positions_[t[1]]), norm(e2)};
-    for (int k = 0; k < 3; ++k) edgeLengthSum += mesh.twin(3 * f + k) < 0 ? lengths[k] : 0.5 * lengths[k];
+    for (int k = 0; k < 3; ++k) edgeLengthSum += twin[3 * f + k] < 0 ? lengths[k] : 0.5 * lengths[k];
     const Vec3 c = cross(e1, e2);
     const double twiceArea = norm(c);
     mesh.faceAreas_[f] = 0.5 * twiceArea;
@@ -278,6 +277,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     s.bbox.min = {std::min(s.bbox.min.x, p.x), std::min(s.bbox.min.y, p.y), std::min(s.bbox.min.z, p.z)};
     s.bbox.max = {std::max(s.bbox.max.x, p.x), std::max(s.bbox.max.y, p.y), std::max(s.bbox.max.z, p.z)};
   }
+  std::vector<int32_t>().swap(twin);  // now in adjacency_
   s.problems = std::move(notes);
   if (reoriented > 0)
     s.problems.push_back(std::to_string(reoriented) + " faces had the opposite orientation of their neighbours "

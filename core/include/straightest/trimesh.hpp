@@ -87,6 +87,12 @@ class TriMesh {
   int32_t tail(int32_t h) const { return triangles_[h / 3][h % 3]; }
   int32_t head(int32_t h) const { return triangles_[h / 3][(h % 3 + 1) % 3]; }
   bool isBoundaryHalfedge(int32_t h) const { return twin(h) < 0; }
+  /// The next outgoing halfedge counter-clockwise around tail(h): twin(prev(h)), −1 at the boundary
+  /// (with one division by 3 instead of two).
+  int32_t nextOutgoing(int32_t h) const {
+    const int32_t f = h / 3, k = h - 3 * f;
+    return adjacency_[f].twins[k == 0 ? 2 : k - 1];
+  }
   /// An outgoing halfedge of v (tail(h) == v), -1 if v is unreferenced. For a boundary vertex it is
   /// the outgoing boundary halfedge, so rotating counter-clockwise with h = twin(prev(h)) from it visits
   /// the whole fan (until -1); for an interior vertex the rotation comes back to where it started.
@@ -129,10 +135,10 @@ class TriMesh {
   MeshSummary summary_;
 };
 
-/// A range over the one-ring of a vertex, rotating counter-clockwise with h → twin(prev(h)) from
-/// vertexHalfedge(v). For a boundary vertex that is the outgoing boundary halfedge, so the rotation
-/// visits the whole fan and stops where it meets the boundary again (twin = −1); for an interior vertex
-/// it stops when it is back at the start. Each step is one twin look-up; nothing is allocated.
+/// A range over the one-ring of a vertex, rotating counter-clockwise with h → twin(prev(h))
+/// (TriMesh::nextOutgoing) from vertexHalfedge(v). For a boundary vertex that is the outgoing boundary
+/// halfedge, so the rotation visits the whole fan and stops where it meets the boundary again
+/// (twin = −1); for an interior vertex it stops when it is back at the start. Each step is one twin look-up; nothing is allocated.
 /// (The rotation always ends: twin∘prev is one-to-one, so it can only come back to its start or stop.)
 template <RingItem Item>
 class VertexRing {
@@ -159,11 +165,11 @@ class VertexRing {
           h_ = -1;
           return *this;
         }
-        const int32_t n = mesh_->twin(TriMesh::prev(h_));
+        const int32_t n = mesh_->nextOutgoing(h_);
         if (n < 0) closing_ = true;  // stay on h_: its prev's tail is the last neighbour
         else h_ = n == start_ ? -1 : n;
       } else {
-        h_ = mesh_->twin(TriMesh::prev(h_));
+        h_ = mesh_->nextOutgoing(h_);
         if (h_ == start_) h_ = -1;
       }
       return *this;
@@ -191,7 +197,9 @@ class VertexRing {
   int32_t first_;
 };
 
-inline VertexRing<RingItem::OutgoingHalfedge> TriMesh::outgoingHalfedges(int32_t v) const { return {*this, v}; }
+inline VertexRing<RingItem::OutgoingHalfedge> TriMesh::outgoingHalfedges(int32_t v) const {
+  return {*this, v};
+}
 inline VertexRing<RingItem::Face> TriMesh::vertexFaces(int32_t v) const { return {*this, v}; }
 inline VertexRing<RingItem::Neighbour> TriMesh::vertexNeighbours(int32_t v) const { return {*this, v}; }
 
