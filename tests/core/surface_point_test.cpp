@@ -132,7 +132,9 @@ TEST(SurfacePoint, CanonicalIsIdempotentAndKeepsThePosition) {
       if (c.kind == SurfacePoint::Kind::Edge) {
         EXPECT_GT(c.t, tolerance);
         EXPECT_LT(c.t, 1 - tolerance);
-        if (mesh.twin(c.index) >= 0) EXPECT_LT(c.index, mesh.twin(c.index));
+        if (mesh.twin(c.index) >= 0) {
+          EXPECT_LT(c.index, mesh.twin(c.index));
+        }
       }
     }
 }

@@ -130,8 +130,9 @@ void expectRingsMatchBruteForce(const TriMesh& mesh) {
       EXPECT_EQ(TriMesh::face(halfedges[k]), faces[k]);
       EXPECT_EQ(mesh.head(halfedges[k]), neighbours[k]);  // neighbours follow the halfedges' order
     }
-    if (mesh.vertexHalfedge(v) >= 0)
+    if (mesh.vertexHalfedge(v) >= 0) {
       EXPECT_EQ(neighbours.size(), faces.size() + (mesh.isBoundaryVertex(v) ? 1 : 0)) << "vertex " << v;
+    }
   }
 }
 
