@@ -18,7 +18,9 @@
 using namespace straightest;
 using Clock = std::chrono::steady_clock;
 
-static double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+static double msSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 static double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());

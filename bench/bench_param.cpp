@@ -12,7 +12,9 @@ using namespace straightest;
 int main(int argc, char** argv) {
   const char* target = argc > 1 ? argv[1] : "native";
   const int maxN = argc > 2 ? std::atoi(argv[2]) : 1000;
-  std::printf("| target | vertices | solver | source ms | trace ms | boundary ms | weights ms | solve ms | metrics ms | total ms | L2 | residual |\n");
+  std::printf(
+      "| target | vertices | solver | source ms | trace ms | boundary ms | weights ms | solve ms | metrics ms | total "
+      "ms | L2 | residual |\n");
   std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : {100, 317, 1000}) {
     if (n > maxN) break;
@@ -29,9 +31,12 @@ int main(int argc, char** argv) {
         continue;
       }
       std::printf("| %s | %d | %s | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.0f | %.4f | %.1e |\n", target,
-                  mesh.numVertices(), solver == LinearSolver::SparseLU ? "SparseLU" : solver == LinearSolver::BiCGSTAB ? "BiCGSTAB+ILUT" : "BiCGSTAB+AMG", t["source"],
-                  t["trace"], t["boundary"], t["weights"], t["solve"], t["metrics"], t["total"], r.value().metrics.l2,
-                  r.value().residual);
+                  mesh.numVertices(),
+                  solver == LinearSolver::SparseLU   ? "SparseLU"
+                  : solver == LinearSolver::BiCGSTAB ? "BiCGSTAB+ILUT"
+                                                     : "BiCGSTAB+AMG",
+                  t["source"], t["trace"], t["boundary"], t["weights"], t["solve"], t["metrics"], t["total"],
+                  r.value().metrics.l2, r.value().residual);
       std::fflush(stdout);
     }
   }

@@ -21,7 +21,10 @@ static double ms(Clock::time_point a, Clock::time_point b) {
 int main(int argc, char** argv) {
   const char* target = argc > 1 ? argv[1] : "native";
   const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
-  std::printf("| target | vertices | boundary paths | reached | faces crossed | build ms | source ms | trace ms (median of %d) | M faces/s |\n", repeats);
+  std::printf(
+      "| target | vertices | boundary paths | reached | faces crossed | build ms | source ms | trace ms (median of %d) "
+      "| M faces/s |\n",
+      repeats);
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : {100, 317, 1000}) {
     const auto t0 = Clock::now();

@@ -32,7 +32,9 @@ static double peakMemoryMB() {
 using namespace straightest;
 using Clock = std::chrono::steady_clock;
 
-static double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+static double msSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 static Expected<TriMesh> open(const std::string& spec) {
   if (spec.rfind("heightfield:", 0) == 0) return makeHeightField(std::atoi(spec.c_str() + 12));
@@ -112,13 +114,15 @@ int main(int argc, char** argv) {
     stage["metrics"].push_back(pt["metrics"]);
     stage["param_total"].push_back(pt["total"]);
   }
-  std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,\"paths\":%lld,"
-              "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
-              target.c_str(), spec.c_str(), static_cast<long long>(vertices), static_cast<long long>(faces), repeats,
-              static_cast<long long>(paths), static_cast<long long>(reached), static_cast<long long>(crossed), l2,
-              bijective ? "true" : "false", peakMemoryMB());
+  std::printf(
+      "{\"target\":\"%s\",\"mesh\":\"%s\",\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,\"paths\":%lld,"
+      "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
+      target.c_str(), spec.c_str(), static_cast<long long>(vertices), static_cast<long long>(faces), repeats,
+      static_cast<long long>(paths), static_cast<long long>(reached), static_cast<long long>(crossed), l2,
+      bijective ? "true" : "false", peakMemoryMB());
   bool first = true;
-  for (const char* name : {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics", "param_total"}) {
+  for (const char* name :
+       {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics", "param_total"}) {
     std::vector<double>& v = stage[name];
     std::sort(v.begin(), v.end());
     std::printf("%s\"%s\":%.3f", first ? "" : ",", name, v[v.size() / 2]);

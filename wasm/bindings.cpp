@@ -255,9 +255,7 @@ val nameLists() {
   return o;
 }
 
-std::string formatOfFileName(const std::string& name) {
-  return nameOf(kMeshFormatNames, meshFormatFromFileName(name));
-}
+std::string formatOfFileName(const std::string& name) { return nameOf(kMeshFormatNames, meshFormatFromFileName(name)); }
 
 /// Bytes currently allocated by malloc in WASM memory (for leak checks).
 double heapUsedBytes() { return static_cast<double>(mallinfo().uordblks); }

@@ -41,9 +41,9 @@ std::optional<Expected<SurfacePoint>> pointFrom(const val& p) {
 }
 
 Error shapeError(const std::string& what, bool allowAuto, const val& p) {
-  return Error{ErrorCode::InvalidArgument, what + " must be " + (allowAuto ? "'auto', " : "") +
-                                               "a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}; got " +
-                                               describe(p)};
+  return Error{ErrorCode::InvalidArgument,
+               what + " must be " + (allowAuto ? "'auto', " : "") +
+                   "a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}; got " + describe(p)};
 }
 
 }  // namespace

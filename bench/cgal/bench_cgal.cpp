@@ -215,9 +215,9 @@ std::string fmt(double x, const char* f) {
 
 struct Settings {
   int repeats = 3;
-  double spBudgetS = 60;          // a CGAL shortest-path run longer than this: larger meshes skip it
-  int64_t spMaxVertices = -1;     // explicit cap (-1: none)
-  bool lengths = true;            // per-boundary-vertex lengths in the JSON
+  double spBudgetS = 60;       // a CGAL shortest-path run longer than this: larger meshes skip it
+  int64_t spMaxVertices = -1;  // explicit cap (-1: none)
+  bool lengths = true;         // per-boundary-vertex lengths in the JSON
 };
 
 const char* solverName(LinearSolver s) {
@@ -262,8 +262,9 @@ int main(int argc, char** argv) {
     else if (a == "--sp-max-vertices") st.spMaxVertices = std::atoll(next());
     else if (a == "--no-lengths") st.lengths = false;
     else if (a == "-h" || a == "--help") {
-      std::printf("usage: bench_cgal [--repeats N] [--sp-budget-s S] [--sp-max-vertices N] [--no-lengths] MESH...\n"
-                  "  MESH: an .obj/.off file or heightfield:N\n");
+      std::printf(
+          "usage: bench_cgal [--repeats N] [--sp-budget-s S] [--sp-max-vertices N] [--no-lengths] MESH...\n"
+          "  MESH: an .obj/.off file or heightfield:N\n");
       return 0;
     } else meshes.push_back(a);
   }
@@ -273,9 +274,10 @@ int main(int argc, char** argv) {
   }
   const double onceAboveMs = 30'000;  // do not repeat a run that took longer than 30 s
   int64_t spSkipAbove = st.spMaxVertices >= 0 ? st.spMaxVertices : std::numeric_limits<int64_t>::max();
-  std::string spSkipReason =
-      st.spMaxVertices >= 0 ? "more than --sp-max-vertices " + std::to_string(st.spMaxVertices) + " vertices" : "";
-  int64_t spLargestV = 0;   // the largest mesh whose CGAL shortest paths ran, and their peak (MB)
+  std::string spSkipReason = st.spMaxVertices >= 0
+                                 ? "more than --sp-max-vertices " + std::to_string(st.spMaxVertices) + " vertices"
+                                 : "";
+  int64_t spLargestV = 0;  // the largest mesh whose CGAL shortest paths ran, and their peak (MB)
   double spLargestMb = 0;
   std::vector<Row> rows;
 
@@ -283,7 +285,8 @@ int main(int argc, char** argv) {
     Row row;
     row.name = spec.rfind("heightfield:", 0) == 0 ? spec : baseName(spec);
     Obj out;
-    out.addStr("mesh", row.name).addStr("cgal", CGAL_VERSION_STR)
+    out.addStr("mesh", row.name)
+        .addStr("cgal", CGAL_VERSION_STR)
         .addStr("kernel", "Exact_predicates_inexact_constructions_kernel");
     std::fprintf(stderr, "bench_cgal: %s: loading\n", row.name.c_str());
     auto loaded = loadAny(spec);
@@ -310,8 +313,10 @@ int main(int argc, char** argv) {
     const std::vector<SurfacePoint> targets = boundaryTargets(mesh);
     row.vertices = mesh.numVertices();
     row.boundary = static_cast<int64_t>(targets.size());
-    out.add("vertices", row.vertices).add("faces", static_cast<int64_t>(mesh.numFaces()))
-        .add("boundary_vertices", row.boundary).add("source", static_cast<int64_t>(source));
+    out.add("vertices", row.vertices)
+        .add("faces", static_cast<int64_t>(mesh.numFaces()))
+        .add("boundary_vertices", row.boundary)
+        .add("source", static_cast<int64_t>(source));
 
     // The same mesh for CGAL: same vertex order, the same (oriented) faces.
     SM sm;
@@ -365,9 +370,10 @@ int main(int argc, char** argv) {
       const double available = memAvailableMb();
       if (available > 0 && predicted > 0.8 * available) {
         char buf[200];
-        std::snprintf(buf, sizeof buf, "predicted peak %.0f GB (%.0f MB at %lld vertices × (V ratio)^1.5) > 80%% of "
-                      "the %.0f GB available", predicted / 1024, spLargestMb, static_cast<long long>(spLargestV),
-                      available / 1024);
+        std::snprintf(buf, sizeof buf,
+                      "predicted peak %.0f GB (%.0f MB at %lld vertices × (V ratio)^1.5) > 80%% of "
+                      "the %.0f GB available",
+                      predicted / 1024, spLargestMb, static_cast<long long>(spLargestV), available / 1024);
         memoryReason = buf;
       }
     }
@@ -392,7 +398,10 @@ int main(int argc, char** argv) {
       row.cgalSpMs = t.ms;
       int64_t unreachable = 0;
       for (double d : exact) unreachable += std::isinf(d);
-      sp.add("skipped", false).add("ms", t.ms, 4).add("runs", t.runs).add("peak_rss_mb", rss, 4)
+      sp.add("skipped", false)
+          .add("ms", t.ms, 4)
+          .add("runs", t.runs)
+          .add("peak_rss_mb", rss, 4)
           .add("baseline_rss_mb", base, 4)
           .add("unreachable", unreachable);
       if (row.vertices > spLargestV && rss > base) {
@@ -426,8 +435,11 @@ int main(int argc, char** argv) {
       row.ratioMed = median(ratios);
       double mean = 0;
       for (double r : ratios) mean += r;
-      ratio.add("min", row.ratioMin, 9).add("median", row.ratioMed, 9).add("max", row.ratioMax, 9)
-          .add("mean", mean / ratios.size(), 9).add("below_one", belowOne);
+      ratio.add("min", row.ratioMin, 9)
+          .add("median", row.ratioMed, 9)
+          .add("max", row.ratioMax, 9)
+          .add("mean", mean / ratios.size(), 9)
+          .add("below_one", belowOne);
     }
     out.add("ratio_straightest_over_exact", ratio.done());
 
@@ -444,10 +456,14 @@ int main(int argc, char** argv) {
       });
       const double rss = peakRssMb();
       Obj o;
-      o.addStr("method", "Mean_value_coordinates_parameterizer_3 + Circular_border_arc_length_parameterizer_3 "
-                         "(default solver: Eigen BiCGSTAB + IncompleteLUT)");
-      o.add("status", str(SMP::get_error_message(status))).add("ms", t.ms, 4).add("runs", t.runs)
-          .add("peak_rss_mb", rss, 4).add("baseline_rss_mb", base, 4);
+      o.addStr("method",
+               "Mean_value_coordinates_parameterizer_3 + Circular_border_arc_length_parameterizer_3 "
+               "(default solver: Eigen BiCGSTAB + IncompleteLUT)");
+      o.add("status", str(SMP::get_error_message(status)))
+          .add("ms", t.ms, 4)
+          .add("runs", t.runs)
+          .add("peak_rss_mb", rss, 4)
+          .add("baseline_rss_mb", base, 4);
       if (status == SMP::OK) {
         std::vector<Vec2> uv(mesh.numVertices());
         for (int32_t v = 0; v < mesh.numVertices(); ++v) {
@@ -471,9 +487,9 @@ int main(int argc, char** argv) {
       BoundaryKind boundary;
       WeightKind weights;
     };
-    for (const Variant& var : {Variant{"ours_circle_mean_value", BoundaryKind::Circle, WeightKind::MeanValue},
-                               Variant{"ours_measured_shape_preserving", BoundaryKind::Measured,
-                                       WeightKind::ShapePreserving}}) {
+    for (const Variant& var :
+         {Variant{"ours_circle_mean_value", BoundaryKind::Circle, WeightKind::MeanValue},
+          Variant{"ours_measured_shape_preserving", BoundaryKind::Measured, WeightKind::ShapePreserving}}) {
       std::fprintf(stderr, "bench_cgal: %s: %s\n", row.name.c_str(), var.key);
       ParamOptions po;
       po.source = SurfacePoint::vertex(source);
@@ -500,14 +516,23 @@ int main(int argc, char** argv) {
         const Stretch s = stretchOf(mesh, p.uv);  // the same function as CGAL's UVs go through
         const double ms = median(totals);
         o.addStr("solver", solverName(po.solver));
-        o.add("ms", ms, 4).add("runs", static_cast<int>(totals.size())).add("peak_rss_mb", rss, 4)
+        o.add("ms", ms, 4)
+            .add("runs", static_cast<int>(totals.size()))
+            .add("peak_rss_mb", rss, 4)
             .add("baseline_rss_mb", base, 4)
-            .add("timings_ms", Obj().add("source", tm["source"], 4).add("trace", tm["trace"], 4)
-                                   .add("boundary", tm["boundary"], 4).add("weights", tm["weights"], 4)
-                                   .add("solve", tm["solve"], 4).add("metrics", tm["metrics"], 4)
-                                   .add("total", tm["total"], 4).done());
+            .add("timings_ms", Obj()
+                                   .add("source", tm["source"], 4)
+                                   .add("trace", tm["trace"], 4)
+                                   .add("boundary", tm["boundary"], 4)
+                                   .add("weights", tm["weights"], 4)
+                                   .add("solve", tm["solve"], 4)
+                                   .add("metrics", tm["metrics"], 4)
+                                   .add("total", tm["total"], 4)
+                                   .done());
         stretchFields(o, s);
-        o.add("l2_reported", p.metrics.l2, 9).add("residual", p.residual, 3).add("fallbacks", p.fallbacks)
+        o.add("l2_reported", p.metrics.l2, 9)
+            .add("residual", p.residual, 3)
+            .add("fallbacks", p.fallbacks)
             .add("weight_fallbacks", p.weightFallbacks);
         if (var.boundary == BoundaryKind::Circle) {
           row.oursCircleMs = ms;
@@ -529,7 +554,8 @@ int main(int argc, char** argv) {
         straight[i] = batch.status[i] == TraceStatus::Reached ? batch.length[i] : kInf;
       std::vector<double> ids(targets.size());
       for (size_t i = 0; i < targets.size(); ++i) ids[i] = targets[i].index;
-      out.add("boundary_vertex_ids", array(ids, 12)).add("straightest_lengths", array(straight))
+      out.add("boundary_vertex_ids", array(ids, 12))
+          .add("straightest_lengths", array(straight))
           .add("exact_lengths", array(exact));
     }
     std::printf("%s\n", out.done().c_str());
@@ -538,9 +564,10 @@ int main(int argc, char** argv) {
   }
 
   // ---------------------------------------------------------------- the table
-  std::printf("\n| mesh | vertices | boundary | reached | ours paths ms | CGAL exact ms | straightest/exact min / median / max "
-              "| CGAL circle+MVC ms | CGAL L2 | ours circle+MV ms | ours circle+MV L2 | ours measured+SP ms "
-              "| ours measured+SP L2 | CGAL ÷ ours: circle+MV / measured+SP | L2 CGAL vs ours circle+MV |\n");
+  std::printf(
+      "\n| mesh | vertices | boundary | reached | ours paths ms | CGAL exact ms | straightest/exact min / median / max "
+      "| CGAL circle+MVC ms | CGAL L2 | ours circle+MV ms | ours circle+MV L2 | ours measured+SP ms "
+      "| ours measured+SP L2 | CGAL ÷ ours: circle+MV / measured+SP | L2 CGAL vs ours circle+MV |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---|---:|\n");
   for (const Row& r : rows) {
     if (!r.error.empty()) {
@@ -558,19 +585,21 @@ int main(int argc, char** argv) {
     const std::string l2diff = fmt(std::fabs(r.cgalL2 - r.oursCircleL2) / r.oursCircleL2, "%.1e");
     std::printf("| %s | %lld | %lld | %lld | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(),
                 static_cast<long long>(r.vertices), static_cast<long long>(r.boundary),
-                static_cast<long long>(r.reached), fmtMs(r.oursPathsMs).c_str(), cgalSp.c_str(),
-                ratio.c_str(), fmtMs(r.cgalParamMs).c_str(), fmt(r.cgalL2, "%.6f").c_str(),
-                fmtMs(r.oursCircleMs).c_str(), fmt(r.oursCircleL2, "%.6f").c_str(),
-                fmtMs(r.oursMeasMs).c_str(), fmt(r.oursMeasL2, "%.6f").c_str(), speedup.c_str(), l2diff.c_str());
+                static_cast<long long>(r.reached), fmtMs(r.oursPathsMs).c_str(), cgalSp.c_str(), ratio.c_str(),
+                fmtMs(r.cgalParamMs).c_str(), fmt(r.cgalL2, "%.6f").c_str(), fmtMs(r.oursCircleMs).c_str(),
+                fmt(r.oursCircleL2, "%.6f").c_str(), fmtMs(r.oursMeasMs).c_str(), fmt(r.oursMeasL2, "%.6f").c_str(),
+                speedup.c_str(), l2diff.c_str());
   }
-  std::printf("\nTimes in ms, median of %d run(s) (a run over 30 s is not repeated), loading excluded; CGAL kernel: "
-              "Exact_predicates_inexact_constructions_kernel. Paths: ours = traceStraightestPaths to every boundary "
-              "vertex (setup included); CGAL = Surface_mesh_shortest_path construction + add_source_point + "
-              "build_sequence_tree + shortest_distance_to_source_points per boundary vertex. Ratio over the reached "
-              "paths. Parameterizations: CGAL = the SMP::parameterize call (its default solver, Eigen BiCGSTAB + "
-              "IncompleteLUT); ours = the "total" timing (source given, the library's default solver: %s; "
-              "stretch metrics included). L2 = our textureStretch for every UV set.\n",
-              st.repeats, solverName(ParamOptions{}.solver));
+  std::printf(
+      "\nTimes in ms, median of %d run(s) (a run over 30 s is not repeated), loading excluded; CGAL kernel: "
+      "Exact_predicates_inexact_constructions_kernel. Paths: ours = traceStraightestPaths to every boundary "
+      "vertex (setup included); CGAL = Surface_mesh_shortest_path construction + add_source_point + "
+      "build_sequence_tree + shortest_distance_to_source_points per boundary vertex. Ratio over the reached "
+      "paths. Parameterizations: CGAL = the SMP::parameterize call (its default solver, Eigen BiCGSTAB + "
+      "IncompleteLUT); ours = the " total
+      " timing (source given, the library's default solver: %s; "
+      "stretch metrics included). L2 = our textureStretch for every UV set.\n",
+      st.repeats, solverName(ParamOptions{}.solver));
   for (const Row& r : rows)
     if (!r.cgalSpNote.empty()) std::printf("¹ %s: CGAL shortest paths %s\n", r.name.c_str(), r.cgalSpNote.c_str());
   return 0;

@@ -40,13 +40,19 @@ std::string usage() {
          "      --points               include each path's points\n"
          "  param MESH       flatten a disk: boundary map + convex-combination interior, with texture stretch\n"
          "      --source auto|N        center for the measured boundary (default auto)\n"
-         "      --boundary " + alternatives(namesOf(kBoundaryKindNames, kAutoName)) +
+         "      --boundary " +
+         alternatives(namesOf(kBoundaryKindNames, kAutoName)) +
          "   (default measured; auto keeps the preferred map)\n"
-         "      --weights " + alternatives(namesOf(kWeightKindNames)) + "   (default shape-preserving)\n"
-         "      --solver " + alternatives(namesOf(kLinearSolverNames)) + "   sparse solver (default multigrid)\n"
+         "      --weights " +
+         alternatives(namesOf(kWeightKindNames)) +
+         "   (default shape-preserving)\n"
+         "      --solver " +
+         alternatives(namesOf(kLinearSolverNames)) +
+         "   sparse solver (default multigrid)\n"
          "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order\n"
          "\n"
-         "MESH is an .obj or .off file, sample:NAME for a built-in sample (" + choiceList(sampleNames(), ", ", ", ") +
+         "MESH is an .obj or .off file, sample:NAME for a built-in sample (" +
+         choiceList(sampleNames(), ", ", ", ") +
          "), or\n"
          "heightfield:N for the mountain relief on an N × N grid (heightfield:1000 has 1M vertices).\n"
          "\n"
@@ -115,7 +121,8 @@ Options parseArgs(int argc, char** argv) {
   if (o.command == "help") return o;
   if (positional.empty()) throw UsageError{"missing COMMAND"};
   o.command = positional[0];
-  if (o.command != "info" && o.command != "paths" && o.command != "param") throw UsageError{"unknown command '" + o.command + "'"};
+  if (o.command != "info" && o.command != "paths" && o.command != "param")
+    throw UsageError{"unknown command '" + o.command + "'"};
   if (positional.size() < 2) throw UsageError{"missing MESH"};
   if (positional.size() > 2) throw UsageError{"unexpected argument '" + positional[2] + "'"};
   o.mesh = positional[1];

@@ -37,7 +37,8 @@ constexpr double kHullCollinear = 1e-9;
 std::vector<size_t> convexHull(const std::vector<Vec2>& pts) {
   std::vector<size_t> order(pts.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pts[a].x < pts[b].x || (pts[a].x == pts[b].x && pts[a].y < pts[b].y); });
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return pts[a].x < pts[b].x || (pts[a].x == pts[b].x && pts[a].y < pts[b].y); });
   std::vector<size_t> hull(2 * pts.size() + 1);
   size_t k = 0;
   auto turn = [&](size_t o, size_t a, size_t b) {
@@ -199,8 +200,9 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
   }
   map.movedToHull = convexify(map.polygon, boundaryChords(mesh, map.loop));
   if (map.movedToHull < 0)
-    return Error{ErrorCode::Topology, "the measured boundary does not surround the source (a boundary edge "
-                                      "subtends half of the total angle or more)"};
+    return Error{ErrorCode::Topology,
+                 "the measured boundary does not surround the source (a boundary edge "
+                 "subtends half of the total angle or more)"};
   return map;
 }
 

@@ -30,7 +30,8 @@ const char* errorCodeName(ErrorCode code) {
 
 std::vector<std::string> errorCodeNames() {
   std::vector<std::string> names;
-  for (int c = 0; c <= static_cast<int>(ErrorCode::Internal); ++c) names.push_back(errorCodeName(static_cast<ErrorCode>(c)));
+  for (int c = 0; c <= static_cast<int>(ErrorCode::Internal); ++c)
+    names.push_back(errorCodeName(static_cast<ErrorCode>(c)));
   return names;
 }
 

@@ -176,7 +176,10 @@ Expected<int32_t> defaultSource(const TriMesh& mesh) {
     for (int32_t v = 0; v < mesh.numVertices(); ++v) {
       if (mesh.vertexHalfedge(v) < 0) continue;
       const double d = squaredNorm(mesh.position(v) - centroid);
-      if (d < bestDist) { bestDist = d; best = v; }
+      if (d < bestDist) {
+        bestDist = d;
+        best = v;
+      }
     }
     return best;
   }

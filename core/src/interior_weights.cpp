@@ -76,7 +76,7 @@ InteriorWeights interiorWeights(const TriMesh& mesh, WeightKind kind) {
         case WeightKind::Cotan:
           for (size_t k = 0; k < d; ++k) {
             const Vec3& pk = mesh.position(ring[k]);
-            const Vec3& pn = mesh.position(ring[next(k)]);                // third vertex of face (v, k, k+1)
+            const Vec3& pn = mesh.position(ring[next(k)]);                 // third vertex of face (v, k, k+1)
             const Vec3& pp = mesh.position(ring[k == 0 ? d - 1 : k - 1]);  // third vertex of face (v, k-1, k)
             w[k] = cotAngle(p - pn, pk - pn) + cotAngle(p - pp, pk - pp);
           }

@@ -105,8 +105,9 @@ Expected<LinearSolveStats> solve(CsrMatrix A, const std::vector<double>& rhs, st
   if (!wellFormed(A) || A.rows != A.cols || rhs.size() != unknowns || x.size() != unknowns)
     return Error{ErrorCode::InvalidArgument,
                  "linear solve: needs a well-formed square matrix and two values per row in the right-hand side "
-                 "and the solution (got " + std::to_string(A.rows) + " by " + std::to_string(A.cols) + ", " +
-                     std::to_string(rhs.size()) + " and " + std::to_string(x.size()) + " values)"};
+                 "and the solution (got " +
+                     std::to_string(A.rows) + " by " + std::to_string(A.cols) + ", " + std::to_string(rhs.size()) +
+                     " and " + std::to_string(x.size()) + " values)"};
   LinearSolveStats stats;
   stats.used = solver;
   if (A.rows == 0) return stats;

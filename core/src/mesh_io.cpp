@@ -72,8 +72,7 @@ Expected<TriMesh> loadMesh(std::string_view bytes, MeshFormat format, const Buil
   const int64_t polygons = soup.value().polygonsTriangulated;
   std::vector<std::string> notes;
   if (polygons > 0) notes.push_back(std::to_string(polygons) + " polygons with more than 3 corners were triangulated");
-  return TriMesh::build(std::move(soup.value().positions), std::move(soup.value().triangles), limits,
-                        std::move(notes));
+  return TriMesh::build(std::move(soup.value().positions), std::move(soup.value().triangles), limits, std::move(notes));
 }
 
 Expected<TriMesh> loadMeshFile(const std::string& path, const BuildLimits& limits) {

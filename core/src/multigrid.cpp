@@ -15,8 +15,8 @@ namespace straightest {
 struct AggregationMultigrid::Hierarchy {
   struct Level {
     CsrMatrix A;
-    CsrMatrix P;                      // prolongator to this level from the next coarser one
-    std::vector<int32_t> split;       // per row: first entry with column ≥ row (rows are sorted)
+    CsrMatrix P;                 // prolongator to this level from the next coarser one
+    std::vector<int32_t> split;  // per row: first entry with column ≥ row (rows are sorted)
     std::vector<double> invDiag;
     // Work space, two entries per unknown: b and x of the coarser levels' cycles; tmp for Jacobi.
     mutable std::vector<double> b, x, tmp;

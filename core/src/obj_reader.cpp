@@ -227,8 +227,8 @@ class ObjReader {
         if (index >= nv)
           return Error{ErrorCode::IndexOutOfRange,
                        "line " + std::to_string(d.line) + ": face " + std::to_string(d.face) + " refers to vertex " +
-                           std::to_string(int64_t{index} + 1) + " (1-based), but the file has " +
-                           std::to_string(nv) + " vertices"};
+                           std::to_string(int64_t{index} + 1) + " (1-based), but the file has " + std::to_string(nv) +
+                           " vertices"};
       triangles.clear();
       triangulatePolygon(soup_.positions, polygon_, triangles);
       std::copy(triangles.begin(), triangles.end(),

@@ -23,8 +23,7 @@ std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv) {
     if (uv)
       std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1,
                     t[2] + 1);
-    else
-      std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    else std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
     out += line;
   }
   return out;

@@ -97,9 +97,9 @@ Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) 
     }
     if (nv > limits.maxVertices || nf > limits.maxFaces) {
       error = Error{ErrorCode::TooLarge, "line " + std::to_string(line) + ": header claims " + std::to_string(nv) +
-                                             " vertices and " + std::to_string(nf) +
-                                             " faces, over the limits of " + std::to_string(limits.maxVertices) +
-                                             " vertices and " + std::to_string(limits.maxFaces) + " faces"};
+                                             " vertices and " + std::to_string(nf) + " faces, over the limits of " +
+                                             std::to_string(limits.maxVertices) + " vertices and " +
+                                             std::to_string(limits.maxFaces) + " faces"};
       return false;
     }
     // Each vertex needs at least "0 0 0\n" (6 bytes) and each face line at least 2 bytes (a bound
@@ -162,14 +162,15 @@ Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) 
       case Stage::Counts: return handleCounts(line, items);
       case Stage::Vertices: {
         // OFF: exactly x y z. COFF: x y z and a colour of 3 or 4 values. NOFF: x y z and a normal.
-        const bool countOk = extraPerVertex == 0 ? tokens.count == 3
+        const bool countOk = extraPerVertex == 0   ? tokens.count == 3
                              : extraPerVertex == 4 ? (tokens.count == 6 || tokens.count == 7)
                                                    : tokens.count == 6;
         if (!countOk) {
           error = parseError(line, "vertex " + std::to_string(soup.positions.size()) + " has " +
                                        std::to_string(tokens.count) + " values, expected " +
-                                       (extraPerVertex == 0 ? "3 (x y z)" : extraPerVertex == 4 ? "6 or 7 (x y z r g b [a])"
-                                                                                                : "6 (x y z nx ny nz)"));
+                                       (extraPerVertex == 0   ? "3 (x y z)"
+                                        : extraPerVertex == 4 ? "6 or 7 (x y z r g b [a])"
+                                                              : "6 (x y z nx ny nz)"));
           return false;
         }
         double c[3];
@@ -195,8 +196,8 @@ Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) 
         const int64_t face = facesRead;
         int64_t k = 0;
         if (!parseInt64(items[0], k) || k < 0) {
-          error = parseError(line, "face " + std::to_string(face) + ": expected a vertex count, found " +
-                                       quoted(items[0]));
+          error = parseError(line,
+                             "face " + std::to_string(face) + ": expected a vertex count, found " + quoted(items[0]));
           return false;
         }
         if (k < 3) {

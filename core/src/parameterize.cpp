@@ -23,7 +23,10 @@ Expected<double> solveInterior(const TriMesh& mesh, const InteriorWeights& W, co
   // Initial guess for iterative solvers: the boundary's centroid (inside the convex polygon).
   std::vector<double> x(2 * static_cast<size_t>(n));
   double cx = 0, cy = 0;
-  for (const Vec2& q : boundary.polygon) { cx += q[0]; cy += q[1]; }
+  for (const Vec2& q : boundary.polygon) {
+    cx += q[0];
+    cy += q[1];
+  }
   for (int32_t r = 0; r < n; ++r) {
     x[2 * r] = cx / boundary.polygon.size();
     x[2 * r + 1] = cy / boundary.polygon.size();
@@ -65,8 +68,10 @@ Expected<bool> requireDisk(const TriMesh& mesh) {
                       std::to_string(s.eulerCharacteristic) + ", " + std::to_string(s.components) + " component" +
                       (s.components == 1 ? "" : "s");
   if (s.boundaryLoopSizes.empty()) found = "a closed surface (" + found + ")";
-  return Error{ErrorCode::Topology, "parameterization needs a disk (one boundary loop, Euler characteristic 1, "
-                                    "one component); found " + found};
+  return Error{ErrorCode::Topology,
+               "parameterization needs a disk (one boundary loop, Euler characteristic 1, "
+               "one component); found " +
+                   found};
 }
 
 bool preferredMap(double l2, int64_t badTriangles, double incumbentL2, int64_t incumbentBadTriangles) {

@@ -64,15 +64,12 @@ double faceHeight(double x, double y) {
     return h * std::exp(-((x - cx) * (x - cx) / (2 * sx * sx) + (y - cy) * (y - cy) / (2 * sy * sy)));
   };
   const double dome = 0.45 * std::sqrt(std::max(0.0, 1.0 - 0.8 * (x * x + y * y)));
-  return dome + bump(x, y, 0, 0.0, 0.07, 0.25, 0.28)        // nose
-         + bump(x, y, -0.3, 0.35, 0.2, 0.06, 0.08)         // brows
-         + bump(x, y, 0.3, 0.35, 0.2, 0.06, 0.08)
-         - bump(x, y, -0.3, 0.2, 0.1, 0.06, 0.1)           // eye sockets
-         - bump(x, y, 0.3, 0.2, 0.1, 0.06, 0.1)
-         + bump(x, y, -0.4, -0.2, 0.18, 0.18, 0.07)        // cheeks
-         + bump(x, y, 0.4, -0.2, 0.18, 0.18, 0.07)
-         + bump(x, y, 0, -0.5, 0.2, 0.05, 0.05)            // lips
-         + 0.015 * std::sin(9 * x) * std::cos(7 * y);     // skin bumps
+  return dome + bump(x, y, 0, 0.0, 0.07, 0.25, 0.28)                                        // nose
+         + bump(x, y, -0.3, 0.35, 0.2, 0.06, 0.08)                                          // brows
+         + bump(x, y, 0.3, 0.35, 0.2, 0.06, 0.08) - bump(x, y, -0.3, 0.2, 0.1, 0.06, 0.1)   // eye sockets
+         - bump(x, y, 0.3, 0.2, 0.1, 0.06, 0.1) + bump(x, y, -0.4, -0.2, 0.18, 0.18, 0.07)  // cheeks
+         + bump(x, y, 0.4, -0.2, 0.18, 0.18, 0.07) + bump(x, y, 0, -0.5, 0.2, 0.05, 0.05)   // lips
+         + 0.015 * std::sin(9 * x) * std::cos(7 * y);                                       // skin bumps
 }
 
 }  // namespace
@@ -124,8 +121,7 @@ Expected<TriMesh> makeSample(const std::string& name) {
   if (name == "mountain") return makeHeightField(50);
   if (name == "cap") return makeSphericalCap(1.0, kPi / 3, 16);
   if (name == "saddle") return diskMesh(16, [](double x, double y) { return Vec3{x, y, x * x - y * y}; });
-  if (name == "face")
-    return diskMesh(20, [](double x, double y) { return Vec3{0.8 * x, y, faceHeight(0.8 * x, y)}; });
+  if (name == "face") return diskMesh(20, [](double x, double y) { return Vec3{0.8 * x, y, faceHeight(0.8 * x, y)}; });
   std::string names;
   for (const auto& n : sampleNames()) names += (names.empty() ? "" : ", ") + n;
   return Error{ErrorCode::InvalidArgument, "unknown sample '" + name + "' (available: " + names + ")"};

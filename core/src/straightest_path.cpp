@@ -22,8 +22,8 @@ struct Exit {
   int32_t halfedge = -1;  // crossed halfedge (in `face`) when !isVertex
   double t = 0;           // crossing parameter on halfedge
   Vec3 position;
-  int32_t face = -1;      // face holding the segment to the exit
-  int32_t face2 = -1;     // second face when the segment runs along an edge
+  int32_t face = -1;            // face holding the segment to the exit
+  int32_t face2 = -1;           // second face when the segment runs along an edge
   double dTail = 0, dHead = 0;  // signed distances of the crossed halfedge's ends (reused next step)
 };
 
@@ -83,7 +83,7 @@ struct StraightestPathTracer::Impl {
   FaceSet sourceSet_, targetSet_;
   bool isSourceFace(int32_t f) const { return sourceSet_.contains(f); }
   bool isTargetFace(int32_t f) const { return targetSet_.contains(f); }
-  std::vector<int32_t> fan_;  // scratch: faces around the current vertex
+  std::vector<int32_t> fan_;           // scratch: faces around the current vertex
   std::vector<uint32_t> vertexStamp_;  // == epoch_ for vertices passed in the current walk
   uint32_t epoch_ = 0;
   CuttingPlane plane_{};
@@ -126,8 +126,7 @@ struct StraightestPathTracer::Impl::Walk {
       out.status = TraceStatus::Reached;
       return true;
     }
-    if (!first && (tr.isSourceFace(f1) || tr.isSourceFace(f2)) &&
-        onSegment(tr.sourcePosition_, P, Q)) {
+    if (!first && (tr.isSourceFace(f1) || tr.isSourceFace(f2)) && onSegment(tr.sourcePosition_, P, Q)) {
       out.length += norm(tr.sourcePosition_ - P);
       emit(tr.source_, tr.sourcePosition_);
       out.status = TraceStatus::ReturnedToSource;

@@ -37,7 +37,8 @@ SurfacePoint canonical(const TriMesh& mesh, SurfacePoint p, double snapTolerance
       int zeros = 0, nonzero = 0;
       for (int k = 0; k < 3; ++k) {
         kept[k] = b[k] <= snapTolerance ? 0.0 : b[k] / sum;
-        if (kept[k] == 0) ++zeros; else nonzero = k;
+        if (kept[k] == 0) ++zeros;
+        else nonzero = k;
       }
       if (zeros == 2) return SurfacePoint::vertex(mesh.triangle(p.index)[nonzero]);
       if (zeros == 1)

@@ -29,8 +29,8 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     return err(ErrorCode::TooLarge, "mesh has " + std::to_string(nv) + " vertices, more than the limit of " +
                                         std::to_string(limits.maxVertices));
   if (nf > limits.maxFaces || nf > std::numeric_limits<int32_t>::max() / 4)
-    return err(ErrorCode::TooLarge, "mesh has " + std::to_string(nf) + " faces, more than the limit of " +
-                                        std::to_string(limits.maxFaces));
+    return err(ErrorCode::TooLarge,
+               "mesh has " + std::to_string(nf) + " faces, more than the limit of " + std::to_string(limits.maxFaces));
   if (nv == 0) return err(ErrorCode::Empty, "mesh has no vertices");
   if (nf == 0) return err(ErrorCode::Empty, "mesh has no faces (" + std::to_string(nv) + " vertices)");
 
@@ -48,13 +48,11 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     for (int k = 0; k < 3; ++k)
       if (t[k] < 0 || t[k] >= nv)
         return err(ErrorCode::IndexOutOfRange, "face " + std::to_string(f) + " refers to vertex " +
-                                                   std::to_string(t[k]) + ", but the mesh has " +
-                                                   std::to_string(nv) + " vertices (valid: 0.." +
-                                                   std::to_string(nv - 1) + ")");
+                                                   std::to_string(t[k]) + ", but the mesh has " + std::to_string(nv) +
+                                                   " vertices (valid: 0.." + std::to_string(nv - 1) + ")");
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-      return err(ErrorCode::InvalidFace, "face " + std::to_string(f) + " uses a vertex twice (" +
-                                             std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
-                                             std::to_string(t[2]) + ")");
+      return err(ErrorCode::InvalidFace, "face " + std::to_string(f) + " uses a vertex twice (" + std::to_string(t[0]) +
+                                             ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")");
   }
 
   // Group halfedges by undirected edge: bucket by the smaller endpoint (counting sort), then sort
@@ -99,12 +97,14 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
           // Same direction: either inconsistent orientation, or a duplicate face. Check duplicates.
           const Triangle& ta = triangles[a / 3];
           const Triangle& tb = triangles[b / 3];
-          auto sorted = [](Triangle t) { std::sort(t.begin(), t.end()); return t; };
+          auto sorted = [](Triangle t) {
+            std::sort(t.begin(), t.end());
+            return t;
+          };
           if (sorted(ta) == sorted(tb))
-            return err(ErrorCode::DuplicateFace, "faces " + std::to_string(a / 3) + " and " +
-                                                     std::to_string(b / 3) + " have the same vertices (" +
-                                                     std::to_string(ta[0]) + ", " + std::to_string(ta[1]) +
-                                                     ", " + std::to_string(ta[2]) + ")");
+            return err(ErrorCode::DuplicateFace, "faces " + std::to_string(a / 3) + " and " + std::to_string(b / 3) +
+                                                     " have the same vertices (" + std::to_string(ta[0]) + ", " +
+                                                     std::to_string(ta[1]) + ", " + std::to_string(ta[2]) + ")");
           sameDirection[a] = sameDirection[b] = 1;
         }
         mate[a] = b;
@@ -118,8 +118,8 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     const int32_t m0 = mate[3 * f], m1 = mate[3 * f + 1], m2 = mate[3 * f + 2];
     if (m0 >= 0 && m1 >= 0 && m2 >= 0 && m0 / 3 == m1 / 3 && m1 / 3 == m2 / 3)
       return err(ErrorCode::DuplicateFace, "faces " + std::to_string(f) + " and " + std::to_string(m0 / 3) +
-                                               " have the same vertices (" + std::to_string(triangles[f][0]) +
-                                               ", " + std::to_string(triangles[f][1]) + ", " +
+                                               " have the same vertices (" + std::to_string(triangles[f][0]) + ", " +
+                                               std::to_string(triangles[f][1]) + ", " +
                                                std::to_string(triangles[f][2]) + ")");
   }
 
@@ -148,10 +148,10 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
           componentOf[g] = components;
           queue.push_back(g);
         } else if (flip[g] != want) {
-          return err(ErrorCode::NonOrientable,
-                     "the surface is not orientable (like a Möbius strip): faces " + std::to_string(f) + " and " +
-                         std::to_string(g) + " across edge (" + std::to_string(tailOf(h)) + ", " +
-                         std::to_string(headOf(h)) + ") cannot be oriented consistently");
+          return err(ErrorCode::NonOrientable, "the surface is not orientable (like a Möbius strip): faces " +
+                                                   std::to_string(f) + " and " + std::to_string(g) + " across edge (" +
+                                                   std::to_string(tailOf(h)) + ", " + std::to_string(headOf(h)) +
+                                                   ") cannot be oriented consistently");
         }
       }
     }
@@ -168,7 +168,10 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
 
   TriMesh mesh;
   // Apply flips: (a, b, c) -> (a, c, b). Halfedge k of a flipped face becomes halfedge 2 - k.
-  auto newHalfedge = [&](int32_t h) { const int32_t f = h / 3, k = h % 3; return 3 * f + (flip[f] ? 2 - k : k); };
+  auto newHalfedge = [&](int32_t h) {
+    const int32_t f = h / 3, k = h % 3;
+    return 3 * f + (flip[f] ? 2 - k : k);
+  };
   for (int64_t f = 0; f < nf; ++f)
     if (flip[f]) std::swap(triangles[f][1], triangles[f][2]);
   std::vector<int32_t> twin(nh, -1);
@@ -197,9 +200,9 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     ++cornerCount[v];
     if (twin[h] < 0) {
       if (mesh.isBoundaryVertex_[v])
-        return err(ErrorCode::NonManifoldVertex,
-                   "vertex " + std::to_string(v) + " is where separate pieces of surface touch (two boundary "
-                   "edges leave it, e.g. two triangles sharing only this corner)");
+        return err(ErrorCode::NonManifoldVertex, "vertex " + std::to_string(v) +
+                                                     " is where separate pieces of surface touch (two boundary "
+                                                     "edges leave it, e.g. two triangles sharing only this corner)");
       mesh.isBoundaryVertex_[v] = 1;
       mesh.vertexHalfedge_[v] = h;
     } else if (mesh.vertexHalfedge_[v] < 0) {
@@ -208,7 +211,10 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   }
   int64_t unreferenced = 0;
   for (int32_t v = 0; v < nv; ++v) {
-    if (mesh.vertexHalfedge_[v] < 0) { ++unreferenced; continue; }
+    if (mesh.vertexHalfedge_[v] < 0) {
+      ++unreferenced;
+      continue;
+    }
     int32_t count = 0;
     for (int32_t h : mesh.outgoingHalfedges(v)) {
       (void)h;
@@ -259,8 +265,9 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
 
   if (edges > 0 && edgeLengthSum > 0) mesh.meanEdgeLength_ = edgeLengthSum / static_cast<double>(edges);
   if (degenerate == nf)
-    return err(ErrorCode::Degenerate, "every face (" + std::to_string(nf) + ") has zero area: the vertices of each "
-                                      "face are collinear or coincide");
+    return err(ErrorCode::Degenerate, "every face (" + std::to_string(nf) +
+                                          ") has zero area: the vertices of each "
+                                          "face are collinear or coincide");
 
   MeshSummary& s = mesh.summary_;
   s.vertices = nv;
@@ -280,7 +287,8 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   std::vector<int32_t>().swap(twin);  // now in adjacency_
   s.problems = std::move(notes);
   if (reoriented > 0)
-    s.problems.push_back(std::to_string(reoriented) + " faces had the opposite orientation of their neighbours "
+    s.problems.push_back(std::to_string(reoriented) +
+                         " faces had the opposite orientation of their neighbours "
                          "and were flipped");
   if (degenerate > 0) s.problems.push_back(std::to_string(degenerate) + " degenerate (zero-area) faces");
   if (unreferenced > 0)
@@ -292,17 +300,17 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
 Expected<TriMesh> meshFromFlatArrays(const std::vector<double>& xyz, const std::vector<double>& indices,
                                      const BuildLimits& limits) {
   if (xyz.size() % 3 != 0)
-    return err(ErrorCode::InvalidArgument, "positions has " + std::to_string(xyz.size()) +
-                                               " numbers, not a multiple of 3 (x, y, z per vertex)");
+    return err(ErrorCode::InvalidArgument,
+               "positions has " + std::to_string(xyz.size()) + " numbers, not a multiple of 3 (x, y, z per vertex)");
   if (indices.size() % 3 != 0)
     return err(ErrorCode::InvalidArgument, "indices has " + std::to_string(indices.size()) +
                                                " numbers, not a multiple of 3 (3 vertices per triangle)");
   if (static_cast<int64_t>(xyz.size() / 3) > limits.maxVertices)
-    return err(ErrorCode::TooLarge, std::to_string(xyz.size() / 3) + " vertices, over the limit of " +
-                                        std::to_string(limits.maxVertices));
+    return err(ErrorCode::TooLarge,
+               std::to_string(xyz.size() / 3) + " vertices, over the limit of " + std::to_string(limits.maxVertices));
   if (static_cast<int64_t>(indices.size() / 3) > limits.maxFaces)
-    return err(ErrorCode::TooLarge, std::to_string(indices.size() / 3) + " faces, over the limit of " +
-                                        std::to_string(limits.maxFaces));
+    return err(ErrorCode::TooLarge,
+               std::to_string(indices.size() / 3) + " faces, over the limit of " + std::to_string(limits.maxFaces));
   std::vector<Vec3> positions(xyz.size() / 3);
   for (size_t v = 0; v < positions.size(); ++v) positions[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
   std::vector<Triangle> triangles(indices.size() / 3);

@@ -58,8 +58,8 @@ TEST(BoundaryPolygons, NeedADiskAndStopWhenCancelled) {
   ASSERT_FALSE(closed.ok());
   EXPECT_EQ(closed.error().code, ErrorCode::Topology);
   const TriMesh mesh = makeSample("mountain").value();
-  const auto cancelled =
-      boundaryPolygons(mesh, std::nullopt, {BoundaryKind::Measured}, [](const char*, double) { return false; });
+  const auto cancelled = boundaryPolygons(mesh, std::nullopt, {BoundaryKind::Measured},
+                                          [](const char*, double) { return false; });
   ASSERT_FALSE(cancelled.ok());
   EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled);
 }

@@ -18,11 +18,11 @@ const std::vector<WeightKind> kWeights = {WeightKind::ShapePreserving, WeightKin
 
 TEST(PreferredMap, BijectiveFirstThenLessStretchThenFewerBadTriangles) {
   const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_TRUE(preferredMap(5.0, 0, inf, 0));    // bijective beats not, whatever the numbers
+  EXPECT_TRUE(preferredMap(5.0, 0, inf, 0));  // bijective beats not, whatever the numbers
   EXPECT_FALSE(preferredMap(inf, 0, 5.0, 3));
   EXPECT_TRUE(preferredMap(1.1, 0, 1.2, 0));
   EXPECT_FALSE(preferredMap(1.2, 0, 1.1, 0));
-  EXPECT_FALSE(preferredMap(1.1, 0, 1.1, 0));   // a tie keeps the incumbent
+  EXPECT_FALSE(preferredMap(1.1, 0, 1.1, 0));  // a tie keeps the incumbent
   EXPECT_TRUE(preferredMap(inf, 2, inf, 3));
   EXPECT_FALSE(preferredMap(inf, 3, inf, 3));
 }

@@ -72,7 +72,6 @@ TEST(DefaultSource, IsTheInteriorVertexFarthestFromTheBoundary) {
   EXPECT_EQ(defaultSource(single).error().code, ErrorCode::Topology);
 }
 
-
 /// The textbook version: binary heap of (distance, vertex), rotating around each vertex on the mesh.
 std::vector<double> referenceDijkstra(const TriMesh& mesh, const std::vector<int32_t>& sources) {
   std::vector<double> dist(mesh.numVertices(), std::numeric_limits<double>::infinity());

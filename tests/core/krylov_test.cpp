@@ -53,9 +53,7 @@ TEST(Krylov, MultigridPreconditionedConvergesInFewIterationsOnTheIllConditionedS
 TEST(Krylov, WithoutAPreconditionerTheSameIterationsAreFarFromEnough) {
   const InteriorSystem s = circleSystem(makeHeightField(100));
   std::vector<double> x(s.rhs.size(), 0.0);
-  const TwoColumnPreconditioner identity = [n = s.rhs.size()](const double* b, double* y) {
-    std::copy(b, b + n, y);
-  };
+  const TwoColumnPreconditioner identity = [n = s.rhs.size()](const double* b, double* y) { std::copy(b, b + n, y); };
   auto stats = solveTwoColumns(s.A, identity, s.rhs, x, 1e-10, 15);
   ASSERT_TRUE(stats.ok());
   EXPECT_FALSE(stats.value().converged);

@@ -48,8 +48,8 @@ TEST(TraceStraightestPaths, DirectionsSpanTheCuttingPlaneWithTheBaseNormal) {
     const Vec3 SD = batch.targetPositions[i] - batch.base.origin;
     EXPECT_EQ(norm(batch.targetPositions[i] - position(mesh, targets[i])), 0.0);
     EXPECT_NEAR(norm(t), 1, 1e-12);
-    EXPECT_NEAR(dot(t, n), 0, 1e-12);             // in the base plane
-    EXPECT_GT(dot(t, SD), 0);                     // toward D
+    EXPECT_NEAR(dot(t, n), 0, 1e-12);                        // in the base plane
+    EXPECT_GT(dot(t, SD), 0);                                // toward D
     EXPECT_NEAR(dot(SD, cross(t, n)), 0, 1e-12 * norm(SD));  // D lies in the plane spanned by t and n
     // ... which is the cutting plane the walk follows.
     const CuttingPlane plane = cuttingPlane(batch.base, batch.targetPositions[i]).value();
@@ -61,7 +61,7 @@ TEST(TraceStraightestPaths, DirectionsSpanTheCuttingPlaneWithTheBaseNormal) {
 }
 
 TEST(Summarize, CountsEveryStatusOnceAndAveragesTheReachedLengths) {
-  const TriMesh mesh = testing::lShape(6);           // [0, 12]² without (6, 12]²
+  const TriMesh mesh = testing::lShape(6);                    // [0, 12]² without (6, 12]²
   const SurfacePoint source = SurfacePoint::vertex(13 + 11);  // (11, 1), at the end of one arm
   const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), TraceOptions{false}).value();
   const PathSummary s = summarize(batch);

@@ -25,9 +25,8 @@ void expectConsecutivePointsShareAFace(const TriMesh& mesh, const StraightestPat
   for (size_t i = 0; i + 1 < path.points.size(); ++i) {
     incidentFaces(mesh, path.points[i], a);
     incidentFaces(mesh, path.points[i + 1], b);
-    const bool shared = std::any_of(a.begin(), a.end(), [&](int32_t f) {
-      return std::find(b.begin(), b.end(), f) != b.end();
-    });
+    const bool shared = std::any_of(a.begin(), a.end(),
+                                    [&](int32_t f) { return std::find(b.begin(), b.end(), f) != b.end(); });
     ASSERT_TRUE(shared) << "points " << i << " and " << i + 1 << " share no face";
   }
 }
@@ -186,8 +185,9 @@ TEST(StraightestPathOnASphericalCap, LengthConvergesToGreatCircleArcQuadraticall
 /// Length of the cylinder section (R sinφ, k R sinφ, R cosφ), φ ∈ [0, θ] (an ellipse arc), by Simpson.
 double cylinderSectionLength(double R, double k, double theta) {
   const int n = 2000;
-  auto f = [&](double phi) { return R * std::sqrt(std::cos(phi) * std::cos(phi) * (1 + k * k) +
-                                                  std::sin(phi) * std::sin(phi)); };
+  auto f = [&](double phi) {
+    return R * std::sqrt(std::cos(phi) * std::cos(phi) * (1 + k * k) + std::sin(phi) * std::sin(phi));
+  };
   double s = f(0) + f(theta);
   for (int i = 1; i < n; ++i) s += f(theta * i / n) * (i % 2 ? 4 : 2);
   return s * theta / (3 * n);
@@ -289,7 +289,7 @@ TEST(StraightestPathOnAClosedSphere, EveryPairIsReachedAlongAGreatCircle) {
 TEST(StraightestPathTracer, FailedTracesKeepTheirPartialPath) {
   const TriMesh mesh = testing::lShape(6);
   const int n = 13;
-  StraightestPathTracer tracer(mesh, SurfacePoint::vertex(11 * n + 1));        // (1, 11), upper arm
+  StraightestPathTracer tracer(mesh, SurfacePoint::vertex(11 * n + 1));          // (1, 11), upper arm
   const StraightestPath& path = tracer.trace(SurfacePoint::vertex(3 * n + 11));  // (11, 3): behind the notch
   ASSERT_EQ(path.status, TraceStatus::HitBoundary);
   EXPECT_GE(path.positions.size(), 2u);
@@ -309,8 +309,14 @@ TEST(StraightestPathTracer, DestinationAlongTheBaseNormalIsADegeneratePlane) {
   // is −z by symmetry, and the top apex D lies straight above S: every plane through S perpendicular to
   // the base plane contains D, so none is determined by it.
   const TriMesh mesh = testing::buildOrFail({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
-                                            {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},    // top
-                                             {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});  // bottom
+                                            {{0, 2, 4},
+                                             {2, 1, 4},
+                                             {1, 3, 4},
+                                             {3, 0, 4},  // top
+                                             {2, 0, 5},
+                                             {1, 2, 5},
+                                             {3, 1, 5},
+                                             {0, 3, 5}});  // bottom
   ASSERT_EQ(mesh.summary().eulerCharacteristic, 2);
   const int32_t bottom = 5, top = 4;
   StraightestPathTracer tracer(mesh, SurfacePoint::vertex(bottom));
@@ -439,8 +445,9 @@ TEST(StraightestPathTracer, SourceOnAnEdgeWithThePlaneAlmostAlongTheEdgeLeavesTh
   for (double angle : {0.0, 0.3, 1.1, 2.5})
     for (const Vec3& offset : {Vec3{1000, -500, 250}, Vec3{-3000, 7000, 1}}) {
       const double c = std::cos(angle), s = std::sin(angle);
-      const TriMesh mesh = testing::grid(
-          n, GridPattern::Regular, [&](double x, double y) { return offset + Vec3{c * x - s * y, s * x + c * y, 0}; });
+      const TriMesh mesh = testing::grid(n, GridPattern::Regular, [&](double x, double y) {
+        return offset + Vec3{c * x - s * y, s * x + c * y, 0};
+      });
       for (int i = 2; i <= 5; ++i)
         for (int j = 2; j <= 5; ++j) {
           // The diagonal of square (i, j), in whichever direction the grid splits it, and the vertex one
@@ -457,9 +464,8 @@ TEST(StraightestPathTracer, SourceOnAnEdgeWithThePlaneAlmostAlongTheEdgeLeavesTh
               ASSERT_GE(e, 0);
               const SurfacePoint target = SurfacePoint::edge(e, t);
               const StraightestPath& path = tracer.trace(target);
-              ASSERT_EQ(path.status, TraceStatus::Reached)
-                  << "angle " << angle << ", square " << i << ", " << j << ", t " << t << ": "
-                  << traceStatusName(path.status);
+              ASSERT_EQ(path.status, TraceStatus::Reached) << "angle " << angle << ", square " << i << ", " << j
+                                                           << ", t " << t << ": " << traceStatusName(path.status);
               EXPECT_NEAR(path.length, norm(position(mesh, target) - S), 1e-9);
             }
         }
@@ -469,11 +475,13 @@ TEST(StraightestPathTracer, SourceOnAnEdgeWithThePlaneAlmostAlongTheEdgeLeavesTh
 TEST(StraightestPathTracer, PathsAreScaleInvariant) {
   const TriMesh base = makeSample("face").value();
   const int32_t source = defaultSource(base).value();
-  const PathBatch reference = traceStraightestPaths(base, SurfacePoint::vertex(source), boundaryTargets(base), TraceOptions{false}).value();
+  const PathBatch reference =
+      traceStraightestPaths(base, SurfacePoint::vertex(source), boundaryTargets(base), TraceOptions{false}).value();
   for (double s : {1e-6, 1e6}) {
     const TriMesh mesh = testing::scaled(base, s);
     EXPECT_EQ(defaultSource(mesh).value(), source);
-    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), TraceOptions{false}).value();
+    const PathBatch batch =
+        traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh), TraceOptions{false}).value();
     ASSERT_EQ(batch.status.size(), reference.status.size());
     for (size_t i = 0; i < batch.status.size(); ++i) {
       EXPECT_EQ(batch.status[i], reference.status[i]) << "scale " << s << " path " << i;

@@ -221,8 +221,7 @@ TEST(Validation, RejectsBowtieVertex) {
 TEST(Validation, RejectsTwoClosedFansSharingAVertex) {
   // Two tetrahedra glued at one vertex: every edge is manifold, the shared vertex is not.
   std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
-  std::vector<Triangle> t{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2},
-                          {0, 4, 5}, {0, 6, 4}, {4, 6, 5}, {0, 5, 6}};
+  std::vector<Triangle> t{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 4, 5}, {0, 6, 4}, {4, 6, 5}, {0, 5, 6}};
   EXPECT_EQ(buildError(p, t), ErrorCode::NonManifoldVertex);
 }
 

@@ -35,9 +35,9 @@ using namespace straightest;
 }
 
 // CHECK(condition, printf-style message...): aborts (a libFuzzer crash) with the message.
-#define FUZZ_CHECK(cond, ...)                                                     \
-  do {                                                                            \
-    if (!(cond)) ::fuzz::fail(__FILE__, __LINE__, #cond, __VA_ARGS__);            \
+#define FUZZ_CHECK(cond, ...)                                          \
+  do {                                                                 \
+    if (!(cond)) ::fuzz::fail(__FILE__, __LINE__, #cond, __VA_ARGS__); \
   } while (0)
 
 /// Every error carries a known category and a non-empty message.
@@ -316,7 +316,10 @@ inline Verdict judge(const std::vector<Vec3>& P, const std::vector<Triangle>& T)
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int32_t x) {  // union by rank keeps the trees shallow; no compression needed
     uint8_t p = 0;
-    while (parent[x] != x) { p ^= parity[x]; x = parent[x]; }
+    while (parent[x] != x) {
+      p ^= parity[x];
+      x = parent[x];
+    }
     return std::make_pair(x, p);
   };
   auto tailOf = [&](int32_t h) { return T[h / 3][h % 3]; };

@@ -48,7 +48,6 @@ ObjLines readObjLines(std::string_view text) {
   return out;
 }
 
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -70,8 +69,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       FUZZ_CHECK(end == tokens[k].c_str() + tokens[k].size() && std::isfinite(x),
                  "accepted v line %zu whose coordinate %d is '%s', not a finite number (read as %.17g)", v, k,
                  tokens[k].c_str(), s.positions[v][k]);
-      FUZZ_CHECK(x == s.positions[v][k],
-                 "v line %zu coordinate %d is '%s' but was read as %.17g", v, k, tokens[k].c_str(), s.positions[v][k]);
+      FUZZ_CHECK(x == s.positions[v][k], "v line %zu coordinate %d is '%s' but was read as %.17g", v, k,
+                 tokens[k].c_str(), s.positions[v][k]);
     }
   }
   const long double nv = static_cast<long double>(s.positions.size());
@@ -80,8 +79,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     triangles += tokens.size() >= 2 ? tokens.size() - 2 : 0;
     for (const std::string& t : tokens) {
       const long double index = std::strtold(t.c_str(), nullptr);  // the vertex part, before any '/'
-      FUZZ_CHECK(std::abs(index) >= 1 && std::abs(index) <= nv, "accepted face index '%s' with %zu vertices",
-                 t.c_str(), s.positions.size());
+      FUZZ_CHECK(std::abs(index) >= 1 && std::abs(index) <= nv, "accepted face index '%s' with %zu vertices", t.c_str(),
+                 s.positions.size());
     }
   }
   FUZZ_CHECK(triangles == s.triangles.size(), "f lines make %zu triangles, the soup has %zu", triangles,

@@ -23,8 +23,9 @@ namespace {
 
 void checkMetrics(const TriMesh& m, const StretchMetrics& s, const char* what) {
   FUZZ_CHECK(s.flipped >= 0 && s.degenerate >= 0 && s.flipped + s.degenerate <= m.numFaces(), "%s: counts", what);
-  FUZZ_CHECK(s.bijective == (s.flipped == 0 && s.degenerate == 0), "%s: bijective=%d with %lld flipped, %lld degenerate",
-             what, s.bijective, (long long)s.flipped, (long long)s.degenerate);
+  FUZZ_CHECK(s.bijective == (s.flipped == 0 && s.degenerate == 0),
+             "%s: bijective=%d with %lld flipped, %lld degenerate", what, s.bijective, (long long)s.flipped,
+             (long long)s.degenerate);
   FUZZ_CHECK(std::isfinite(s.l2) == s.bijective && std::isfinite(s.linf) == s.bijective,
              "%s: stretch L2 %g / Linf %g but bijective=%d", what, s.l2, s.linf, s.bijective);
   if (s.bijective) {
@@ -86,8 +87,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const TriMesh mesh = fuzz::transformAndBuild(in, gen);
 
   ParamOptions options;
-  static const std::optional<BoundaryKind> boundaries[] = {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Square,
-                                              std::nullopt};
+  static const std::optional<BoundaryKind> boundaries[] = {BoundaryKind::Measured, BoundaryKind::Circle,
+                                                           BoundaryKind::Square, std::nullopt};
   static const WeightKind weights[] = {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Uniform,
                                        WeightKind::Cotan};
   options.boundary = boundaries[in.ConsumeIntegralInRange(0, 3)];
@@ -126,8 +127,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                errorCodeName(c), result.error().message.c_str());
     FUZZ_CHECK(!disk || c != ErrorCode::Topology || options.boundary == BoundaryKind::Measured ||
                    result.error().message.find("interior") != std::string::npos,
-               "disk refused with a topology error (%s boundary): %s", options.boundary == std::nullopt
-                   ? "auto" : "fixed", result.error().message.c_str());
+               "disk refused with a topology error (%s boundary): %s",
+               options.boundary == std::nullopt ? "auto" : "fixed", result.error().message.c_str());
     return 0;
   }
   FUZZ_CHECK(disk, "parameterize accepted a mesh that is not a disk");
@@ -170,8 +171,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         v += W.weights.value[k] * p.uv[W.weights.col[k]][1];
       }
       const Vec2& x = p.uv[W.rows[r]];
-      FUZZ_CHECK(std::hypot(x[0] - u, x[1] - v) <= 1e-8, "%s weights, %s solver: vertex %d is %.3g from the average of its neighbours",
-                 weightName, options.solver == LinearSolver::SparseLU ? "LU" : "BiCGSTAB", W.rows[r],
+      FUZZ_CHECK(std::hypot(x[0] - u, x[1] - v) <= 1e-8,
+                 "%s weights, %s solver: vertex %d is %.3g from the average of its neighbours", weightName,
+                 options.solver == LinearSolver::SparseLU ? "LU" : "BiCGSTAB", W.rows[r],
                  std::hypot(x[0] - u, x[1] - v));
     }
     for (const BoundaryCandidate& c : p.candidates)
@@ -187,7 +189,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::vector<Vec2> uv = p.uv;
   const int moves = in.ConsumeIntegralInRange(0, 3);
   for (int k = 0; k < moves; ++k)
-    uv[in.ConsumeIntegralInRange<int32_t>(0, V - 1)] = {in.ConsumeProbability<double>(), in.ConsumeProbability<double>()};
+    uv[in.ConsumeIntegralInRange<int32_t>(0, V - 1)] = {in.ConsumeProbability<double>(),
+                                                        in.ConsumeProbability<double>()};
   checkMetrics(mesh, textureStretch(mesh, uv), "textureStretch");
   return 0;
 }

@@ -29,17 +29,15 @@ inline void checkRoundTrip(const TriMesh& m, const Expected<TriMesh>& again, con
   FUZZ_CHECK(again.ok(), "%s round trip failed: %s: %s", what, errorCodeName(again.error().code),
              again.error().message.c_str());
   const TriMesh& r = again.value();
-  FUZZ_CHECK(r.numVertices() == m.numVertices() && r.numFaces() == m.numFaces(), "%s round trip: counts changed",
-             what);
-  FUZZ_CHECK(r.summary().reorientedFaces == 0, "%s round trip flipped %lld faces of a consistently oriented mesh",
-             what, (long long)r.summary().reorientedFaces);
+  FUZZ_CHECK(r.numVertices() == m.numVertices() && r.numFaces() == m.numFaces(), "%s round trip: counts changed", what);
+  FUZZ_CHECK(r.summary().reorientedFaces == 0, "%s round trip flipped %lld faces of a consistently oriented mesh", what,
+             (long long)r.summary().reorientedFaces);
   for (int32_t f = 0; f < m.numFaces(); ++f)
     FUZZ_CHECK(r.triangle(f) == m.triangle(f), "%s round trip: face %d changed", what, f);
   for (int32_t v = 0; v < m.numVertices(); ++v) {
     const Vec3 &a = m.position(v), &b = r.position(v);
     for (int k = 0; k < 3; ++k) {
-      FUZZ_CHECK(a[k] == b[k], "%s round trip: vertex %d coordinate %d %.17g -> %.17g", what, v, k,
-                 a[k], b[k]);
+      FUZZ_CHECK(a[k] == b[k], "%s round trip: vertex %d coordinate %d %.17g -> %.17g", what, v, k, a[k], b[k]);
     }
   }
   FUZZ_CHECK(r.summary().eulerCharacteristic == m.summary().eulerCharacteristic &&

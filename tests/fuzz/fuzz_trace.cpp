@@ -61,9 +61,10 @@ void dump(const TriMesh& m, const StraightestPathTracer& tracer, const SurfacePo
   describe(m, "source", tracer.source());
   describe(m, "target", dst);
   const Vec3 n = tracer.base().normal;
-  std::fprintf(stderr, "base normal (%.17g, %.17g, %.17g)%s\n", n.x, n.y, n.z, tracer.base().fallback ? " (fallback)" : "");
-  std::fprintf(stderr, "status %s, length %.17g, %lld faces crossed, reversed %d, %zu points:\n", traceStatusName(p.status),
-               p.length, (long long)p.facesCrossed, p.reversed, p.points.size());
+  std::fprintf(stderr, "base normal (%.17g, %.17g, %.17g)%s\n", n.x, n.y, n.z,
+               tracer.base().fallback ? " (fallback)" : "");
+  std::fprintf(stderr, "status %s, length %.17g, %lld faces crossed, reversed %d, %zu points:\n",
+               traceStatusName(p.status), p.length, (long long)p.facesCrossed, p.reversed, p.points.size());
   for (size_t i = 0; i < p.points.size(); ++i) describe(m, "  point", p.points[i]);
 }
 
@@ -82,13 +83,13 @@ void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const Surf
   const int64_t maxSteps = 2 * static_cast<int64_t>(m.numFaces()) + m.numVertices() + 16;
   FUZZ_CHECK(p.facesCrossed >= 0 && p.facesCrossed <= maxSteps + 1, "%s: facesCrossed %lld over the bound %lld", name,
              (long long)p.facesCrossed, (long long)maxSteps + 1);
-  FUZZ_CHECK(p.facesCrossed == static_cast<int64_t>(p.points.size()) - 1, "%s: facesCrossed %lld but %zu points",
-             name, (long long)p.facesCrossed, p.points.size());
+  FUZZ_CHECK(p.facesCrossed == static_cast<int64_t>(p.points.size()) - 1, "%s: facesCrossed %lld but %zu points", name,
+             (long long)p.facesCrossed, p.points.size());
   double sum = 0;
   for (size_t i = 0; i < p.points.size(); ++i) {
     auto valid = validateSurfacePoint(m, p.points[i]);
-    FUZZ_CHECK(valid.ok(), "%s: path point %zu (%s %d) invalid: %s", name, i, kindName(p.points[i]),
-               p.points[i].index, valid.ok() ? "" : valid.error().message.c_str());
+    FUZZ_CHECK(valid.ok(), "%s: path point %zu (%s %d) invalid: %s", name, i, kindName(p.points[i]), p.points[i].index,
+               valid.ok() ? "" : valid.error().message.c_str());
     FUZZ_CHECK(norm(position(m, p.points[i]) - p.positions[i]) <= 1e-9 * diag,
                "%s: point %zu's position disagrees with its surface point", name, i);
     if (i > 0) {
@@ -98,8 +99,8 @@ void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const Surf
       sum += norm(p.positions[i] - p.positions[i - 1]);
     }
   }
-  FUZZ_CHECK(std::abs(sum - p.length) <= 1e-9 * (sum + diag), "%s: length %.17g, segments sum to %.17g", name,
-             p.length, sum);
+  FUZZ_CHECK(std::abs(sum - p.length) <= 1e-9 * (sum + diag), "%s: length %.17g, segments sum to %.17g", name, p.length,
+             sum);
   const auto plane = cuttingPlane(tracer.base(), D);
   const bool samePoint = norm(D - S) <= kOnPlaneRel * diag;  // generous: the tracer uses the mean edge
   if (p.status == TraceStatus::DegeneratePlane) {
@@ -239,8 +240,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
              "lengths-only batch sizes");
   for (size_t i = 0; i < targets.size(); ++i) {
     const Copy& c = paths[i];
-    FUZZ_CHECK(lengths.status[i] == c.status && lengths.length[i] == c.length && lengths.facesCrossed[i] == c.facesCrossed &&
-                   (lengths.reversed[i] != 0) == c.reversed,
+    FUZZ_CHECK(lengths.status[i] == c.status && lengths.length[i] == c.length &&
+                   lengths.facesCrossed[i] == c.facesCrossed && (lengths.reversed[i] != 0) == c.reversed,
                "lengths-only batch path %zu differs from the single trace (%s vs %s, length %.17g vs %.17g)", i,
                traceStatusName(lengths.status[i]), traceStatusName(c.status), lengths.length[i], c.length);
   }

@@ -41,9 +41,9 @@ double specialValue(FuzzedDataProvider& in) {
 
 double coordinate(FuzzedDataProvider& in, int style) {
   switch (style) {
-    case 0: return in.ConsumeIntegralInRange<int>(0, 3);                    // coincident, collinear
-    case 1: return in.ConsumeIntegralInRange<int>(-100, 100) * 0.01;       // a fine lattice
-    case 2: return in.ConsumeFloatingPoint<double>();                      // anything finite
+    case 0: return in.ConsumeIntegralInRange<int>(0, 3);              // coincident, collinear
+    case 1: return in.ConsumeIntegralInRange<int>(-100, 100) * 0.01;  // a fine lattice
+    case 2: return in.ConsumeFloatingPoint<double>();                 // anything finite
     default: return in.ConsumeBool() ? specialValue(in) : in.ConsumeIntegralInRange<int>(0, 3);
   }
 }
@@ -121,12 +121,13 @@ void baseMesh(FuzzedDataProvider& in, std::vector<Vec3>& P, std::vector<Triangle
     const int32_t nv = static_cast<int32_t>(P.size());
     switch (in.ConsumeIntegralInRange(0, 6)) {
       case 0:
-      case 1: std::swap(T[f][1], T[f][2]); break;                       // flip (repairable)
+      case 1: std::swap(T[f][1], T[f][2]); break;                          // flip (repairable)
       case 2: T.erase(T.begin() + static_cast<std::ptrdiff_t>(f)); break;  // delete
-      case 3: T.push_back(T[f]); break;                                  // duplicate
+      case 3: T.push_back(T[f]); break;                                    // duplicate
       case 4: T[f][in.ConsumeIntegralInRange(0, 2)] = in.ConsumeIntegralInRange<int32_t>(0, nv - 1); break;
-      case 5: T.push_back({in.ConsumeIntegralInRange<int32_t>(0, nv - 1), in.ConsumeIntegralInRange<int32_t>(0, nv - 1),
-                           in.ConsumeIntegralInRange<int32_t>(0, nv - 1)});
+      case 5:
+        T.push_back({in.ConsumeIntegralInRange<int32_t>(0, nv - 1), in.ConsumeIntegralInRange<int32_t>(0, nv - 1),
+                     in.ConsumeIntegralInRange<int32_t>(0, nv - 1)});
         break;
       default: P.push_back({in.ConsumeProbability<double>(), 0, 0}); break;  // an unreferenced vertex
     }

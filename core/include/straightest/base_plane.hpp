@@ -25,8 +25,8 @@ inline constexpr double kBaseNormalCancel = 0.05;
 inline constexpr double kCuttingPlaneMinSine = 1e-8;
 
 struct BasePlane {
-  Vec3 origin;      // S
-  Vec3 normal;      // unit
+  Vec3 origin;            // S
+  Vec3 normal;            // unit
   bool fallback = false;  // true when the area-weighted normal at S was used instead of virtual faces
   std::string note;       // why, when fallback (or "closed mesh")
 };

@@ -6,12 +6,12 @@
 //    distance S → b_i. A failed
 //    trace gets the edge-graph (Dijkstra) distance from S instead and is counted as a fallback.
 //    Then the polygon is made convex: a point strictly inside the convex hull moves radially outward
-//    onto the hull (a hull corner turning by a sine below 1e-9 counts as straight). Where an interior mesh edge joining two boundary vertices (a chord) would then lie
-//    on one straight hull edge (its triangles collapse: the map could not be bijective; Floater's
-//    condition for weakly convex boundaries), the points on that edge are lifted
-//    onto a shallow parabola over it (sagitta ≤ kBulge · edge length / 4, limited by the hull's turning
-//    angles at both ends), which keeps the polygon convex and makes it strictly convex there. Edges
-//    without such a triangle stay straight, so a flat convex patch reproduces itself exactly.
+//    onto the hull (a hull corner turning by a sine below 1e-9 counts as straight). Where an interior mesh edge joining
+//    two boundary vertices (a chord) would then lie on one straight hull edge (its triangles collapse: the map could
+//    not be bijective; Floater's condition for weakly convex boundaries), the points on that edge are lifted onto a
+//    shallow parabola over it (sagitta ≤ kBulge · edge length / 4, limited by the hull's turning angles at both ends),
+//    which keeps the polygon convex and makes it strictly convex there. Edges without such a triangle stay straight, so
+//    a flat convex patch reproduces itself exactly.
 //  - circle: the unit circle, by cumulative 3D boundary edge length.
 //  - square: the perimeter of the unit square by the same arc length, the loop's first vertex at a
 //    corner; a side is bulged like above only where an all-boundary triangle would collapse.
@@ -28,7 +28,7 @@
 
 namespace straightest {
 
-inline constexpr double kBulge = 0.05;  // end slope of the parabola (sagitta = kBulge · L / 4)
+inline constexpr double kBulge = 0.05;         // end slope of the parabola (sagitta = kBulge · L / 4)
 inline constexpr double kMinAngleStep = 0.01;  // measured: least polar-angle step, as a fraction of the mean
 
 enum class BoundaryKind { Measured, Circle, Square };
@@ -36,10 +36,10 @@ const char* boundaryKindName(BoundaryKind k);
 
 struct BoundaryMap {
   BoundaryKind kind = BoundaryKind::Circle;
-  std::vector<int32_t> loop;      // boundary vertices in order
-  std::vector<Vec2> polygon;      // their positions in the plane
-  int64_t fallbacks = 0;          // measured: traces that failed and used the Dijkstra radius
-  int64_t movedToHull = 0;        // measured: points moved outward by the convexification
+  std::vector<int32_t> loop;  // boundary vertices in order
+  std::vector<Vec2> polygon;  // their positions in the plane
+  int64_t fallbacks = 0;      // measured: traces that failed and used the Dijkstra radius
+  int64_t movedToHull = 0;    // measured: points moved outward by the convexification
 };
 
 /// Requires a disk (checked by the caller). `source` must be an interior surface point for measured.
@@ -65,8 +65,8 @@ std::vector<std::array<int32_t, 2>> boundaryChords(const TriMesh& mesh, const st
 
 /// Moves points strictly inside the convex hull of `points` radially (from the origin) onto the hull,
 /// then bulges the hull edges along which one of `chords` (pairs of indices into points) would lie (its
-/// triangles would collapse; see the file comment). The origin must be strictly inside the hull; returns the number of points moved
-/// onto the hull, or -1 when the origin is not inside.
+/// triangles would collapse; see the file comment). The origin must be strictly inside the hull; returns the number of
+/// points moved onto the hull, or -1 when the origin is not inside.
 int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 2>>& chords);
 
 }  // namespace straightest

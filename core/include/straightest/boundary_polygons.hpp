@@ -13,9 +13,9 @@ namespace straightest {
 
 struct BoundaryPolygon {
   BoundaryKind kind = BoundaryKind::Measured;
-  std::vector<int32_t> loop;     // the boundary vertices in order
-  std::vector<Vec2> polygon;     // one point per loop vertex, in [0, 1]² (empty when error)
-  std::optional<Error> error;    // why this kind has no polygon (e.g. measured with a boundary source)
+  std::vector<int32_t> loop;   // the boundary vertices in order
+  std::vector<Vec2> polygon;   // one point per loop vertex, in [0, 1]² (empty when error)
+  std::optional<Error> error;  // why this kind has no polygon (e.g. measured with a boundary source)
 };
 
 /// One entry per kind, in the given order. The mesh must be a disk (else a Topology error for the

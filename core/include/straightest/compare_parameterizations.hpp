@@ -15,8 +15,8 @@ struct ComparisonRow {
   double l2 = 0, linf = 0;  // +inf when not bijective
   int64_t flipped = 0, degenerate = 0;
   bool bijective = false;
-  double timeMs = 0;            // wall time of this cell's parameterization (what the table compares)
-  std::optional<Error> error;   // this cell failed (no numbers); e.g. measured with no interior source
+  double timeMs = 0;           // wall time of this cell's parameterization (what the table compares)
+  std::optional<Error> error;  // this cell failed (no numbers); e.g. measured with no interior source
 };
 
 struct Comparison {

@@ -25,22 +25,29 @@ struct EnumName {
 };
 
 inline constexpr EnumName<TraceStatus> kTraceStatusNames[] = {
-    {TraceStatus::Reached, "reached"},        {TraceStatus::HitBoundary, "hit_boundary"},
-    {TraceStatus::ReturnedToSource, "returned_to_source"}, {TraceStatus::Loop, "loop"},
-    {TraceStatus::StepLimit, "step_limit"},   {TraceStatus::NoExit, "no_exit"},
+    {TraceStatus::Reached, "reached"},
+    {TraceStatus::HitBoundary, "hit_boundary"},
+    {TraceStatus::ReturnedToSource, "returned_to_source"},
+    {TraceStatus::Loop, "loop"},
+    {TraceStatus::StepLimit, "step_limit"},
+    {TraceStatus::NoExit, "no_exit"},
     {TraceStatus::DegeneratePlane, "degenerate_plane"},
 };
-inline constexpr EnumName<BoundaryKind> kBoundaryKindNames[] = {
-    {BoundaryKind::Measured, "measured"}, {BoundaryKind::Circle, "circle"}, {BoundaryKind::Square, "square"}};
-inline constexpr EnumName<WeightKind> kWeightKindNames[] = {
-    {WeightKind::ShapePreserving, "shape-preserving"}, {WeightKind::MeanValue, "mean-value"},
-    {WeightKind::Cotan, "cotan"}, {WeightKind::Uniform, "uniform"}};
-inline constexpr EnumName<LinearSolver> kLinearSolverNames[] = {
-    {LinearSolver::Multigrid, "multigrid"}, {LinearSolver::SparseLU, "lu"}, {LinearSolver::BiCGSTAB, "bicgstab"}};
-inline constexpr EnumName<DistanceMethod> kDistanceMethodNames[] = {
-    {DistanceMethod::Heat, "heat"}, {DistanceMethod::Dijkstra, "dijkstra"}};
-inline constexpr EnumName<MeshFormat> kMeshFormatNames[] = {
-    {MeshFormat::Obj, "obj"}, {MeshFormat::Off, "off"}, {MeshFormat::Auto, "auto"}};
+inline constexpr EnumName<BoundaryKind> kBoundaryKindNames[] = {{BoundaryKind::Measured, "measured"},
+                                                                {BoundaryKind::Circle, "circle"},
+                                                                {BoundaryKind::Square, "square"}};
+inline constexpr EnumName<WeightKind> kWeightKindNames[] = {{WeightKind::ShapePreserving, "shape-preserving"},
+                                                            {WeightKind::MeanValue, "mean-value"},
+                                                            {WeightKind::Cotan, "cotan"},
+                                                            {WeightKind::Uniform, "uniform"}};
+inline constexpr EnumName<LinearSolver> kLinearSolverNames[] = {{LinearSolver::Multigrid, "multigrid"},
+                                                                {LinearSolver::SparseLU, "lu"},
+                                                                {LinearSolver::BiCGSTAB, "bicgstab"}};
+inline constexpr EnumName<DistanceMethod> kDistanceMethodNames[] = {{DistanceMethod::Heat, "heat"},
+                                                                    {DistanceMethod::Dijkstra, "dijkstra"}};
+inline constexpr EnumName<MeshFormat> kMeshFormatNames[] = {{MeshFormat::Obj, "obj"},
+                                                            {MeshFormat::Off, "off"},
+                                                            {MeshFormat::Auto, "auto"}};
 
 /// The word that stands for "let the library choose" wherever a choice is optional (source, boundary).
 inline constexpr const char* kAutoName = "auto";
@@ -69,8 +76,7 @@ std::vector<std::string> namesOf(const EnumName<E> (&table)[N], const char* extr
 }
 
 /// "a, b or c": the choices as an error message or usage text lists them.
-std::string choiceList(const std::vector<std::string>& names, const char* separator = ", ",
-                       const char* last = " or ");
+std::string choiceList(const std::vector<std::string>& names, const char* separator = ", ", const char* last = " or ");
 
 /// The name → value step of every parse function: InvalidArgument "unknown <what> '<name>' (use …)".
 template <class E, size_t N>

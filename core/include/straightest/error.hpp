@@ -46,8 +46,8 @@ struct Error {
 template <class T>
 class Expected {
  public:
-  Expected(T value) : v_(std::move(value)) {}             // NOLINT(implicit)
-  Expected(Error error) : v_(std::move(error)) {}         // NOLINT(implicit)
+  Expected(T value) : v_(std::move(value)) {}      // NOLINT(implicit)
+  Expected(Error error) : v_(std::move(error)) {}  // NOLINT(implicit)
   bool ok() const { return v_.index() == 0; }
   explicit operator bool() const { return ok(); }
   T& value() & { return std::get<0>(v_); }

@@ -30,7 +30,7 @@ Expected<std::optional<BoundaryKind>> parseBoundaryChoice(const std::string& nam
 Expected<WeightKind> parseWeightKind(const std::string& name);
 
 struct ParamOptions {
-  std::optional<SurfacePoint> source;                       // nullopt: the default source
+  std::optional<SurfacePoint> source;                             // nullopt: the default source
   std::optional<BoundaryKind> boundary = BoundaryKind::Measured;  // nullopt: auto
   WeightKind weights = WeightKind::ShapePreserving;
   LinearSolver solver = LinearSolver::Multigrid;
@@ -59,9 +59,9 @@ struct Parameterization {
   std::vector<Vec2> boundaryPolygon;  // the chosen boundary, in the same [0, 1]² frame as uv
   std::vector<int32_t> boundaryLoop;
   StretchMetrics metrics;
-  int64_t fallbacks = 0;              // failed traces that used the Dijkstra radius (measured)
-  int64_t weightFallbacks = 0;        // vertices whose weights fell back to uniform
-  double residual = 0;                // relative residual of the linear solve
+  int64_t fallbacks = 0;                      // failed traces that used the Dijkstra radius (measured)
+  int64_t weightFallbacks = 0;                // vertices whose weights fell back to uniform
+  double residual = 0;                        // relative residual of the linear solve
   std::vector<BoundaryCandidate> candidates;  // auto: every boundary tried
 };
 

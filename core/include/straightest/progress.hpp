@@ -55,9 +55,7 @@ class Progress {
 };
 
 /// Calls `progress`; true means "go on".
-inline bool report(const Progress& progress, const char* stage, double fraction) {
-  return progress(stage, fraction);
-}
+inline bool report(const Progress& progress, const char* stage, double fraction) { return progress(stage, fraction); }
 
 /// The error every cancelled operation returns: "<what> cancelled".
 inline Error cancelledError(const std::string& what) { return Error{ErrorCode::Cancelled, what + " cancelled"}; }

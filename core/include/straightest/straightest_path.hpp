@@ -44,16 +44,16 @@ const char* traceStatusName(TraceStatus s);
 inline constexpr int kTraceStatusCount = 7;
 
 struct TraceOptions {
-  bool keepPoints = true;   // store the path's surface points and positions
-  int64_t maxSteps = 0;     // 0: 2·faces + vertices + 16 (more than any simple walk can take)
+  bool keepPoints = true;      // store the path's surface points and positions
+  int64_t maxSteps = 0;        // 0: 2·faces + vertices + 16 (more than any simple walk can take)
   Timings* timings = nullptr;  // batch: receives "prepare" (base plane, tables) and "trace" (all walks)
 };
 
 struct StraightestPath {
   TraceStatus status = TraceStatus::NoExit;
-  double length = 0;          // sum of segment lengths (of the partial path when not reached)
-  int64_t facesCrossed = 0;   // segments walked (each lies in one face or along one edge)
-  bool reversed = false;      // reached by the second walk (leaving on the −t side)
+  double length = 0;                 // sum of segment lengths (of the partial path when not reached)
+  int64_t facesCrossed = 0;          // segments walked (each lies in one face or along one edge)
+  bool reversed = false;             // reached by the second walk (leaving on the −t side)
   std::vector<SurfacePoint> points;  // S, crossings..., D (when keepPoints)
   std::vector<Vec3> positions;       // their 3D positions
 };

@@ -23,8 +23,8 @@ namespace straightest {
 struct SurfacePoint {
   enum class Kind : uint8_t { Vertex, Edge, Face };
   Kind kind = Kind::Vertex;
-  int32_t index = 0;                  // vertex, halfedge or face
-  double t = 0;                       // edge parameter (Kind::Edge)
+  int32_t index = 0;                    // vertex, halfedge or face
+  double t = 0;                         // edge parameter (Kind::Edge)
   std::array<double, 3> bary{1, 0, 0};  // barycentric coordinates (Kind::Face)
 
   static SurfacePoint vertex(int32_t v) { return {Kind::Vertex, v, 0, {1, 0, 0}}; }

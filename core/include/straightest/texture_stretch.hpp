@@ -17,12 +17,12 @@ namespace straightest {
 inline constexpr double kDegenerateUV = 1e-12;
 
 struct StretchMetrics {
-  double l2 = 0, linf = 0;             // +inf when not bijective
+  double l2 = 0, linf = 0;  // +inf when not bijective
   int64_t flipped = 0, degenerate = 0;
   bool bijective = true;
   double angleDistortionMean = 1, angleDistortionMax = 1;
   double areaDistortionMean = 1, areaDistortionMax = 1;
-  std::vector<float> faceStretch;      // per-face L2 stretch (normalized like the mesh L2); inf if flipped/degenerate
+  std::vector<float> faceStretch;  // per-face L2 stretch (normalized like the mesh L2); inf if flipped/degenerate
 };
 
 StretchMetrics textureStretch(const TriMesh& mesh, const std::vector<Vec2>& uv);

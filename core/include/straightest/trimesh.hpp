@@ -138,8 +138,8 @@ class TriMesh {
 /// A range over the one-ring of a vertex, rotating counter-clockwise with h → twin(prev(h))
 /// (TriMesh::nextOutgoing) from vertexHalfedge(v). For a boundary vertex that is the outgoing boundary
 /// halfedge, so the rotation visits the whole fan and stops where it meets the boundary again
-/// (twin = −1); for an interior vertex it stops when it is back at the start. Each step is one twin look-up; nothing is allocated.
-/// (The rotation always ends: twin∘prev is one-to-one, so it can only come back to its start or stop.)
+/// (twin = −1); for an interior vertex it stops when it is back at the start. Each step is one twin look-up; nothing is
+/// allocated. (The rotation always ends: twin∘prev is one-to-one, so it can only come back to its start or stop.)
 template <RingItem Item>
 class VertexRing {
  public:
@@ -197,9 +197,7 @@ class VertexRing {
   int32_t first_;
 };
 
-inline VertexRing<RingItem::OutgoingHalfedge> TriMesh::outgoingHalfedges(int32_t v) const {
-  return {*this, v};
-}
+inline VertexRing<RingItem::OutgoingHalfedge> TriMesh::outgoingHalfedges(int32_t v) const { return {*this, v}; }
 inline VertexRing<RingItem::Face> TriMesh::vertexFaces(int32_t v) const { return {*this, v}; }
 inline VertexRing<RingItem::Neighbour> TriMesh::vertexNeighbours(int32_t v) const { return {*this, v}; }
 

@@ -23,9 +23,21 @@ struct Vec2 {
   constexpr Vec2 operator-() const { return {-x, -y}; }
   constexpr Vec2 operator*(double s) const { return {x * s, y * s}; }
   constexpr Vec2 operator/(double s) const { return {x / s, y / s}; }
-  Vec2& operator+=(const Vec2& o) { x += o.x; y += o.y; return *this; }
-  Vec2& operator-=(const Vec2& o) { x -= o.x; y -= o.y; return *this; }
-  Vec2& operator*=(double s) { x *= s; y *= s; return *this; }
+  Vec2& operator+=(const Vec2& o) {
+    x += o.x;
+    y += o.y;
+    return *this;
+  }
+  Vec2& operator-=(const Vec2& o) {
+    x -= o.x;
+    y -= o.y;
+    return *this;
+  }
+  Vec2& operator*=(double s) {
+    x *= s;
+    y *= s;
+    return *this;
+  }
   constexpr bool operator==(const Vec2& o) const { return x == o.x && y == o.y; }
   constexpr bool operator!=(const Vec2& o) const { return !(*this == o); }
   double& operator[](int i) { return i == 0 ? x : y; }
@@ -51,9 +63,24 @@ struct Vec3 {
   constexpr Vec3 operator-() const { return {-x, -y, -z}; }
   constexpr Vec3 operator*(double s) const { return {x * s, y * s, z * s}; }
   constexpr Vec3 operator/(double s) const { return {x / s, y / s, z / s}; }
-  Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
-  Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
-  Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
+  Vec3& operator+=(const Vec3& o) {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  Vec3& operator-=(const Vec3& o) {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
+  Vec3& operator*=(double s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
   double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
 
