@@ -62,23 +62,31 @@ inline TriMesh scaled(const TriMesh& mesh, double s) {
   return buildOrFail(p, mesh.triangles());
 }
 
-/// A flat 9 × 9 vertex grid (8 × 8 cells) without the cells listed, as (column, row) of their lower-left corner.
-inline TriMesh gridWithout(const std::vector<std::array<int, 2>>& removed) {
-  const int n = 9;
+/// A flat n × n vertex grid of unit cells, keeping the cells (column, row of the lower-left corner) for
+/// which keep(i, j) holds; each cell split along its rising diagonal.
+template <class Keep>
+TriMesh gridOfCells(int n, Keep keep) {
   std::vector<Vec3> p;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) p.push_back({double(i), double(j), 0});
   std::vector<Triangle> t;
   for (int j = 0; j + 1 < n; ++j)
     for (int i = 0; i + 1 < n; ++i) {
-      bool skip = false;
-      for (const auto& c : removed) skip |= c[0] == i && c[1] == j;
-      if (skip) continue;
+      if (!keep(i, j)) continue;
       const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
       t.push_back({a, b, d});
       t.push_back({a, d, c});
     }
   return buildOrFail(std::move(p), std::move(t));
+}
+
+/// A flat 9 × 9 vertex grid (8 × 8 cells) without the cells listed, as (column, row) of their lower-left corner.
+inline TriMesh gridWithout(const std::vector<std::array<int, 2>>& removed) {
+  return gridOfCells(9, [&](int i, int j) {
+    for (const auto& c : removed)
+      if (c[0] == i && c[1] == j) return false;
+    return true;
+  });
 }
 
 /// The halfedge from vertex a to vertex b, or -1 when no face has that edge in that direction.
@@ -90,19 +98,7 @@ inline int32_t findHalfedge(const TriMesh& mesh, int32_t a, int32_t b) {
 
 /// An L-shaped flat domain: the grid [0, 2m]² without the square (m, 2m]² (m cells a side).
 inline TriMesh lShape(int m) {
-  const int n = 2 * m + 1;
-  std::vector<Vec3> p;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) p.push_back({double(i), double(j), 0});
-  std::vector<Triangle> t;
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      if (i >= m && j >= m) continue;  // the cut-out quadrant
-      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-      t.push_back({a, b, d});
-      t.push_back({a, d, c});
-    }
-  return buildOrFail(std::move(p), std::move(t));
+  return gridOfCells(2 * m + 1, [m](int i, int j) { return i < m || j < m; });  // without the cut-out quadrant
 }
 
 /// An icosphere of radius 1 (subdivisions: 0 → 12 vertices, 3 → 642).

@@ -12,6 +12,7 @@
 //   points(name, std::vector<SurfacePoint>), textColumn(name, std::vector<std::string>) — one entry per
 //                                       path (the CLI leaves these out and writes one row per path)
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -148,18 +149,24 @@ void visitFields(const Parameterization& p, V& v) {
   v.list("candidates", p.candidates);
 }
 
+/// "error" and "category" of a part that may have failed: the error's, or null for both.
+template <class V>
+void visitOptionalError(const std::optional<Error>& error, V& v) {
+  if (error) {
+    visitFields(*error, v);
+  } else {
+    v.nothing("error");
+    v.nothing("category");
+  }
+}
+
 template <class V>
 void visitFields(const BoundaryPolygon& b, V& v) {
   v.text("boundary", boundaryKindName(b.kind));
   if (b.error) v.nothing("polygon");
   else v.bulk("polygon", packed(b.polygon), 2 * b.polygon.size(), Bulk::Float32);
   v.bulk("loop", b.loop.data(), b.loop.size(), Bulk::Int32);
-  if (b.error) {
-    visitFields(*b.error, v);
-  } else {
-    v.nothing("error");
-    v.nothing("category");
-  }
+  visitOptionalError(b.error, v);
 }
 
 template <class V>
@@ -176,12 +183,7 @@ void visitFields(const ComparisonRow& r, V& v) {
     v.flag("bijective", r.bijective);
   }
   v.number("timeMs", r.timeMs);
-  if (r.error) {
-    visitFields(*r.error, v);
-  } else {
-    v.nothing("error");
-    v.nothing("category");
-  }
+  visitOptionalError(r.error, v);
 }
 
 template <class V>
