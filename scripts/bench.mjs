@@ -101,6 +101,19 @@ if (cgalBig.length) {
 if (targets.length) {
   text += `\n## Targets\n\n| target | measured | goal | |\n|---|---|---|---|\n${targets.join('\n')}\n`;
 }
+// Loading files (not the generator): bench_load writes a 1M-vertex height field as OBJ and OFF and
+// times reading it back, natively and as WASM; its table rows are copied as they are.
+const loadSide = Number(process.env.LOAD_SIDE ?? 1000);
+const loadRows = ['native', 'wasm'].flatMap((target) => {
+  const [cmd, args] = target === 'native'
+    ? [join(root, 'build/native/bench_load'), []]
+    : [process.execPath, ['--no-experimental-fetch', join(root, 'build/wasm/bench_load.js')]];
+  const out = execFileSync(cmd, [...args, target, String(loadSide), String(repeats)], { encoding: 'utf8', maxBuffer: 1 << 26 });
+  return out.split('\n').filter((line) => line.startsWith('| ') && !line.startsWith('| target'));
+});
+const loadHeader = '| target | format | vertices | MB | load file ms | MB/s | parse only ms | MB/s |\n|---|---|---:|---:|---:|---:|---:|---:|';
+text += `\n## Loading files (bench_load)\n\n"load file" reads, parses and builds the TriMesh; "parse only" reads bytes already in memory.\n\n${loadHeader}\n${loadRows.join('\n')}\n`;
+
 const cgalFile = join(root, 'build/bench/cgal.md');
 if (existsSync(cgalFile)) {
   const cgal = readFileSync(cgalFile, 'utf8');
