@@ -62,7 +62,9 @@ export interface PathSummary {
   /** Over reached paths (0 when none). */
   meanLength: number;
   maxLength: number;
+  /** Faces crossed by all paths, and by the longest walk (any status). */
   facesCrossed: number;
+  maxFacesCrossed: number;
 }
 
 export interface StraightestPaths {

@@ -97,9 +97,7 @@ export function showPathStats(reply, request, drawn) {
   $('stats-length').textContent = reached
     ? `${formatNumber(summary.meanLength)} / ${formatNumber(summary.maxLength)}`
     : '–';
-  let facesMax = 0;
-  for (const n of reply.facesCrossed) facesMax = Math.max(facesMax, n);
-  $('stats-faces').textContent = count ? `${summary.facesCrossed} / ${facesMax}` : '–';
+  $('stats-faces').textContent = count ? `${summary.facesCrossed} / ${summary.maxFacesCrossed}` : '–';
   const { timings } = reply;
   const time = $('stats-time');
   time.textContent = `${timings.trace.toFixed(1)} ms`;

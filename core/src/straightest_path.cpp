@@ -458,6 +458,7 @@ PathSummary summarize(const PathBatch& batch) {
   for (size_t i = 0; i < batch.status.size(); ++i) {
     ++s.byStatus[static_cast<size_t>(batch.status[i])];
     s.facesCrossed += batch.facesCrossed[i];
+    s.maxFacesCrossed = std::max(s.maxFacesCrossed, batch.facesCrossed[i]);
     if (batch.status[i] != TraceStatus::Reached) continue;
     ++s.reached;
     sum += batch.length[i];

@@ -66,13 +66,14 @@ TEST(Summarize, CountsEveryStatusOnceAndAveragesTheReachedLengths) {
   const PathBatch batch = traceStraightestPaths(mesh, source, boundaryTargets(mesh), TraceOptions{false}).value();
   const PathSummary s = summarize(batch);
   EXPECT_EQ(s.paths, static_cast<int64_t>(batch.status.size()));
-  int64_t total = 0, crossed = 0;
+  int64_t total = 0, crossed = 0, mostCrossed = 0;
   for (int64_t c : s.byStatus) total += c;
   EXPECT_EQ(total, s.paths);
   double sum = 0, longest = 0;
   int64_t reached = 0;
   for (size_t i = 0; i < batch.status.size(); ++i) {
     crossed += batch.facesCrossed[i];
+    mostCrossed = std::max(mostCrossed, batch.facesCrossed[i]);
     if (batch.status[i] != TraceStatus::Reached) continue;
     ++reached;
     sum += batch.length[i];
@@ -84,6 +85,8 @@ TEST(Summarize, CountsEveryStatusOnceAndAveragesTheReachedLengths) {
   EXPECT_NEAR(s.meanLength, sum / reached, 1e-12);
   EXPECT_EQ(s.maxLength, longest);
   EXPECT_EQ(s.facesCrossed, crossed);
+  EXPECT_EQ(s.maxFacesCrossed, mostCrossed);
+  EXPECT_GT(s.maxFacesCrossed, 0);
 }
 
 TEST(TraceStraightestPaths, RecordsItsStagesInTheGivenTimings) {

@@ -105,6 +105,7 @@ test('straightestPaths: directions span each cutting plane with the normal; boun
   assert.equal(r.reached, r.statuses.filter((s) => s === 'reached').length);
   assert.equal(r.summary.paths, r.count);
   assert.equal(r.summary.reached, r.reached);
+  assert.equal(r.summary.maxFacesCrossed, Math.max(...r.facesCrossed));
   assert.ok(r.directions instanceof Float64Array && r.directions.length === 3 * r.count);
   const [sx, sy, sz] = r.sourcePosition;
   const n = r.normal;

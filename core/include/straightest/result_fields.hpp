@@ -86,6 +86,7 @@ void visitFields(const PathSummary& s, V& v) {
   v.number("meanLength", s.meanLength);
   v.number("maxLength", s.maxLength);
   v.count("facesCrossed", s.facesCrossed);
+  v.count("maxFacesCrossed", s.maxFacesCrossed);
 }
 
 /// A batch column by column (path i's points are points[offsets[i] .. offsets[i+1])).

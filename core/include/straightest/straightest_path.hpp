@@ -116,6 +116,7 @@ struct PathSummary {
   double meanLength = 0;          // over reached paths (0 when none)
   double maxLength = 0;           // over reached paths
   int64_t facesCrossed = 0;       // over all paths
+  int64_t maxFacesCrossed = 0;    // the longest walk, in faces (any status)
 };
 PathSummary summarize(const PathBatch& batch);
 
