@@ -596,8 +596,7 @@ int main(int argc, char** argv) {
       "vertex (setup included); CGAL = Surface_mesh_shortest_path construction + add_source_point + "
       "build_sequence_tree + shortest_distance_to_source_points per boundary vertex. Ratio over the reached "
       "paths. Parameterizations: CGAL = the SMP::parameterize call (its default solver, Eigen BiCGSTAB + "
-      "IncompleteLUT); ours = the " total
-      " timing (source given, the library's default solver: %s; "
+      "IncompleteLUT); ours = the \"total\" timing (source given, the library's default solver: %s; "
       "stretch metrics included). L2 = our textureStretch for every UV set.\n",
       st.repeats, solverName(ParamOptions{}.solver));
   for (const Row& r : rows)
