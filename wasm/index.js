@@ -106,7 +106,7 @@ export class Mesh {
    * boundary puts its uv in. One entry per kind: { boundary, polygon (2 floats per loop vertex, or
    * null), loop, error, category }.
    */
-  boundaryPolygons({ source = 'auto', kinds = ['measured', 'circle', 'square'], onProgress } = {}) {
+  boundaryPolygons({ source = 'auto', kinds, onProgress } = {}) {
     return unwrap(this.#live().boundaryPolygons(source, kinds, progressCallback(onProgress))).polygons;
   }
 
@@ -115,10 +115,7 @@ export class Mesh {
    * flipped, degenerate, bijective, timeMs, error, category }], best } (best: the row boundary 'auto'
    * would prefer, -1 when every row failed).
    */
-  compareParameterizations({
-    source = 'auto', boundaries = ['measured', 'circle', 'square'],
-    weights = ['shape-preserving', 'mean-value', 'cotan', 'uniform'], solver = 'multigrid', onProgress,
-  } = {}) {
+  compareParameterizations({ source = 'auto', boundaries, weights, solver = 'multigrid', onProgress } = {}) {
     return unwrap(this.#live().compareParameterizations(source, boundaries, weights, String(solver),
       progressCallback(onProgress)));
   }

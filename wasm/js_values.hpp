@@ -23,10 +23,15 @@ Expected<std::optional<SurfacePoint>> sourceFrom(const val& p, const std::string
 /// Targets: 'boundary', or an array of surface points and 'boundary' entries.
 Expected<std::vector<TargetSpec>> targetsFrom(const val& targets);
 
-/// An array of names through a core name table ("unknown <what> 'x' (use …)").
+/// An array of names through a core name table ("unknown <what> 'x' (use …)"); undefined means every
+/// name of the table, so the default lists live in the core only.
 template <class E, size_t N>
 Expected<std::vector<E>> namesFrom(const val& names, const EnumName<E> (&table)[N], const char* what) {
   std::vector<E> out;
+  if (names.isUndefined()) {
+    for (const EnumName<E>& e : table) out.push_back(e.value);
+    return out;
+  }
   if (!names.isArray()) return Error{ErrorCode::InvalidArgument, std::string(what) + " must be an array of names"};
   const auto n = names["length"].as<unsigned>();
   for (unsigned i = 0; i < n; ++i) {
