@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "straightest/boundary_overlaps.hpp"
+
 namespace straightest {
 
 StretchMetrics textureStretch(const TriMesh& mesh, const std::vector<Vec2>& uv) {
@@ -27,7 +29,8 @@ StretchMetrics textureStretch(const TriMesh& mesh, const std::vector<Vec2>& uv) 
     sumA2 += std::abs(a2[f]);
     sumA3 += mesh.faceArea(f);
   }
-  m.bijective = m.flipped == 0 && m.degenerate == 0;
+  m.overlaps = boundaryOverlaps(mesh, uv);
+  m.bijective = m.flipped == 0 && m.degenerate == 0 && m.overlaps == 0;
   std::vector<double> l2(nf, 0.0);
   for (int32_t f = 0; f < nf; ++f) {
     const double A3 = mesh.faceArea(f);

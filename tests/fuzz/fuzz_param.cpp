@@ -23,9 +23,9 @@ namespace {
 
 void checkMetrics(const TriMesh& m, const StretchMetrics& s, const char* what) {
   FUZZ_CHECK(s.flipped >= 0 && s.degenerate >= 0 && s.flipped + s.degenerate <= m.numFaces(), "%s: counts", what);
-  FUZZ_CHECK(s.bijective == (s.flipped == 0 && s.degenerate == 0),
-             "%s: bijective=%d with %lld flipped, %lld degenerate", what, s.bijective, (long long)s.flipped,
-             (long long)s.degenerate);
+  FUZZ_CHECK(s.bijective == (s.flipped == 0 && s.degenerate == 0 && s.overlaps == 0),
+             "%s: bijective=%d with %lld flipped, %lld degenerate, %lld boundary overlaps", what, s.bijective,
+             (long long)s.flipped, (long long)s.degenerate, (long long)s.overlaps);
   FUZZ_CHECK(std::isfinite(s.l2) == s.bijective && std::isfinite(s.linf) == s.bijective,
              "%s: stretch L2 %g / Linf %g but bijective=%d", what, s.l2, s.linf, s.bijective);
   if (s.bijective) {

@@ -20,7 +20,7 @@
 namespace straightest {
 
 struct FreeBoundaryOptions {
-  int32_t maxIterations = 200;     // refinement iterations (untangling has its own cap)
+  int32_t maxIterations = 200;      // refinement iterations (untangling has its own cap)
   double relativeTolerance = 1e-5;  // stop when one iteration lowers the energy by less than this fraction
   double timeBudgetMs = 60000;      // stop after this long with converged = false (the best map so far)
 };
@@ -39,7 +39,6 @@ struct FreeBoundaryResult {
 /// When untangling fails the result still comes back (with its flipped triangles): the caller's
 /// texture stretch then reports it as not bijective, with counts.
 Expected<FreeBoundaryResult> refineFreeBoundary(const TriMesh& mesh, const std::vector<Vec2>& start,
-                                                const FreeBoundaryOptions& options = {},
-                                                const Progress& progress = {});
+                                                const FreeBoundaryOptions& options = {}, const Progress& progress = {});
 
 }  // namespace straightest
