@@ -40,27 +40,6 @@ class Reporter {
 /// The texture-stretch rule: a face with 2D area ≤ kDegenerateUV × mean |area| (or negative) is bad.
 bool hasBadFace(const TriMesh& mesh, const std::vector<Vec2>& uv) { return !allFacesPositive(mesh, uv, kDegenerateUV); }
 
-/// SLIM's local step for one face: the closest rotation to J and the symmetric Dirichlet weight
-/// M = V diag(w(σ₁), w(σ₂)) Vᵀ, w(σ) = (σ + 1)(σ² + 1)/σ³ (SLIM's f'(σ)/(2(σ − 1)) for f = σ² + σ⁻²,
-/// with the division done by hand), in the face's frame (J = U Σ Vᵀ).
-void localStep(const Mat2& j, Mat2& weight, Mat2& rotation) {
-  // J = Rot(φ) diag(σ₁, σ₂) Rot(θ) with E, F, G, H below; Rot(φ + θ) is the closest rotation.
-  const double e = 0.5 * (j.a + j.d), f = 0.5 * (j.a - j.d), g = 0.5 * (j.c + j.b), h = 0.5 * (j.c - j.b);
-  const double q = std::hypot(e, h), r = std::hypot(f, g);
-  const double s1 = q + r, s2 = q - r;
-  rotation = {e / q, -h / q, h / q, e / q};
-  auto w = [](double s) { return (s + 1) * (s * s + 1) / (s * s * s); };
-  const double w1 = w(s1), w2 = w(s2);
-  // V diag(w₁, w₂) Vᵀ = (w₁ + w₂)/2 I + (w₁ − w₂)/2 V diag(1, −1) Vᵀ, a reflection by the angle 2θ.
-  const double mean = 0.5 * (w1 + w2), half = 0.5 * (w1 - w2);
-  double cos2 = 1, sin2 = 0;
-  if (r > 0) {
-    cos2 = (e * f + h * g) / (q * r);
-    sin2 = (h * f - e * g) / (q * r);
-  }
-  weight = {mean + half * cos2, -half * sin2, -half * sin2, mean - half * cos2};
-}
-
 /// The energy per unit area and its derivative along `direction` (per unit area too).
 struct EnergySlope {
   double energy, slope;
@@ -150,7 +129,7 @@ Expected<FreeBoundaryResult> refineFreeBoundary(const TriMesh& mesh, const std::
       return cancelledError("parameterization");
     if (Clock::now() > deadline) break;
     for (int32_t f = 0; f < mesh.numFaces(); ++f)
-      if (gradients[f].area > 0) localStep(jacobian(gradients[f], mesh.triangle(f), uv), weights[f], rotations[f]);
+      if (gradients[f].area > 0) slimLocalStep(jacobian(gradients[f], mesh.triangle(f), uv), weights[f], rotations[f]);
     if (!global.solve(gradients, weights, rotations, uv, next)) break;
     for (size_t i = 0; i < uv.size(); ++i) direction[i] = next[i] - uv[i];
     // Line search: never past 0.8 of the first flip; then halve until the energy falls enough, every face

@@ -63,6 +63,24 @@ Mat2 symmetricDirichletGradient(const Mat2& j) {
   return {k * j.a - m * j.d, k * j.b + m * j.c, k * j.c + m * j.b, k * j.d - m * j.a};
 }
 
+void slimLocalStep(const Mat2& j, Mat2& weight, Mat2& rotation) {
+  // J = Rot(φ) diag(σ₁, σ₂) Rot(θ) with E, F, G, H below; Rot(φ + θ) is the closest rotation.
+  const double e = 0.5 * (j.a + j.d), f = 0.5 * (j.a - j.d), g = 0.5 * (j.c + j.b), h = 0.5 * (j.c - j.b);
+  const double q = std::hypot(e, h), r = std::hypot(f, g);
+  const double s1 = q + r, s2 = q - r;
+  rotation = {e / q, -h / q, h / q, e / q};
+  auto w = [](double s) { return (s + 1) * (s * s + 1) / (s * s * s); };
+  const double w1 = w(s1), w2 = w(s2);
+  // V diag(w₁, w₂) Vᵀ = (w₁ + w₂)/2 I + (w₁ − w₂)/2 V diag(1, −1) Vᵀ, a reflection by the angle 2θ.
+  const double mean = 0.5 * (w1 + w2), half = 0.5 * (w1 - w2);
+  double cos2 = 1, sin2 = 0;
+  if (r > 0) {
+    cos2 = (e * f + h * g) / (q * r);
+    sin2 = (h * f - e * g) / (q * r);
+  }
+  weight = {mean + half * cos2, -half * sin2, -half * sin2, mean - half * cos2};
+}
+
 DirichletSums dirichletSums(const TriMesh& mesh, const std::vector<FaceGradient>& gradients,
                             const std::vector<Vec2>& uv) {
   DirichletSums sums;

@@ -55,6 +55,13 @@ double symmetricDirichlet(const Mat2& j);
 /// Its derivative with respect to J's entries (J finite, det > 0).
 Mat2 symmetricDirichletGradient(const Mat2& j);
 
+/// SLIM's local step for one face (Rabinovich et al. 2017): the rotation closest to J and the weight
+/// M = V diag(w(σ₁), w(σ₂)) Vᵀ of the proxy ‖(J − R) M^½‖²_F, in the face's frame (J = U Σ Vᵀ), with
+/// w(σ) = (σ + 1)(σ² + 1)/σ³, SLIM's f'(σ) / (2(σ − 1)) for f = σ² + σ⁻² with the division done by
+/// hand. The proxy's gradient at J, 2 (J − R) M, is the energy's (symmetricDirichletGradient). J must
+/// have det > 0.
+void slimLocalStep(const Mat2& j, Mat2& weight, Mat2& rotation);
+
 /// The area-weighted sums of ‖J‖²_F and ‖J⁻¹‖²_F over the faces (+∞ second term when a face of
 /// positive area has det ≤ 0). The energy per unit area is (first + second) / Σ area; scaling the
 /// map by s multiplies the first by s² and the second by 1/s².
