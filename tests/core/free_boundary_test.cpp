@@ -207,11 +207,11 @@ TriMesh finger(int rings) {
 }
 
 TEST(FreeBoundary, ALongFingerWhoseLinearMapUnderflowsIsUntangledAndBijective) {
-  const TriMesh mesh = finger(40);
+  const TriMesh mesh = finger(32);
   for (WeightKind weights : {WeightKind::MeanValue, WeightKind::Uniform}) {
     const std::vector<Vec2> start = startMap(mesh, BoundaryKind::Circle, weights);
     const StretchMetrics before = textureStretch(mesh, start);
-    ASSERT_GT(before.degenerate, 100);  // underflow, not a fold
+    ASSERT_GT(before.degenerate, 50);  // underflow, not a fold
     EXPECT_EQ(before.flipped, 0);
     const FreeBoundaryResult r = refine(mesh, start);
     EXPECT_TRUE(r.untangled);
@@ -306,6 +306,20 @@ TEST(FreeBoundary, TheIterationCapStopsWithoutConverging) {
   EXPECT_FALSE(r.converged);
   expectBijective(mesh, r.uv);
   EXPECT_LT(r.energyFinal, r.energyInitial);
+}
+
+TEST(FreeBoundary, AnExhaustedTimeBudgetReturnsTheRescaledStartUnconverged) {
+  const TriMesh mesh = makeSphericalCap(1.0, kPi / 2, 10);
+  const std::vector<Vec2> start = startMap(mesh, BoundaryKind::Circle);
+  FreeBoundaryOptions o;
+  o.timeBudgetMs = 0;
+  const FreeBoundaryResult r = refine(mesh, start, o);
+  EXPECT_EQ(r.iterations, 0);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.energyFinal, r.energyInitial);
+  expectBijective(mesh, r.uv);
+  // The start, scaled about the origin to the energy's best scale: same shape, same stretch.
+  EXPECT_NEAR(textureStretch(mesh, r.uv).l2, textureStretch(mesh, start).l2, 1e-12);
 }
 
 TEST(FreeBoundary, AStartOfTheWrongSizeOrNotFiniteIsAnInvalidArgument) {
