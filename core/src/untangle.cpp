@@ -213,7 +213,7 @@ Expected<UntangleResult> untangle(const TriMesh& mesh, std::vector<Vec2> uv, con
     dMin = barrier.minDet(uv);
     const double e = barrier.evaluate(uv, nullptr);
     result.injective = allFacesPositive(mesh, uv, kUntangledArea);
-    if (result.injective && (dMin > 1e-3 || std::abs(ePrev - e) < 1e-3 * e)) break;
+    if (result.injective) break;  // SLIM takes it from here: it needs positive faces, not good ones
     if (Clock::now() > deadline) break;
     // Lower ε (Garanzha et al.): the barrier's knee just below the smallest D, by how much this round gained.
     const double sigma = std::max(1 - e / ePrev, 0.1);

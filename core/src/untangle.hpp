@@ -7,7 +7,10 @@
 //     f = (1 − θ) ‖J‖²_F / χ(D, ε) + θ (D² + 1) / χ(D, ε),
 // finite for every map when ε > 0 and tending to a barrier against D ≤ 0 as ε → 0. Each round
 // minimizes it with L-BFGS at fixed ε, then lowers ε by the paper's rule (from the smallest D and
-// the round's energy decrease), until every face is positive by a margin.
+// the round's energy decrease), until every face is positive by a margin. It stops there: the
+// refinement that follows needs positive faces, not good ones (on a 3.8k-vertex finger, going on until
+// the smallest face was 1e-3 of its ideal size took 60 rounds and 7 s; stopping when every face was
+// positive took 5 rounds, and SLIM then ended within about 1% of the same energy).
 // Private to the free-boundary refinement.
 #pragma once
 #include <chrono>
