@@ -97,6 +97,11 @@ Expected<FreeBoundaryResult> refineFreeBoundary(const TriMesh& mesh, const std::
   std::vector<Vec2> uv(start);
   for (int32_t v = 0; v < mesh.numVertices(); ++v)
     if (!referenced[v]) uv[v] = {0, 0};
+  // A mirror image (every face clockwise) is as injective as its mirror: flip it rather than untangle it.
+  double signedArea = 0;
+  for (const Triangle& t : mesh.triangles()) signedArea += twiceSignedArea(t, uv);
+  if (signedArea < 0)
+    for (Vec2& q : uv) q.x = -q.x;
   const std::vector<FaceGradient> gradients = faceGradients(mesh, false);
   Progress slimProgress = progress;
   if (hasBadFace(mesh, uv) || !std::isfinite(energyOf(mesh, gradients, uv))) {

@@ -255,6 +255,16 @@ TEST(FreeBoundary, ARolledUpStripUnrolls) {
   EXPECT_NEAR(textureStretch(mesh, r.uv).l2, 1.0, 1e-6);
 }
 
+TEST(FreeBoundary, AMirroredStartIsMirroredBackNotUntangled) {
+  const TriMesh mesh = makeSphericalCap(1.0, kPi / 2, 8);
+  std::vector<Vec2> start = startMap(mesh, BoundaryKind::Circle);
+  for (Vec2& q : start) q.y = -q.y;
+  ASSERT_EQ(textureStretch(mesh, start).flipped, mesh.numFaces());
+  const FreeBoundaryResult r = refine(mesh, start);
+  EXPECT_FALSE(r.untangled);
+  expectBijective(mesh, r.uv);
+}
+
 TEST(FreeBoundary, AZeroAreaFaceGivesNoNaN) {
   // A sliver face (b, a, m) on a boundary edge a → b with m its midpoint: zero 3D area, still a disk.
   const TriMesh grid = testing::flatGrid(6, GridPattern::Regular);

@@ -29,7 +29,8 @@
 // ("Foldover-free maps in 50 lines of code") with L-BFGS and continuation on its ε (untangle.hpp);
 // SLIM then frees the boundary. If untangling fails (time budget, or a map no barrier can repair) the
 // best map comes back with untangled = true and energyFinal = +∞, and the caller's texture stretch
-// reports it as not bijective, with counts.
+// reports it as not bijective, with counts. (A start that is a mirror image, its faces clockwise by
+// total signed area, is mirrored back first: that needs no untangling.)
 //
 // Zero-area 3D faces (TriMesh::isDegenerateFace) carry no area and so no energy: they are left out of
 // the energy and the global step, yet the line search still keeps their 2D area positive; untangling
