@@ -5,8 +5,6 @@
 #include <array>
 #include <cmath>
 
-#include "eigen_bridge.hpp"
-
 namespace straightest {
 namespace {
 
@@ -161,8 +159,22 @@ int SlimGlobalStep::conjugateGradients(std::vector<double>& x) const {
   return -1;
 }
 
-bool SlimGlobalStep::directSolve(std::vector<double>& x) const {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> cholesky(toEigen(matrix_));
+struct SlimGlobalStep::Cholesky {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
+};
+
+SlimGlobalStep::~SlimGlobalStep() = default;
+
+bool SlimGlobalStep::directSolve(std::vector<double>& x) {
+  // The matrix is symmetric, so its compressed rows are its compressed columns: Eigen reads them as is.
+  const Eigen::Map<const Eigen::SparseMatrix<double>> a(n_, n_, matrix_.nonZeros(), matrix_.start.data(),
+                                                        matrix_.col.data(), matrix_.value.data());
+  if (!cholesky_) {
+    cholesky_ = std::make_unique<Cholesky>();
+    cholesky_->factor.analyzePattern(a);  // the ordering depends on the pattern only: once
+  }
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& cholesky = cholesky_->factor;
+  cholesky.factorize(a);
   if (cholesky.info() != Eigen::Success) return false;
   Eigen::MatrixX2d b(n_, 2);
   for (int32_t v = 0; v < n_; ++v) b.row(v) << rhs_[2 * v], rhs_[2 * v + 1];

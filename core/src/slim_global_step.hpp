@@ -7,7 +7,8 @@
 // u and v share one symmetric matrix and are solved together. A tiny proximal term toward the current
 // map (1e-8 × the mean diagonal) pins the translation, the energy's only null direction.
 //
-// Solver: below kDirectSize vertices, Eigen's sparse Cholesky (LDLᵀ) per iteration. Above, conjugate
+// Solver: below kDirectSize vertices, Eigen's sparse Cholesky (LDLᵀ), the ordering computed once and
+// the factorization renewed each iteration. Above, conjugate
 // gradients from the current map, preconditioned by one smoothed-aggregation multigrid V-cycle
 // (multigrid.hpp; symmetric, as conjugate gradients need); the hierarchy is kept across iterations,
 // whose weights change little, and rebuilt when a solve needs more than kStaleIterations. Cholesky is
@@ -17,6 +18,7 @@
 // Private to the free-boundary refinement.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "straightest/csr_matrix.hpp"
@@ -36,6 +38,7 @@ class SlimGlobalStep {
 
   /// `directSize`: meshes with at most this many vertices are solved by factorization.
   explicit SlimGlobalStep(const TriMesh& mesh, int32_t directSize = kDirectSize);
+  ~SlimGlobalStep();
 
   /// The next map from `uv` (also the iterative solve's start) and each face's weight M_f and target
   /// rotation R_f (faces of zero area in `gradients` are left out). False when no solver succeeds.
@@ -50,7 +53,7 @@ class SlimGlobalStep {
   void assemble(const std::vector<FaceGradient>& gradients, const std::vector<Mat2>& weights,
                 const std::vector<Mat2>& rotations, const std::vector<Vec2>& uv);
   int conjugateGradients(std::vector<double>& x) const;
-  bool directSolve(std::vector<double>& x) const;
+  bool directSolve(std::vector<double>& x);
 
   const TriMesh& mesh_;
   int32_t n_, directSize_;
@@ -61,6 +64,8 @@ class SlimGlobalStep {
   AggregationMultigrid multigrid_;
   bool preconditionerCurrent_ = false;  // the hierarchy was built from a recent enough matrix
   int lastIterations_ = 0;
+  struct Cholesky;  // Eigen's factorization, its pattern analysed once
+  std::unique_ptr<Cholesky> cholesky_;
 };
 
 }  // namespace straightest
