@@ -105,9 +105,17 @@ Expected<FreeBoundaryResult> refineFreeBoundary(const TriMesh& mesh, const std::
   const std::vector<FaceGradient> gradients = faceGradients(mesh, false);
   Progress slimProgress = progress;
   if (hasBadFace(mesh, uv) || !std::isfinite(energyOf(mesh, gradients, uv))) {
-    // Untangle with the boundary held where the start put it (a convex polygon).
+    // Untangle with the boundary held where the start put it (a convex polygon), except the corners of
+    // a collapsed boundary ear (a bad face with all three corners on the boundary: nothing else could
+    // open it).
     std::vector<uint8_t> fixed(mesh.numVertices(), 0);
     for (int32_t v = 0; v < mesh.numVertices(); ++v) fixed[v] = mesh.isBoundaryVertex(v) || !referenced[v];
+    double meanArea = 0;
+    for (const Triangle& t : mesh.triangles()) meanArea += std::abs(twiceSignedArea(t, uv));
+    meanArea /= std::max(1, mesh.numFaces());
+    for (const Triangle& t : mesh.triangles())
+      if (!(twiceSignedArea(t, uv) > kDegenerateUV * meanArea) && fixed[t[0]] && fixed[t[1]] && fixed[t[2]])
+        for (int32_t v : t) fixed[v] = 0;
     auto untangled = untangle(mesh, std::move(uv), fixed, deadline, progress.range(0, kUntangleShare));
     if (!untangled) return untangled.error();
     uv = std::move(untangled.value().uv);

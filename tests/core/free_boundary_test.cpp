@@ -232,6 +232,31 @@ TEST(FreeBoundary, ACollapsedArmIsUntangled) {
   expectBijective(mesh, r.uv);
 }
 
+TEST(FreeBoundary, ACollapsedBoundaryEarIsOpened) {
+  // Cells cut along their rising diagonals leave the grid's corners (5, 0) and (0, 5) in one triangle
+  // each, an ear with all three corners on the boundary. Moving such a corner onto the segment between
+  // its neighbours collapses the ear: only freeing the ear's corners can open it again.
+  const TriMesh mesh = testing::gridOfCells(6, [](int, int) { return true; });
+  std::vector<Vec2> start = startMap(mesh, BoundaryKind::Circle);
+  int32_t ear = -1;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    const Triangle& t = mesh.triangle(f);
+    if (mesh.isBoundaryVertex(t[0]) && mesh.isBoundaryVertex(t[1]) && mesh.isBoundaryVertex(t[2])) ear = f;
+  }
+  ASSERT_GE(ear, 0);
+  // The ear's corner that lies in no other face goes to the midpoint of the other two.
+  const Triangle& t = mesh.triangle(ear);
+  for (int k = 0; k < 3; ++k) {
+    int faces = 0;
+    for (int32_t f : mesh.vertexFaces(t[k])) faces += f >= 0;
+    if (faces == 1) start[t[k]] = (start[t[(k + 1) % 3]] + start[t[(k + 2) % 3]]) * 0.5;
+  }
+  ASSERT_GT(textureStretch(mesh, start).degenerate, 0);
+  const FreeBoundaryResult r = refine(mesh, start);
+  EXPECT_TRUE(r.untangled);
+  expectBijective(mesh, r.uv);
+}
+
 TEST(FreeBoundary, ARolledUpStripUnrolls) {
   // A strip 2 cells wide and 120 long, rolled into a spiral of 3 turns (developable).
   const int length = 120;
