@@ -3,15 +3,16 @@
 // little about scans and models with jagged boundaries and protrusions; balls cut from real closed
 // meshes have both, and cutting them ourselves makes the set reproducible from public data.
 //
-// For each input mesh (closed, one component): seeds by farthest-point sampling over edge-graph
-// distances (the first from vertex 0's farthest vertex), so they spread over the shape and land on its
-// extremities; for each seed and each radius (a fraction of the bounding-box diagonal) the ball is every
-// face whose three corners are within the radius by the heat method's geodesic distance, and the patch
-// is the ball's face-connected component holding the seed. A patch is kept only when it is a manifold
-// disk (one component, one boundary loop, Euler characteristic 1, by TriMesh::summary) with a vertex
-// count in the requested range. Of the disks around one seed the smallest and the largest are kept (two
-// scales of one neighbourhood), seed after seed, at most --per-mesh per mesh.
-// Everything is deterministic: the same inputs and options give the same files.
+// For each input mesh (closed, one component): seeds alternate between farthest-point samples over
+// edge-graph distances (the first is vertex 0's farthest vertex; they land on extremities) and
+// pseudo-random vertices (a fixed hash; they land where the area is). For each seed and each radius (a
+// fraction of the bounding-box diagonal) the ball is every face whose three corners are within the
+// radius by the heat method's geodesic distance, and the patch is the ball's face-connected component
+// holding the seed. A patch is kept only when it is a manifold disk (one component, one boundary loop,
+// Euler characteristic 1, by TriMesh::summary) with a vertex count in the requested range. Of the disks
+// around one seed the smallest and the largest are kept (two scales of one neighbourhood), seed after
+// seed, at most --per-mesh per mesh. Everything is deterministic: the same inputs and options give the
+// same files.
 //
 // Writes DIR/MESH-seedK-rR.off (R = radius in percent of the diagonal) and one line per patch on stdout:
 // name, vertices, faces, boundary vertices, degenerate faces. Progress and rejections go to stderr.
@@ -69,16 +70,32 @@ bool parseArgs(int argc, char** argv, Options& o) {
   return !o.meshes.empty() && !o.radii.empty() && o.seeds > 0;
 }
 
-/// Farthest-point sampling over edge-graph distances: spread-out seeds, extremities first.
-std::vector<int32_t> farthestPointSeeds(const TriMesh& mesh, int count) {
+/// Seeds of two characters, alternating: farthest-point samples over edge-graph distances (spread out,
+/// extremities first: balls around them are protrusions, limbs and tips) and pseudo-random vertices (a
+/// fixed hash of the rank, so mostly where the area is: bodies, flanks, faces).
+std::vector<int32_t> patchSeeds(const TriMesh& mesh, int count) {
   auto farthest = [](const std::vector<double>& d) {
     int32_t best = 0;
     for (int32_t v = 0; v < static_cast<int32_t>(d.size()); ++v)
       if (std::isfinite(d[v]) && d[v] > d[best]) best = v;
     return best;
   };
-  std::vector<int32_t> seeds = {farthest(dijkstraDistances(mesh, std::vector<int32_t>{0}))};
-  while (static_cast<int>(seeds.size()) < count) seeds.push_back(farthest(dijkstraDistances(mesh, seeds)));
+  auto hashed = [&](uint64_t k) {  // splitmix64: the same vertex on every platform
+    uint64_t z = (k + 1) * 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return static_cast<int32_t>((z ^ (z >> 31)) % static_cast<uint64_t>(mesh.numVertices()));
+  };
+  std::vector<int32_t> extremities = {farthest(dijkstraDistances(mesh, std::vector<int32_t>{0}))};
+  std::vector<int32_t> seeds;
+  for (int k = 0; static_cast<int>(seeds.size()) < count; ++k) {
+    if (k % 2 == 0) {
+      if (k > 0) extremities.push_back(farthest(dijkstraDistances(mesh, extremities)));
+      seeds.push_back(extremities.back());
+    } else {
+      seeds.push_back(hashed(static_cast<uint64_t>(k)));
+    }
+  }
   return seeds;
 }
 
@@ -165,7 +182,7 @@ int cutMesh(const std::string& path, const Options& o) {
   const double diagonal = s.bbox.diagonal();
   HeatMethod heat(mesh);
   int written = 0;
-  const std::vector<int32_t> seeds = farthestPointSeeds(mesh, o.seeds);
+  const std::vector<int32_t> seeds = patchSeeds(mesh, o.seeds);
   for (size_t k = 0; k < seeds.size() && written < o.perMesh; ++k) {
     const std::vector<double> distance = heat.distances(SurfacePoint::vertex(seeds[k]));
     std::vector<Candidate> disks;

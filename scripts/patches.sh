@@ -1,18 +1,18 @@
 #!/usr/bin/env bash
-# Rebuilds the real-patch set: 40 disk-topology patches (1k–14k vertices) cut as geodesic balls from 12
+# Rebuilds the real-patch set: 41 disk-topology patches (1k–14k vertices) cut as geodesic balls from 12
 # closed genus-0 sample meshes of CGAL (libcgal-demo's data archive; no CGAL library is needed): a scan
 # (bunny00), a CAD part (fandisk) and models with protrusions (armadillo, bull, camel, man, homer, bear,
 # diplodocus, dino, cow, triceratops). The cutter is bench/cut_patches.cpp (built on the core: heat-method
 # geodesic distance, TriMesh's disk check); its header says how seeds, radii and the kept patches are
 # chosen. The set is deterministic: the same archive gives the same files.
 #
-# Writes build/data/patches/MESH-seedK-rR.off (K: the seed's rank in farthest-point order, R: the radius
+# Writes build/data/patches/MESH-seedK-rR.off (K: the seed's rank, extremities at even K, R: the radius
 # in percent of the bounding-box diagonal) and build/data/patches/patches.txt (name, vertices, faces,
 # boundary vertices, degenerate faces). Takes ~4 s after the native build (~1 min from scratch).
 #
 # Environment:
 #   PATCHES_DIR=build/data/patches   where the patches go
-#   PATCHES_COPY=                    also copy them there (e.g. a directory shared with other checkouts)
+#   PATCHES_COPY=                    also copy them there, replacing the .off files it holds
 source "$(dirname "$0")/common.sh"
 
 MESHES="bunny00 armadillo bull camel man homer fandisk bear diplodocus dino cow triceratops"
@@ -39,6 +39,7 @@ build/native/cut_patches --out "$out" --seeds 6 --per-mesh 4 --radii "$RADII" "$
 echo "patches: $(wc -l <"$out/patches.txt") patches in $out ($(elapsed "$t0") s)" >&2
 if [ -n "${PATCHES_COPY:-}" ]; then
   mkdir -p "$PATCHES_COPY"
+  rm -f "$PATCHES_COPY"/*.off
   cp "$out"/*.off "$out/patches.txt" "$PATCHES_COPY"/
   echo "patches: copied to $PATCHES_COPY" >&2
 fi
