@@ -22,7 +22,7 @@ out=${PATCHES_DIR:-build/data/patches}
 
 bash scripts/setup.sh libcgal-demo >&2
 cmake --preset native >/dev/null
-cmake --build --preset native --target cut_patches >/dev/null
+cmake --build --preset native --target cut_patches real_patches >/dev/null
 
 mkdir -p build/data "$out"
 files=()
