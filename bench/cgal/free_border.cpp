@@ -118,15 +118,17 @@ std::string cells(const FreeBorderMethod& m, bool iterations) {
   return out + (m.ran ? fmtMs(m.ms) : "");
 }
 
-/// "bijective on N of M; folds on a, b (12 flipped), …; fails on …; skipped on …" for one method.
+/// "bijective on N of M run; not bijective on a (12 flipped), …; failed on b (CGAL's message); not run
+/// on …" for one method.
 std::string verdict(const std::vector<FreeBorderRow>& rows, FreeBorderMethod FreeBorderRow::*method) {
   int bijective = 0, ran = 0;
   std::string folds, fails, skipped;
+  auto append = [](std::string& list, const std::string& item) { list += (list.empty() ? "" : ", ") + item; };
   for (const FreeBorderRow& r : rows) {
     const FreeBorderMethod& m = r.*method;
     if (!m.ran) {
-      std::string& list = m.note.rfind("skipped", 0) == 0 || m.note.rfind("n/a", 0) == 0 ? skipped : fails;
-      list += (list.empty() ? "" : ", ") + r.name;
+      if (m.note.rfind("skipped", 0) == 0 || m.note.rfind("n/a", 0) == 0) append(skipped, r.name);
+      else append(fails, r.name + " (" + m.note + ")");
       continue;
     }
     ++ran;
@@ -134,11 +136,15 @@ std::string verdict(const std::vector<FreeBorderRow>& rows, FreeBorderMethod Fre
       ++bijective;
       continue;
     }
-    folds += (folds.empty() ? "" : ", ") + r.name + " (" + std::to_string(m.metrics.flipped) + " flipped, " +
-             std::to_string(m.metrics.degenerate) + " degenerate, " + std::to_string(m.metrics.overlaps) + " overlaps)";
+    std::string counts;
+    if (m.metrics.flipped > 0) append(counts, std::to_string(m.metrics.flipped) + " flipped");
+    if (m.metrics.degenerate > 0) append(counts, std::to_string(m.metrics.degenerate) + " degenerate");
+    if (m.metrics.overlaps > 0) append(counts, std::to_string(m.metrics.overlaps) + " overlaps");
+    append(folds, r.name + " (" + counts + ")");
   }
+  if (ran == 0 && fails.empty()) return (rows.empty() ? std::string("") : (rows[0].*method).note) + " (every mesh)";
   std::string out = "bijective on " + std::to_string(bijective) + " of " + std::to_string(ran) + " run";
-  if (!folds.empty()) out += "; not bijective on " + folds;
+  if (!folds.empty()) out += "; not bijective on " + std::to_string(ran - bijective) + ": " + folds;
   if (!fails.empty()) out += "; failed on " + fails;
   if (!skipped.empty()) out += "; not run on " + skipped;
   return out;
