@@ -64,6 +64,13 @@ export function realPatchesSection(patches) {
   const worse = both.filter((p) => l2Of(p.measured) > l2Of(p.circle)).length;
   const muchWorse = both.filter((p) => l2Of(p.measured) > 1.25 * l2Of(p.circle)).length;
   const earBelow = count((p) => p.measured?.worst_ear !== null && p.measured?.worst_ear < 1e-2);
+  const bestFixed = (p) => Math.min(l2Of(p.circle), l2Of(p.measured), l2Of(p.square));
+  const freeLines = hasFree
+    ? `\n- free L2 below the best fixed boundary's on **${count((p) => l2Of(p.free) < bestFixed(p))} of ${n}** patches`
+    : '';
+  const freeNote = hasFree
+    ? 'Free: the free boundary (a fixed-boundary start refined without folding).'
+    : 'Free: n/a until the core has the free boundary.';
   return `## Real patches
 
 ${n} disks cut from CGAL's closed sample meshes by \`scripts/patches.sh\` (geodesic balls of several radii
@@ -74,11 +81,11 @@ degenerate triangles, or a boundary that overlaps itself), with the counts. *Wor
 triangle whose three corners are all boundary vertices; its ratio is its 2D/3D area ratio divided by the
 map's (total 2D area / total 3D area): 1 is an ear mapped like the map as a whole, near 0 a collapsed one
 (– when the patch has no ear). *Failed traces*: boundary vertices whose straightest path did not arrive,
-placed at the fallback radius. Free: n/a until the core has the free boundary.
+placed at the fallback radius. ${freeNote}
 
 - measured L2 > circle L2 on **${worse} of ${both.length}** patches where both are bijective, > 1.25× the circle on **${muchWorse}**
 - bijective maps: ${bijective}
-- measured map's worst ear below 1e-2 of the mean ratio on **${earBelow}** patches
+- measured map's worst ear below 1e-2 of the mean ratio on **${earBelow}** patches${freeLines}
 
 | patch | vertices | circle L2 | measured L2 | square L2 | free L2 | measured ÷ circle | worst ear (measured) | worst ear (circle) | failed traces |
 |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
