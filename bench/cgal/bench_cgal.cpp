@@ -4,13 +4,17 @@
 //    per-vertex ratio straightest / exact over the reached paths;
 //  - disk parameterization: CGAL's Mean_value_coordinates_parameterizer_3 with
 //    Circular_border_arc_length_parameterizer_3 vs our circle + mean-value and our measured +
-//    shape-preserving; every UV set is judged by OUR textureStretch (one metric for all).
+//    shape-preserving; every UV set is judged by OUR textureStretch (one metric for all);
+//  - free borders: CGAL's ARAP and LSCM vs our free boundary (free_border.hpp).
 // Bench-only (bench/cgal/CMakeLists.txt); never a dependency of the library.
 //
-// usage: bench_cgal [--repeats N] [--sp-budget-s S] [--sp-max-vertices N] [--no-lengths] MESH...
+// usage: bench_cgal [--repeats N] [--sp-budget-s S] [--sp-max-vertices N] [--no-lengths] [--skip-paths]
+//                   [--no-free-border] [--free-max-vertices N] [--free-once-above-s S] MESH...
 //   MESH: an .obj/.off path or heightfield:N (makeHeightField(N), N² vertices).
-// Output: one JSON object per mesh per line on stdout (flushed as soon as the mesh is done), then a
-// markdown table. Progress goes to stderr.
+//   --skip-paths: parameterizations only. Free-border runs longer than --free-once-above-s (2 s) are not
+//   repeated; CGAL's free-border methods skip meshes above --free-max-vertices (30000).
+// Output: one JSON object per mesh per line on stdout (flushed as soon as the mesh is done), then the
+// markdown tables. Progress goes to stderr.
 //
 // Kernel: CGAL::Exact_predicates_inexact_constructions_kernel (double coordinates; exact predicates,
 // which Surface_mesh_shortest_path's examples use). Both meshes have the same vertices in the same
@@ -49,144 +53,20 @@
 #include "straightest/straightest_path.hpp"
 #include "straightest/texture_stretch.hpp"
 
+#include "bench_support.hpp"
+#include "free_border.hpp"
+
+using namespace straightest;
+using namespace bench_cgal;
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point3 = Kernel::Point_3;
-using Point2 = Kernel::Point_2;
-using SM = CGAL::Surface_mesh<Point3>;
-using VertexIndex = SM::Vertex_index;
 using ShortestPathTraits = CGAL::Surface_mesh_shortest_path_traits<Kernel, SM>;
 using ShortestPath = CGAL::Surface_mesh_shortest_path<ShortestPathTraits>;
 using CgalBorder = SMP::Circular_border_arc_length_parameterizer_3<SM>;
 using CgalMvc = SMP::Mean_value_coordinates_parameterizer_3<SM, CgalBorder>;
 
-using namespace straightest;
-using Clock = std::chrono::steady_clock;
-
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-double median(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// Resident memory of this process in MB from /proc/self/status (VmRSS now, VmHWM the peak); -1 when
-// unavailable. resetPeakRss() hands freed heap back to the system (malloc_trim) and resets the peak to
-// the current RSS (writing "5" to clear_refs), so a stage's peak minus its baseline is what it added.
-double statusMb(const char* key) {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind(key, 0) == 0) return std::atof(line.c_str() + std::strlen(key)) / 1024.0;
-  return -1;
-}
-double resetPeakRss() {
-  malloc_trim(0);
-  std::ofstream f("/proc/self/clear_refs");
-  if (f) f << "5";
-  f.close();
-  return statusMb("VmRSS:");
-}
-double peakRssMb() { return statusMb("VmHWM:"); }
-double memAvailableMb() {
-  std::ifstream f("/proc/meminfo");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("MemAvailable:", 0) == 0) return std::atof(line.c_str() + 13) / 1024.0;
-  return -1;
-}
-
-// ------------------------------------------------------------------ a tiny JSON writer
-std::string num(double x, int digits = 6) {
-  if (!std::isfinite(x)) return "null";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-  return buf;
-}
-std::string str(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-struct Obj {
-  std::string body;
-  Obj& add(const std::string& k, const std::string& rawValue) {
-    body += (body.empty() ? "" : ",") + str(k) + ":" + rawValue;
-    return *this;
-  }
-  Obj& add(const std::string& k, double v, int digits = 6) { return add(k, num(v, digits)); }
-  Obj& add(const std::string& k, int64_t v) { return add(k, std::to_string(v)); }
-  Obj& add(const std::string& k, int v) { return add(k, std::to_string(v)); }
-  Obj& add(const std::string& k, bool v) { return add(k, std::string(v ? "true" : "false")); }
-  Obj& addStr(const std::string& k, const std::string& v) { return add(k, str(v)); }
-  std::string done() const { return "{" + body + "}"; }
-};
-std::string array(const std::vector<double>& v, int digits = 9) {
-  std::string out = "[";
-  for (size_t i = 0; i < v.size(); ++i) out += (i ? "," : "") + num(v[i], digits);
-  return out + "]";
-}
-
-// ------------------------------------------------------------------ measurements
-struct Timed {
-  double ms = kInf;  // median
-  int runs = 0;
-};
-
-/// Runs f `repeats` times (once only when the first run exceeds onceAboveMs) and returns the median.
-Timed timeIt(int repeats, double onceAboveMs, const std::function<void()>& f) {
-  std::vector<double> t;
-  for (int i = 0; i < repeats; ++i) {
-    const auto start = Clock::now();
-    f();
-    t.push_back(msSince(start));
-    if (i == 0 && t[0] > onceAboveMs) break;
-  }
-  return {median(t), static_cast<int>(t.size())};
-}
-
-struct Stretch {
-  StretchMetrics m;
-  bool mirrored = false;
-};
-
-/// Our texture stretch of a UV set. A map that is a reflection of a counter-clockwise one (total
-/// signed area negative: e.g. CGAL's circle runs the other way round) is mirrored first — stretch
-/// does not change under a reflection of the whole map, but our flip test is orientation-aware.
-Stretch stretchOf(const TriMesh& mesh, std::vector<Vec2> uv) {
-  double area = 0;
-  for (const Triangle& t : mesh.triangles()) {
-    const Vec2 &a = uv[t[0]], &b = uv[t[1]], &c = uv[t[2]];
-    area += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-  }
-  Stretch s;
-  if (area < 0) {
-    s.mirrored = true;
-    for (Vec2& p : uv) p[0] = -p[0];
-  }
-  s.m = textureStretch(mesh, uv);
-  return s;
-}
-
-void stretchFields(Obj& o, const Stretch& s) {
-  o.add("l2", s.m.l2, 9).add("linf", s.m.linf, 9).add("flipped", s.m.flipped).add("degenerate", s.m.degenerate);
-}
 
 struct Row {  // one line of the final table
   std::string name;
@@ -199,25 +79,14 @@ struct Row {  // one line of the final table
   std::string error;
 };
 
-std::string fmtMs(double x) {
-  if (!std::isfinite(x)) return "—";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, x < 10 ? "%.2f" : x < 100 ? "%.1f" : "%.0f", x);
-  return buf;
-}
-
-std::string fmt(double x, const char* f) {
-  if (!std::isfinite(x)) return "—";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, x);
-  return buf;
-}
-
 struct Settings {
   int repeats = 3;
   double spBudgetS = 60;       // a CGAL shortest-path run longer than this: larger meshes skip it
   int64_t spMaxVertices = -1;  // explicit cap (-1: none)
   bool lengths = true;         // per-boundary-vertex lengths in the JSON
+  bool paths = true;           // --skip-paths: parameterizations only (the real-patch set)
+  bool freeBorder = true;      // --no-free-border: skip CGAL's ARAP and LSCM and our free boundary
+  FreeBorderSettings freeBorderSettings;
 };
 
 const char* solverName(LinearSolver s) {
@@ -261,9 +130,14 @@ int main(int argc, char** argv) {
     else if (a == "--sp-budget-s") st.spBudgetS = std::atof(next());
     else if (a == "--sp-max-vertices") st.spMaxVertices = std::atoll(next());
     else if (a == "--no-lengths") st.lengths = false;
+    else if (a == "--skip-paths") st.paths = false;
+    else if (a == "--no-free-border") st.freeBorder = false;
+    else if (a == "--free-max-vertices") st.freeBorderSettings.cgalMaxVertices = std::atoll(next());
+    else if (a == "--free-once-above-s") st.freeBorderSettings.onceAboveMs = 1000 * std::atof(next());
     else if (a == "-h" || a == "--help") {
       std::printf(
-          "usage: bench_cgal [--repeats N] [--sp-budget-s S] [--sp-max-vertices N] [--no-lengths] MESH...\n"
+          "usage: bench_cgal [--repeats N] [--sp-budget-s S] [--sp-max-vertices N] [--no-lengths] [--skip-paths]\n"
+          "                  [--no-free-border] [--free-max-vertices N] [--free-once-above-s S] MESH...\n"
           "  MESH: an .obj/.off file or heightfield:N\n");
       return 0;
     } else meshes.push_back(a);
@@ -279,7 +153,9 @@ int main(int argc, char** argv) {
                                  : "";
   int64_t spLargestV = 0;  // the largest mesh whose CGAL shortest paths ran, and their peak (MB)
   double spLargestMb = 0;
+  st.freeBorderSettings.repeats = st.repeats;
   std::vector<Row> rows;
+  std::vector<FreeBorderRow> freeRows;
 
   for (const std::string& spec : meshes) {
     Row row;
@@ -335,113 +211,118 @@ int main(int argc, char** argv) {
     }
 
     // ---------------------------------------------------------------- ours: straightest paths
-    std::fprintf(stderr, "bench_cgal: %s: straightest paths\n", row.name.c_str());
     PathBatch batch;
-    Timings pathTimings;
-    const double oursPathsBase = resetPeakRss();
-    const Timed oursPaths = timeIt(st.repeats, onceAboveMs, [&] {
-      pathTimings = Timings();
-      batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets,
-                                    TraceOptions{/*keepPoints=*/false, 0, &pathTimings})
-                  .value();
-    });
-    const double oursPathsRss = peakRssMb();
-    row.oursPathsMs = oursPaths.ms;
-    row.reached = summarize(batch).reached;
-    out.add("ours_paths", Obj()
-                              .add("ms", oursPaths.ms, 4)
-                              .add("runs", oursPaths.runs)
-                              .add("prepare_ms", pathTimings["prepare"], 4)
-                              .add("trace_ms", pathTimings["trace"], 4)
-                              .add("reached", row.reached)
-                              .add("peak_rss_mb", oursPathsRss, 4)
-                              .add("baseline_rss_mb", oursPathsBase, 4)
-                              .done());
-
-    // ---------------------------------------------------------------- CGAL: exact geodesic distances
     std::vector<double> exact(targets.size(), kInf);
-    Obj sp;
-    // Memory guard: the sequence tree's peak grew like V^1.55 from 10k to 100k vertices on the height
-    // fields (274 MB → 9.6 GB); predict from the largest mesh run so far with exponent 1.5 and skip
-    // when the prediction exceeds 80% of the memory available now.
-    std::string memoryReason;
-    if (spLargestV > 0 && row.vertices > spLargestV) {
-      const double predicted = spLargestMb * std::pow(double(row.vertices) / spLargestV, 1.5);
-      const double available = memAvailableMb();
-      if (available > 0 && predicted > 0.8 * available) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf,
-                      "predicted peak %.0f GB (%.0f MB at %lld vertices × (V ratio)^1.5) > 80%% of "
-                      "the %.0f GB available",
-                      predicted / 1024, spLargestMb, static_cast<long long>(spLargestV), available / 1024);
-        memoryReason = buf;
-      }
-    }
-    if (row.vertices > spSkipAbove || !memoryReason.empty()) {
-      const std::string reason = row.vertices > spSkipAbove ? spSkipReason : memoryReason;
-      row.cgalSpNote = "skipped: " + reason;
-      sp.add("skipped", true).addStr("reason", reason);
-      std::fprintf(stderr, "bench_cgal: %s: CGAL shortest paths %s\n", row.name.c_str(), row.cgalSpNote.c_str());
-    } else {
-      std::fprintf(stderr, "bench_cgal: %s: CGAL shortest paths\n", row.name.c_str());
-      const double base = resetPeakRss();
-      const Timed t = timeIt(st.repeats, onceAboveMs, [&] {
-        ShortestPath paths(sm);
-        paths.add_source_point(VertexIndex(source));
-        paths.build_sequence_tree();
-        for (size_t i = 0; i < targets.size(); ++i) {
-          const double d = paths.shortest_distance_to_source_points(VertexIndex(targets[i].index)).first;
-          exact[i] = d >= 0 ? d : kInf;
-        }
+    if (st.paths) {
+      std::fprintf(stderr, "bench_cgal: %s: straightest paths\n", row.name.c_str());
+      Timings pathTimings;
+      const double oursPathsBase = resetPeakRss();
+      const Timed oursPaths = timeIt(st.repeats, onceAboveMs, [&] {
+        pathTimings = Timings();
+        batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets,
+                                      TraceOptions{/*keepPoints=*/false, 0, &pathTimings})
+                    .value();
       });
-      const double rss = peakRssMb();
-      row.cgalSpMs = t.ms;
-      int64_t unreachable = 0;
-      for (double d : exact) unreachable += std::isinf(d);
-      sp.add("skipped", false)
-          .add("ms", t.ms, 4)
-          .add("runs", t.runs)
-          .add("peak_rss_mb", rss, 4)
-          .add("baseline_rss_mb", base, 4)
-          .add("unreachable", unreachable);
-      if (row.vertices > spLargestV && rss > base) {
-        spLargestV = row.vertices;
-        spLargestMb = rss - base;
-      }
-      if (t.ms > st.spBudgetS * 1000 && row.vertices < spSkipAbove) {
-        spSkipAbove = row.vertices;
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "%s (%lld vertices) took %.0f s > the %.0f s budget", row.name.c_str(),
-                      static_cast<long long>(row.vertices), t.ms / 1000, st.spBudgetS);
-        spSkipReason = buf;
-      }
-    }
-    out.add("cgal_shortest_path", sp.done());
+      const double oursPathsRss = peakRssMb();
+      row.oursPathsMs = oursPaths.ms;
+      row.reached = summarize(batch).reached;
+      out.add("ours_paths", Obj()
+                                .add("ms", oursPaths.ms, 4)
+                                .add("runs", oursPaths.runs)
+                                .add("prepare_ms", pathTimings["prepare"], 4)
+                                .add("trace_ms", pathTimings["trace"], 4)
+                                .add("reached", row.reached)
+                                .add("peak_rss_mb", oursPathsRss, 4)
+                                .add("baseline_rss_mb", oursPathsBase, 4)
+                                .done());
 
-    // ratio straightest / exact over the reached paths
-    std::vector<double> ratios;
-    int64_t belowOne = 0;
-    for (size_t i = 0; i < targets.size(); ++i) {
-      if (batch.status[i] != TraceStatus::Reached || !std::isfinite(exact[i]) || exact[i] <= 0) continue;
-      const double r = batch.length[i] / exact[i];
-      ratios.push_back(r);
-      belowOne += r < 1 - 1e-9;
+      // ---------------------------------------------------------------- CGAL: exact geodesic distances
+      Obj sp;
+      // Memory guard: the sequence tree's peak grew like V^1.55 from 10k to 100k vertices on the height
+      // fields (274 MB → 9.6 GB); predict from the largest mesh run so far with exponent 1.5 and skip
+      // when the prediction exceeds 80% of the memory available now.
+      std::string memoryReason;
+      if (spLargestV > 0 && row.vertices > spLargestV) {
+        const double predicted = spLargestMb * std::pow(double(row.vertices) / spLargestV, 1.5);
+        const double available = memAvailableMb();
+        if (available > 0 && predicted > 0.8 * available) {
+          char buf[200];
+          std::snprintf(buf, sizeof buf,
+                        "predicted peak %.0f GB (%.0f MB at %lld vertices × (V ratio)^1.5) > 80%% of "
+                        "the %.0f GB available",
+                        predicted / 1024, spLargestMb, static_cast<long long>(spLargestV), available / 1024);
+          memoryReason = buf;
+        }
+      }
+      if (row.vertices > spSkipAbove || !memoryReason.empty()) {
+        const std::string reason = row.vertices > spSkipAbove ? spSkipReason : memoryReason;
+        row.cgalSpNote = "skipped: " + reason;
+        sp.add("skipped", true).addStr("reason", reason);
+        std::fprintf(stderr, "bench_cgal: %s: CGAL shortest paths %s\n", row.name.c_str(), row.cgalSpNote.c_str());
+      } else {
+        std::fprintf(stderr, "bench_cgal: %s: CGAL shortest paths\n", row.name.c_str());
+        const double base = resetPeakRss();
+        const Timed t = timeIt(st.repeats, onceAboveMs, [&] {
+          ShortestPath paths(sm);
+          paths.add_source_point(VertexIndex(source));
+          paths.build_sequence_tree();
+          for (size_t i = 0; i < targets.size(); ++i) {
+            const double d = paths.shortest_distance_to_source_points(VertexIndex(targets[i].index)).first;
+            exact[i] = d >= 0 ? d : kInf;
+          }
+        });
+        const double rss = peakRssMb();
+        row.cgalSpMs = t.ms;
+        int64_t unreachable = 0;
+        for (double d : exact) unreachable += std::isinf(d);
+        sp.add("skipped", false)
+            .add("ms", t.ms, 4)
+            .add("runs", t.runs)
+            .add("peak_rss_mb", rss, 4)
+            .add("baseline_rss_mb", base, 4)
+            .add("unreachable", unreachable);
+        if (row.vertices > spLargestV && rss > base) {
+          spLargestV = row.vertices;
+          spLargestMb = rss - base;
+        }
+        if (t.ms > st.spBudgetS * 1000 && row.vertices < spSkipAbove) {
+          spSkipAbove = row.vertices;
+          char buf[160];
+          std::snprintf(buf, sizeof buf, "%s (%lld vertices) took %.0f s > the %.0f s budget", row.name.c_str(),
+                        static_cast<long long>(row.vertices), t.ms / 1000, st.spBudgetS);
+          spSkipReason = buf;
+        }
+      }
+      out.add("cgal_shortest_path", sp.done());
+
+      // ratio straightest / exact over the reached paths
+      std::vector<double> ratios;
+      int64_t belowOne = 0;
+      for (size_t i = 0; i < targets.size(); ++i) {
+        if (batch.status[i] != TraceStatus::Reached || !std::isfinite(exact[i]) || exact[i] <= 0) continue;
+        const double r = batch.length[i] / exact[i];
+        ratios.push_back(r);
+        belowOne += r < 1 - 1e-9;
+      }
+      Obj ratio;
+      ratio.add("count", static_cast<int64_t>(ratios.size()));
+      if (!ratios.empty()) {
+        row.ratioMin = *std::min_element(ratios.begin(), ratios.end());
+        row.ratioMax = *std::max_element(ratios.begin(), ratios.end());
+        row.ratioMed = median(ratios);
+        double mean = 0;
+        for (double r : ratios) mean += r;
+        ratio.add("min", row.ratioMin, 9)
+            .add("median", row.ratioMed, 9)
+            .add("max", row.ratioMax, 9)
+            .add("mean", mean / ratios.size(), 9)
+            .add("below_one", belowOne);
+      }
+      out.add("ratio_straightest_over_exact", ratio.done());
+    } else {
+      row.reached = -1;
+      out.add("paths", std::string("\"skipped\""));
     }
-    Obj ratio;
-    ratio.add("count", static_cast<int64_t>(ratios.size()));
-    if (!ratios.empty()) {
-      row.ratioMin = *std::min_element(ratios.begin(), ratios.end());
-      row.ratioMax = *std::max_element(ratios.begin(), ratios.end());
-      row.ratioMed = median(ratios);
-      double mean = 0;
-      for (double r : ratios) mean += r;
-      ratio.add("min", row.ratioMin, 9)
-          .add("median", row.ratioMed, 9)
-          .add("max", row.ratioMax, 9)
-          .add("mean", mean / ratios.size(), 9)
-          .add("below_one", belowOne);
-    }
-    out.add("ratio_straightest_over_exact", ratio.done());
 
     // ---------------------------------------------------------------- CGAL: circle + mean value
     std::fprintf(stderr, "bench_cgal: %s: CGAL parameterization\n", row.name.c_str());
@@ -544,11 +425,17 @@ int main(int argc, char** argv) {
       }
       out.add(var.key, o.done());
     }
+    if (st.freeBorder) {
+      FreeBorderRow freeRow;
+      freeRow.name = row.name;
+      out.add("free_border", compareFreeBorders(mesh, sm, source, st.freeBorderSettings, freeRow));
+      freeRows.push_back(freeRow);
+    }
     if (std::isfinite(row.cgalL2) && std::isfinite(row.oursCircleL2))
       out.add("l2_relative_difference_cgal_vs_ours_circle_mean_value",
               std::fabs(row.cgalL2 - row.oursCircleL2) / row.oursCircleL2, 3);
 
-    if (st.lengths) {
+    if (st.lengths && st.paths) {
       std::vector<double> straight(targets.size());
       for (size_t i = 0; i < targets.size(); ++i)
         straight[i] = batch.status[i] == TraceStatus::Reached ? batch.length[i] : kInf;
@@ -563,9 +450,10 @@ int main(int argc, char** argv) {
     rows.push_back(row);
   }
 
-  // ---------------------------------------------------------------- the table
+  // ---------------------------------------------------------------- the tables
   std::printf(
-      "\n| mesh | vertices | boundary | reached | ours paths ms | CGAL exact ms | straightest/exact min / median / max "
+      "\n### Paths and fixed borders\n\n| mesh | vertices | boundary | reached | ours paths ms | CGAL exact ms | "
+      "straightest/exact min / median / max "
       "| CGAL circle+MVC ms | CGAL L2 | ours circle+MV ms | ours circle+MV L2 | ours measured+SP ms "
       "| ours measured+SP L2 | CGAL ÷ ours: circle+MV / measured+SP | L2 CGAL vs ours circle+MV |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---|---:|\n");
@@ -583,12 +471,12 @@ int main(int argc, char** argv) {
     const std::string speedup = fmt(r.cgalParamMs / r.oursCircleMs, "%.1f×") + " / " +
                                 fmt(r.cgalParamMs / r.oursMeasMs, "%.1f×");
     const std::string l2diff = fmt(std::fabs(r.cgalL2 - r.oursCircleL2) / r.oursCircleL2, "%.1e");
-    std::printf("| %s | %lld | %lld | %lld | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(),
-                static_cast<long long>(r.vertices), static_cast<long long>(r.boundary),
-                static_cast<long long>(r.reached), fmtMs(r.oursPathsMs).c_str(), cgalSp.c_str(), ratio.c_str(),
-                fmtMs(r.cgalParamMs).c_str(), fmt(r.cgalL2, "%.6f").c_str(), fmtMs(r.oursCircleMs).c_str(),
-                fmt(r.oursCircleL2, "%.6f").c_str(), fmtMs(r.oursMeasMs).c_str(), fmt(r.oursMeasL2, "%.6f").c_str(),
-                speedup.c_str(), l2diff.c_str());
+    const std::string reached = r.reached < 0 ? "—" : std::to_string(r.reached);
+    std::printf("| %s | %lld | %lld | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(),
+                static_cast<long long>(r.vertices), static_cast<long long>(r.boundary), reached.c_str(),
+                fmtMs(r.oursPathsMs).c_str(), cgalSp.c_str(), ratio.c_str(), fmtMs(r.cgalParamMs).c_str(),
+                fmt(r.cgalL2, "%.6f").c_str(), fmtMs(r.oursCircleMs).c_str(), fmt(r.oursCircleL2, "%.6f").c_str(),
+                fmtMs(r.oursMeasMs).c_str(), fmt(r.oursMeasL2, "%.6f").c_str(), speedup.c_str(), l2diff.c_str());
   }
   std::printf(
       "\nTimes in ms, median of %d run(s) (a run over 30 s is not repeated), loading excluded; CGAL kernel: "
@@ -601,5 +489,6 @@ int main(int argc, char** argv) {
       st.repeats, solverName(ParamOptions{}.solver));
   for (const Row& r : rows)
     if (!r.cgalSpNote.empty()) std::printf("¹ %s: CGAL shortest paths %s\n", r.name.c_str(), r.cgalSpNote.c_str());
+  if (st.freeBorder) printFreeBorderTable(freeRows, st.freeBorderSettings);
   return 0;
 }
