@@ -392,15 +392,20 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
   record(timings, "trace", traceTime.ms());
   // Radii: the straightest distance; a failed trace, or a reached one longer than kOutlierFactor times the
   // edge-graph distance (an upper bound of the geodesic distance, so no straightest path that long is plausible),
-  // takes the geodesic estimate instead: the heat method's distance, never above the graph distance.
-  const std::vector<double> graph = dijkstraDistances(mesh, source);
-  std::vector<double> estimate;  // computed at the first failure or outlier
+  // takes fallbackRadii instead. The graph distance is computed only when some trace is longer than
+  // kOutlierFactor times the straight line (the graph distance is never shorter, so no other can be an outlier).
+  std::vector<double> graph, estimate;  // computed when first needed
+  auto outlying = [&](int32_t v, double length) {
+    if (!(length > kOutlierFactor * norm(mesh.position(v) - S))) return false;
+    if (graph.empty()) graph = dijkstraDistances(mesh, source);
+    return length > kOutlierFactor * graph[v];
+  };
   map.polygon.resize(n);
   for (size_t i = 0; i < n; ++i) {
     const int32_t v = map.loop[i];
     double r = batch.length[i];
     const bool failed = batch.status[i] != TraceStatus::Reached;
-    if (failed || r > kOutlierFactor * graph[v]) {
+    if (failed || outlying(v, r)) {
       if (estimate.empty()) estimate = fallbackRadii(mesh, source);
       r = estimate[v];
       ++(failed ? map.fallbacks : map.outliers);
