@@ -211,8 +211,10 @@ bool liftEars(std::vector<Vec2>& points, const std::vector<BoundaryEar>& ears, d
     };
     const double wanted = kEarLiftTarget * need;
     if (area(r0) >= wanted) continue;
-    double lo = r0, hi = 2 * r0;
-    for (int k = 0; k < 60 && area(hi) < wanted; ++k) hi *= 2;
+    // Never more than kMaxEarLift times the apex's radius: an ear that needs more (its stretch of the loop
+    // spans half a turn or more, so lifting cannot open it) is left as it is rather than blowing the polygon up.
+    double lo = r0, hi = kMaxEarLift * r0;
+    if (area(hi) < wanted) continue;
     for (int k = 0; k < 60; ++k) {
       const double mid = (lo + hi) / 2;
       (area(mid) < wanted ? lo : hi) = mid;

@@ -43,6 +43,7 @@ inline constexpr double kMinAngleStep = 0.01;    // measured: least polar-angle 
 inline constexpr double kEarAreaFraction = 0.1;  // measured: least 2D area of an ear / (its 3D area × map scale)
 inline constexpr double kEarLiftTarget = 1.5;    // a lifted ear aims at this multiple of its least area
 inline constexpr int64_t kPocketFaces = 16;      // a chord's side of at most this many faces is a pocket
+inline constexpr double kMaxEarLift = 2;         // a lift at most doubles an apex's radius in one round
 inline constexpr int kMaxEarRounds = 64;         // lift-and-project rounds before giving up (never seen reached)
 inline constexpr double kOutlierFactor = 1.5;    // measured: a reached trace longer than this × graph distance
 
