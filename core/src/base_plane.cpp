@@ -28,18 +28,22 @@ BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
   base.origin = position(mesh, source);
   if (mesh.boundaryLoops().empty()) {
     base.normal = areaWeightedNormal(mesh, source);
+    base.fallback = true;
     base.note = "closed mesh: area-weighted normal at the source";
     return base;
   }
   const auto& loop = mesh.boundaryLoops()[0];
   Vec3 sum;
+  double lengths = 0;  // the sum of the unit normals' lengths: the number of non-degenerate virtual faces
   for (size_t i = 0; i < loop.size(); ++i) {
     const Vec3 a = mesh.position(loop[i]) - base.origin;
     const Vec3 b = mesh.position(loop[(i + 1) % loop.size()]) - base.origin;
-    sum += normalized(cross(a, b));  // unit normal of the virtual face (S, b_i, b_i+1); zero if degenerate
+    const Vec3 unit = normalized(cross(a, b));  // unit normal of the virtual face (S, b_i, b_i+1); zero if degenerate
+    sum += unit;
+    lengths += norm(unit);
   }
   const Vec3 mean = sum / static_cast<double>(loop.size());
-  if (norm(mean) < kBaseNormalCancel) {
+  if (!(norm(sum) > kBaseNormalCancel * lengths)) {
     base.normal = areaWeightedNormal(mesh, source);
     base.fallback = true;
     base.note = "the virtual-face normals cancel (|mean| = " + std::to_string(norm(mean)) +

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/straightest_path.hpp"
@@ -74,17 +75,30 @@ std::vector<std::array<int32_t, 2>> boundaryChords(const TriMesh& mesh, const st
   return out;
 }
 
-int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 2>>& chords) {
+namespace {
+
+/// The convex hull of the points, and where each point lies on it after the radial projection.
+struct HullProjection {
+  std::vector<Vec2> hull;         // counter-clockwise, starting at the smallest polar angle
+  std::vector<int64_t> edgeOf;    // hull edge j (from hull[j] to hull[j + 1]) strictly inside which a point lies
+  std::vector<int64_t> cornerOf;  // hull vertex a point lies on
+  std::vector<double> along;      // parameter along its hull edge
+};
+
+/// Moves every point radially (from the origin) exactly onto the convex hull of the points: the least
+/// convex polygon, with the same polar angles, that contains them. False when the origin is not strictly
+/// inside the hull. `moved` counts the points that were strictly inside.
+bool projectOntoHull(std::vector<Vec2>& points, HullProjection& out, int64_t& moved) {
   const size_t n = points.size();
-  if (n < 3) return -1;
   const std::vector<size_t> hullIdx = convexHull(points);
   const size_t h = hullIdx.size();
-  if (h < 3) return -1;
-  std::vector<Vec2> hull(h);
+  if (h < 3) return false;
+  std::vector<Vec2>& hull = out.hull;
+  hull.assign(h, Vec2{});
   for (size_t j = 0; j < h; ++j) hull[j] = points[hullIdx[j]];
   for (size_t j = 0; j < h; ++j) {  // the origin must be strictly inside (left of every CCW edge)
     const Vec2 e = hull[(j + 1) % h] - hull[j];
-    if (!(cross(e, Vec2{} - hull[j]) > 1e-14 * norm(e) * norm(e))) return -1;
+    if (!(cross(e, Vec2{} - hull[j]) > 1e-14 * norm(e) * norm(e))) return false;
   }
   // Hull vertices in angular order around the origin, starting at the smallest angle.
   std::vector<double> angle(h);
@@ -93,10 +107,10 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
   std::rotate(hull.begin(), hull.begin() + first, hull.end());
   std::rotate(angle.begin(), angle.begin() + first, angle.end());
 
-  // 1. Radial projection onto the hull; remember each point's hull edge and parameter along it.
-  int64_t moved = 0;
-  std::vector<int64_t> edgeOf(n, -1), cornerOf(n, -1);  // hull edge (inside it) or hull vertex of each point
-  std::vector<double> along(n, 0.0);
+  moved = 0;
+  out.edgeOf.assign(n, -1);
+  out.cornerOf.assign(n, -1);
+  out.along.assign(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
     Vec2& p = points[i];
     const double r = norm(p);
@@ -117,14 +131,195 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
     const double off = std::abs(cross(E, p - A)) / std::sqrt(L2);
     if (off > kOnHullRel * std::sqrt(L2)) continue;
     if (t > kOnHullRel && t < 1 - kOnHullRel) {
-      edgeOf[i] = static_cast<int64_t>(j);
-      along[i] = t;
+      out.edgeOf[i] = static_cast<int64_t>(j);
+      out.along[i] = t;
     } else if (t <= kOnHullRel && t > -kOnHullRel) {
-      cornerOf[i] = static_cast<int64_t>(j);
+      out.cornerOf[i] = static_cast<int64_t>(j);
     } else if (t >= 1 - kOnHullRel && t < 1 + kOnHullRel) {
-      cornerOf[i] = static_cast<int64_t>((j + 1) % h);
+      out.cornerOf[i] = static_cast<int64_t>((j + 1) % h);
     }
   }
+  return true;
+}
+
+double polygonArea(const std::vector<Vec2>& polygon) {
+  double twice = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+  return twice / 2;
+}
+
+/// An ear's corners as (a, m, b) in loop order along the shortest stretch of the loop that holds all three:
+/// on a convex polygon the ear degenerates only when that stretch is straight, and m is the corner to lift.
+std::array<int32_t, 3> earApexOrder(const std::array<int32_t, 3>& corners, int32_t n) {
+  std::array<int32_t, 3> c = corners;
+  std::sort(c.begin(), c.end());
+  const int32_t span[3] = {c[2] - c[0], n - c[1] + c[0], n - c[2] + c[1]};
+  const int best = static_cast<int>(std::min_element(span, span + 3) - span);
+  return {c[best], c[(best + 1) % 3], c[(best + 2) % 3]};
+}
+
+/// Twice the least 2D area an ear may have: kEarAreaFraction of its 3D area at the polygon's scale.
+double earRequirement(double area3D, double scale) { return kEarAreaFraction * area3D * scale; }
+
+/// Where the radial projection puts point q once m's hull neighbours are `left` and P (q in the cone between them)
+/// or P and `right`: on that new hull edge; elsewhere q stays.
+Vec2 projectedNeighbour(const Vec2& q, const Vec2& left, const Vec2& P, const Vec2& right) {
+  const double r = norm(q);
+  if (!(r > 0)) return q;
+  const Vec2 d = q / r;
+  for (const auto& [from, to] : {std::pair<Vec2, Vec2>{left, P}, std::pair<Vec2, Vec2>{P, right}}) {
+    if (!(cross(from, d) > 0) || !(cross(d, to) > 0)) continue;
+    const Vec2 E = to - from;
+    const double onEdge = cross(from, E) / cross(d, E);
+    return onEdge > r ? d * onEdge : q;
+  }
+  return q;
+}
+
+/// One round of ear lifting. An ear (a, m, b) below its least area moves its apex m radially outward until the
+/// ear has kEarLiftTarget times that area with a and b where the next projection puts them (on the new hull edges
+/// from m to m's hull neighbours). Lifting m only until the triangle (a, m, b) as it stands holds would not do: the
+/// projection then moves a and b out onto nearly the same line and undoes most of the lift. True if any moved.
+bool liftEars(std::vector<Vec2>& points, const std::vector<BoundaryEar>& ears, double scale,
+              const HullProjection& projection) {
+  const int32_t n = static_cast<int32_t>(points.size());
+  const std::vector<Vec2>& hull = projection.hull;
+  const int64_t h = static_cast<int64_t>(hull.size());
+  bool lifted = false;
+  for (const BoundaryEar& ear : ears) {
+    const auto [a, m, b] = earApexOrder(ear.corners, n);
+    const Vec2 A = points[a], M = points[m], B = points[b];
+    const double need = earRequirement(ear.area3D, scale);
+    if (cross(M - A, B - A) / 2 >= need) continue;
+    Vec2 left, right;  // m's neighbours on the hull
+    if (projection.edgeOf[m] >= 0) {
+      left = hull[projection.edgeOf[m]];
+      right = hull[(projection.edgeOf[m] + 1) % h];
+    } else if (projection.cornerOf[m] >= 0) {
+      left = hull[(projection.cornerOf[m] + h - 1) % h];
+      right = hull[(projection.cornerOf[m] + 1) % h];
+    } else {
+      continue;
+    }
+    const double r0 = norm(M);
+    if (!(r0 > 0)) continue;
+    const Vec2 d = M / r0;
+    auto area = [&](double r) {
+      const Vec2 P = d * r;
+      const Vec2 A1 = projectedNeighbour(A, left, P, right), B1 = projectedNeighbour(B, left, P, right);
+      return cross(P - A1, B1 - A1) / 2;
+    };
+    const double wanted = kEarLiftTarget * need;
+    if (area(r0) >= wanted) continue;
+    // Never more than kMaxEarLift times the apex's radius: an ear that needs more (its stretch of the loop
+    // spans half a turn or more, so lifting cannot open it) is left as it is rather than blowing the polygon up.
+    double lo = r0, hi = kMaxEarLift * r0;
+    if (area(hi) < wanted) continue;
+    for (int k = 0; k < 60; ++k) {
+      const double mid = (lo + hi) / 2;
+      (area(mid) < wanted ? lo : hi) = mid;
+    }
+    points[m] = d * hi;
+    lifted = true;
+  }
+  return lifted;
+}
+
+}  // namespace
+
+namespace {
+
+/// The faces on one side of the interior edge h (h's own face's side), reached without crossing h; empty when
+/// there are more than kPocketFaces of them.
+std::vector<int32_t> facesBeside(const TriMesh& mesh, int32_t h) {
+  std::vector<int32_t> faces{TriMesh::face(h)};
+  for (size_t q = 0; q < faces.size(); ++q) {
+    const int32_t f = faces[q];
+    for (int32_t e = 3 * f; e < 3 * f + 3; ++e) {
+      const int32_t t = mesh.twin(e);
+      if (t < 0 || e == h) continue;
+      const int32_t g = TriMesh::face(t);
+      if (std::find(faces.begin(), faces.end(), g) != faces.end()) continue;
+      if (static_cast<int64_t>(faces.size()) == kPocketFaces) return {};
+      faces.push_back(g);
+    }
+  }
+  return faces;
+}
+
+}  // namespace
+
+std::vector<BoundaryEar> boundaryEars(const TriMesh& mesh, const std::vector<int32_t>& loop) {
+  const int32_t n = static_cast<int32_t>(loop.size());
+  std::vector<int32_t> position(mesh.numVertices(), -1);
+  for (int32_t i = 0; i < n; ++i) position[loop[i]] = i;
+  std::vector<BoundaryEar> out;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    const Triangle& t = mesh.triangle(f);
+    const std::array<int32_t, 3> corners{position[t[0]], position[t[1]], position[t[2]]};
+    if (corners[0] >= 0 && corners[1] >= 0 && corners[2] >= 0) out.push_back({corners, mesh.faceArea(f)});
+  }
+  // Pockets: a chord cuts the disk in two; a side of at most kPocketFaces faces (the smaller, when both are) is
+  // bounded by the chord and the stretch of the loop between its ends, and collapses with that stretch.
+  for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) {
+    const int32_t tw = mesh.twin(h);
+    if (tw < 0 || tw < h) continue;
+    const int32_t i = position[mesh.tail(h)], k = position[mesh.head(h)];
+    if (i < 0 || k < 0) continue;
+    const std::vector<int32_t> left = facesBeside(mesh, h), right = facesBeside(mesh, tw);
+    if (left.empty() && right.empty()) continue;
+    const bool leftIsPocket = !left.empty() && (right.empty() || left.size() <= right.size());
+    const std::vector<int32_t>& pocket = leftIsPocket ? left : right;
+    // The loop keeps the surface on its left, so the side left of h (from loop[i] to loop[k]) is bounded by the
+    // stretch from k forward to i.
+    const int32_t start = leftIsPocket ? k : i, end = leftIsPocket ? i : k;
+    const int32_t length = (end - start + n) % n;
+    if (length < 2) continue;
+    double area = 0;
+    for (int32_t f : pocket) area += mesh.faceArea(f);
+    out.push_back({{start, (start + length / 2) % n, end}, area});
+  }
+  return out;
+}
+
+double worstEarRatio(const std::vector<Vec2>& polygon, const std::vector<BoundaryEar>& ears, double surfaceArea) {
+  const double scale = polygonArea(polygon) / surfaceArea;
+  double worst = std::numeric_limits<double>::infinity();
+  for (const BoundaryEar& ear : ears) {
+    if (!(ear.area3D > 0)) continue;
+    const Vec2 A = polygon[ear.corners[0]], B = polygon[ear.corners[1]], C = polygon[ear.corners[2]];
+    worst = std::min(worst, std::abs(cross(B - A, C - A)) / 2 / (ear.area3D * scale));
+  }
+  return worst;
+}
+
+int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 2>>& chords,
+                  const std::vector<BoundaryEar>& ears, double surfaceArea) {
+  const size_t n = points.size();
+  if (n < 3) return -1;
+  const std::vector<Vec2> input = points;
+  HullProjection projection;
+  int64_t moved = 0;
+  if (!projectOntoHull(points, projection, moved)) return -1;
+  // 1. Ears: lift the apex of every ear below its least area, then project onto the new hull (which moves the
+  //    neighbours a lift has left inside); repeat until every ear holds. Points only ever move outward, so this
+  //    settles on the least such polygon; a lift aims at kEarLiftTarget times the bound so that the neighbours'
+  //    later moves (which shrink an ear) rarely undo it.
+  if (!ears.empty() && surfaceArea > 0) {
+    for (int round = 0; round < kMaxEarRounds; ++round) {
+      if (!liftEars(points, ears, polygonArea(points) / surfaceArea, projection)) break;
+      int64_t ignored = 0;
+      if (!projectOntoHull(points, projection, ignored)) return -1;
+    }
+    moved = 0;
+    for (size_t i = 0; i < n; ++i)
+      if (norm(points[i]) > norm(input[i]) * (1 + 1e-12)) ++moved;
+  }
+  const std::vector<Vec2>& hull = projection.hull;
+  const std::vector<int64_t>& edgeOf = projection.edgeOf;
+  const std::vector<int64_t>& cornerOf = projection.cornerOf;
+  const std::vector<double>& along = projection.along;
+  const size_t h = hull.size();
   // 2. Hull edges along which an interior edge of the mesh joining two boundary vertices (a chord)
   //    would lie: its triangles would collapse. A point at a hull vertex lies on both adjacent edges.
   //    (Both ends may be hull corners, with the chord's third triangle corner inside the edge.)
@@ -157,6 +352,17 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
   return moved;
 }
 
+std::vector<double> fallbackRadii(const TriMesh& mesh, const SurfacePoint& source) {
+  std::vector<double> radius = dijkstraDistances(mesh, source);
+  const std::vector<double> heat = HeatMethod(mesh).distances(source);
+  const Vec3 S = position(mesh, source);
+  for (int32_t v = 0; v < mesh.numVertices(); ++v) {
+    const double straight = norm(mesh.position(v) - S);  // no path is shorter than the straight line
+    if (std::isfinite(heat[v])) radius[v] = std::min(radius[v], std::max(heat[v], straight));
+  }
+  return radius;
+}
+
 Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress,
                                        Timings* timings) {
   BoundaryMap map;
@@ -186,19 +392,32 @@ Expected<BoundaryMap> measuredBoundary(const TriMesh& mesh, const SurfacePoint& 
   if (!traced) return traced.error();
   const PathBatch& batch = traced.value();
   record(timings, "trace", traceTime.ms());
-  std::vector<double> fallback;
+  // Radii: the straightest distance; a failed trace, or a reached one longer than kOutlierFactor times the
+  // edge-graph distance (an upper bound of the geodesic distance, so no straightest path that long is plausible),
+  // takes fallbackRadii instead. The graph distance is computed only when some trace is longer than
+  // kOutlierFactor times the straight line (the graph distance is never shorter, so no other can be an outlier).
+  std::vector<double> graph, estimate;  // computed when first needed
+  auto outlying = [&](int32_t v, double length) {
+    if (!(length > kOutlierFactor * norm(mesh.position(v) - S))) return false;
+    if (graph.empty()) graph = dijkstraDistances(mesh, source);
+    return length > kOutlierFactor * graph[v];
+  };
   map.polygon.resize(n);
   for (size_t i = 0; i < n; ++i) {
+    const int32_t v = map.loop[i];
     double r = batch.length[i];
-    if (batch.status[i] != TraceStatus::Reached) {
-      if (fallback.empty()) fallback = dijkstraDistances(mesh, source);
-      r = fallback[map.loop[i]];
-      ++map.fallbacks;
+    const bool failed = batch.status[i] != TraceStatus::Reached;
+    if (failed || outlying(v, r)) {
+      if (estimate.empty()) estimate = fallbackRadii(mesh, source);
+      r = estimate[v];
+      ++(failed ? map.fallbacks : map.outliers);
     }
     const double theta = kTwoPi * cumulative[i] / total;
     map.polygon[i] = {r * std::cos(theta), r * std::sin(theta)};
   }
-  map.movedToHull = convexify(map.polygon, boundaryChords(mesh, map.loop));
+  double surfaceArea = 0;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) surfaceArea += mesh.faceArea(f);
+  map.movedToHull = convexify(map.polygon, boundaryChords(mesh, map.loop), boundaryEars(mesh, map.loop), surfaceArea);
   if (map.movedToHull < 0)
     return Error{ErrorCode::Topology,
                  "the measured boundary does not surround the source (a boundary edge "

@@ -162,6 +162,7 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
       result.boundaryLoop = boundary.loop;
       result.metrics = std::move(metrics);
       result.fallbacks = boundary.fallbacks;
+      result.outliers = boundary.outliers;
       result.residual = residual;
     }
   }

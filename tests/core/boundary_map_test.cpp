@@ -1,12 +1,18 @@
-// The boundary polygon of a map: convexify lifts the points a chord would collapse, and the measured
-// boundary stays bijective where a boundary edge points at the source.
+// The boundary polygon of a map: convexify lifts the points a chord would collapse, the measured
+// boundary stays bijective where a boundary edge points at the source, keeps every ear of a jagged boundary
+// above its stated least area, and gives failed traces radii between the straight line and the edge graph that
+// are close to the true geodesic distance.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "straightest/boundary_map.hpp"
+#include "straightest/geodesic_distance.hpp"
 #include "straightest/parameterize.hpp"
+#include "straightest/samples.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {
@@ -54,6 +60,119 @@ TEST(MeasuredBoundary, AnEdgePointingAtTheSourceKeepsTheMapBijective) {
     EXPECT_TRUE(p.value().metrics.bijective) << weightKindName(w) << ": " << p.value().metrics.flipped << " flipped, "
                                              << p.value().metrics.degenerate << " degenerate";
   }
+}
+
+/// A staircase disk: the unit cells of a 15 × 15 grid whose centres lie within 5.6 of the middle, lifted
+/// through height(x, y). Each cell is split along its rising diagonal, so the convex steps of the staircase
+/// are ears (faces whose three corners are on the boundary).
+template <class Height>
+TriMesh staircaseDisk(Height height) {
+  const TriMesh flat = testing::gridOfCells(15,
+                                            [](int i, int j) { return std::hypot(i + 0.5 - 7, j + 0.5 - 7) < 5.6; });
+  std::vector<Vec3> p = flat.positions();
+  for (Vec3& x : p) x.z = height(x.x - 7, x.y - 7);
+  return testing::buildOrFail(p, flat.triangles());
+}
+
+double surfaceArea(const TriMesh& mesh) {
+  double a = 0;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) a += mesh.faceArea(f);
+  return a;
+}
+
+void expectEveryEarAboveItsLeastArea(const TriMesh& mesh) {
+  ASSERT_EQ(mesh.boundaryLoops().size(), 1u);
+  const int32_t middle = 7 * 15 + 7;
+  const BoundaryMap boundary = measuredBoundary(mesh, SurfacePoint::vertex(middle)).value();
+  const std::vector<BoundaryEar> ears = boundaryEars(mesh, boundary.loop);
+  int64_t faceEars = 0;
+  for (const BoundaryEar& ear : ears) {
+    if (std::abs(ear.area3D - 0.5) > 0.25) continue;  // a single grid triangle (on the bump, a little larger)
+    ++faceEars;
+  }
+  ASSERT_GE(faceEars, 8) << "the staircase must have ears for this test to mean anything";
+  const double area = surfaceArea(mesh);
+  EXPECT_GE(worstEarRatio(boundary.polygon, ears, area), kEarAreaFraction);
+  // Stated for every ear: its corners' triangle, at the map's scale (the polygon's area over the surface's).
+  double twice = 0;
+  const size_t n = boundary.polygon.size();
+  for (size_t i = 0; i < n; ++i) twice += cross(boundary.polygon[i], boundary.polygon[(i + 1) % n]);
+  const double scale = twice / 2 / area;
+  for (const BoundaryEar& ear : ears) {
+    const Vec2 a = boundary.polygon[ear.corners[0]], b = boundary.polygon[ear.corners[1]],
+               c = boundary.polygon[ear.corners[2]];
+    EXPECT_GE(std::abs(cross(b - a, c - a)) / 2, kEarAreaFraction * ear.area3D * scale)
+        << "ear at loop positions " << ear.corners[0] << ", " << ear.corners[1] << ", " << ear.corners[2];
+  }
+  ParamOptions options;
+  options.source = SurfacePoint::vertex(middle);
+  const auto p = parameterize(mesh, options);
+  ASSERT_TRUE(p.ok()) << p.error().message;
+  EXPECT_TRUE(p.value().metrics.bijective);
+  // Without the lift, the ears on the straight hull edges would be slivers and dominate the stretch.
+  options.boundary = BoundaryKind::Circle;
+  const auto circle = parameterize(mesh, options);
+  ASSERT_TRUE(circle.ok()) << circle.error().message;
+  EXPECT_LT(p.value().metrics.l2, circle.value().metrics.l2);
+}
+
+TEST(MeasuredBoundary, EveryEarOfAFlatStaircaseKeepsItsLeastArea) {
+  expectEveryEarAboveItsLeastArea(staircaseDisk([](double, double) { return 0.0; }));
+}
+
+TEST(MeasuredBoundary, EveryEarOfAStaircaseOnABumpKeepsItsLeastArea) {
+  expectEveryEarAboveItsLeastArea(staircaseDisk([](double x, double y) { return 2 * std::exp(-(x * x + y * y) / 8); }));
+}
+
+/// Checks fallbackRadii from the middle vertex of an n × n grid lifted by `place` against `exact` (the smooth
+/// surface's geodesic distance): never above the edge graph, never below the straight line, and within the heat
+/// method's accuracy (a few percent) of the exact value.
+template <class Place, class Exact>
+void expectFallbackRadiiNearTheGeodesic(int n, Place place, Exact exact) {
+  const TriMesh mesh = makeGrid(n, place, GridDiagonals::Alternating);
+  const int32_t middle = (n / 2) * n + n / 2;
+  const SurfacePoint source = SurfacePoint::vertex(middle);
+  const std::vector<double> radius = fallbackRadii(mesh, source);
+  const std::vector<double> graph = dijkstraDistances(mesh, source);
+  double worst = 0, graphWorst = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int32_t v = j * n + i;
+      if (v == middle) continue;
+      EXPECT_LE(radius[v], graph[v]) << "vertex " << v;
+      EXPECT_GE(radius[v], norm(mesh.position(v) - mesh.position(middle)) * (1 - 1e-12)) << "vertex " << v;
+      const double e = exact(i, j);
+      worst = std::max(worst, std::abs(radius[v] - e) / e);
+      graphWorst = std::max(graphWorst, std::abs(graph[v] - e) / e);
+    }
+  EXPECT_LT(worst, 0.05);
+  EXPECT_LT(worst, graphWorst);  // closer than the edge graph it replaces
+}
+
+TEST(FallbackRadii, AreWithinTheHeatMethodsAccuracyOfTheGeodesicOnACylinder) {
+  // A quarter of a cylinder of radius 2 (angle φ = 0.05 i), height 0.1 j: geodesics are helices, of length
+  // √((2 Δφ)² + Δz²).
+  const int n = 31;
+  auto place = [](int i, int j) { return Vec3{2 * std::cos(0.05 * i), 2 * std::sin(0.05 * i), 0.1 * j}; };
+  expectFallbackRadiiNearTheGeodesic(n, place, [&](int i, int j) {
+    return std::hypot(2 * 0.05 * (i - n / 2), 0.1 * (j - n / 2));
+  });
+}
+
+TEST(FallbackRadii, AreWithinTheHeatMethodsAccuracyOfTheGeodesicOnACone) {
+  // A cone of half-angle 30° (apex at the origin), slant distance ρ = 1 + 0.05 j, angle φ = 0.04 i around the
+  // axis. Unrolled, φ becomes ψ = φ sin 30° and geodesics are straight: √(ρ² + ρ₀² − 2 ρ ρ₀ cos Δψ).
+  const int n = 31;
+  const double s = std::sin(testing::kPi / 6), c = std::cos(testing::kPi / 6);
+  auto place = [&](int i, int j) {
+    const double rho = 1 + 0.05 * j, phi = 0.04 * i;
+    return Vec3{rho * s * std::cos(phi), rho * s * std::sin(phi), rho * c};
+  };
+  const double rho0 = 1 + 0.05 * (n / 2);
+  expectFallbackRadiiNearTheGeodesic(n, place, [&](int i, int j) {
+    const double rho = 1 + 0.05 * j, dpsi = 0.04 * (i - n / 2) * s;
+    return std::sqrt(rho * rho + rho0 * rho0 - 2 * rho * rho0 * std::cos(dpsi));
+  });
 }
 
 }  // namespace

@@ -34,6 +34,17 @@ TEST(ResolveTargets, ExpandsBoundaryEntriesInPlaceAndNamesTheBadTarget) {
   EXPECT_NE(closed.error().message.find("closed"), std::string::npos);
 }
 
+TEST(TraceStraightestPaths, AClosedMeshWithExplicitTargetsReportsItsBaseNormalFallback) {
+  // No boundary loop, so no virtual faces: the base normal is the area-weighted normal, and the batch says so.
+  const TriMesh mesh = testing::icosphere(1);
+  const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(0),
+                                                {SurfacePoint::vertex(3), SurfacePoint::vertex(7)}, TraceOptions{false})
+                              .value();
+  EXPECT_TRUE(batch.base.fallback);
+  EXPECT_NE(batch.base.note.find("closed"), std::string::npos) << batch.base.note;
+  EXPECT_EQ(batch.status.size(), 2u);
+}
+
 TEST(TraceStraightestPaths, DirectionsSpanTheCuttingPlaneWithTheBaseNormal) {
   const TriMesh mesh = makeSample("saddle").value();
   const SurfacePoint source = resolveSource(mesh, std::nullopt).value();

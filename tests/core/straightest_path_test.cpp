@@ -542,8 +542,8 @@ TEST(StraightestPathTracer, NearDuplicateVerticesGiveWellFormedWalks) {
 
 TEST(StraightestPathOnASphericalCap, AlmostClosedCapGivesWellFormedWalksThatAgreeWithTheBatch) {
   // A sphere with a small hole at the bottom (polar angle π − 0.05), traced from the pole to the rim:
-  // the base normal is the fallback (see BasePlane.AlmostClosedCap...); the sections wrap almost all
-  // the way around the sphere.
+  // the base normal is the mean of nearly cancelling virtual-face normals (see BasePlane.AlmostClosedCap...);
+  // the sections wrap almost all the way around the sphere.
   const TriMesh mesh = makeSphericalCap(1.0, kPi - 0.05, 24);
   const SurfacePoint pole = SurfacePoint::vertex(0);
   const std::vector<SurfacePoint> rim = boundaryTargets(mesh);

@@ -4,9 +4,13 @@
 // Base normal at S (mesh with boundary): the normalized mean of the unit normals of the virtual
 // triangles (S, b_i, b_i+1) fanned from S over consecutive vertices of the longest boundary loop
 // (closing the loop), oriented to agree with the area-weighted normal at S (the surface's side; the
-// mesh's total normal sum would flip it near the hole of a nearly closed surface). If that mean nearly
-// cancels (|mean| < kBaseNormalCancel, e.g. a slit-like boundary) the area-weighted normal at S is used
-// and `fallback` says so. Closed meshes: the area-weighted normal at S.
+// mesh's total normal sum would flip it near the hole of a nearly closed surface). The paper's definition is
+// kept however short the mean is (a nearly closed cap's mean is ~0.016 long, and still the right plane), except
+// where it is numerically zero: |sum| ≤ kBaseNormalCancel · (sum of the unit normals' lengths). Summing k unit
+// vectors rounds each component by ~k · 1e-16, so a sum below 1e-12 of k is rounding noise with no direction
+// (e.g. a sphere slit along a meridian, whose virtual faces pair up with opposite normals); there, and where
+// every virtual face is degenerate, the area-weighted normal at S is used and `fallback` says so. Closed
+// meshes: the area-weighted normal at S, also reported as a fallback.
 //
 // Cutting plane for D: through S with normal m = normalize(n × (D − S)); undefined (nullopt) when
 // D == S or D − S is within kCuttingPlaneMinSine of the base normal (|n × (D − S)| <= 1e-8 · |D − S|):
@@ -21,13 +25,13 @@
 
 namespace straightest {
 
-inline constexpr double kBaseNormalCancel = 0.05;
+inline constexpr double kBaseNormalCancel = 1e-12;
 inline constexpr double kCuttingPlaneMinSine = 1e-8;
 
 struct BasePlane {
   Vec3 origin;            // S
   Vec3 normal;            // unit
-  bool fallback = false;  // true when the area-weighted normal at S was used instead of virtual faces
+  bool fallback = false;  // true when the area-weighted normal at S was used instead of virtual faces (closed, too)
   std::string note;       // why, when fallback (or "closed mesh")
 };
 

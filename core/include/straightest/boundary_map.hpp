@@ -3,10 +3,20 @@
 //  - measured: boundary vertex b_i goes to r_i (cos θ_i, sin θ_i), θ_i = 2π · (cumulative 3D angle
 //    ∠(b_j − S, b_j+1 − S), j < i) / (sum over the loop), each angle raised to at least kMinAngleStep
 //    of the mean (an edge pointing at S would otherwise put two points on one ray), r_i = straightest
-//    distance S → b_i. A failed
-//    trace gets the edge-graph (Dijkstra) distance from S instead and is counted as a fallback.
+//    distance S → b_i. A failed trace, or a reached one longer than kOutlierFactor × the edge-graph distance
+//    (an upper bound of the geodesic distance: no straightest path should be that much longer; counted as an
+//    outlier), gets fallbackRadii instead: the heat method's distance clamped to [straight line, edge graph].
 //    Then the polygon is made convex: a point strictly inside the convex hull moves radially outward
-//    onto the hull (a hull corner turning by a sine below 1e-9 counts as straight). Where an interior mesh edge joining
+//    onto the hull (a hull corner turning by a sine below 1e-9 counts as straight).
+//    Ears and pockets (boundaryEars: faces with three boundary corners, and the ≤ kPocketFaces faces a chord
+//    cuts off) would collapse onto straight hull edges. So the apex of each one below its least area is lifted
+//    radially (far enough for the ear to hold once its neighbours are projected onto the new hull), the points are
+//    projected onto the new hull, and this repeats (points only move out; ≤ kMaxEarRounds rounds). GUARANTEE (when the
+//    rounds settle, which they did on every patch measured): for every ear, the triangle of its corners (a pocket: its
+//    two ends and the middle of its stretch of the loop) has 2D area ≥ kEarAreaFraction × its 3D area × the map's scale
+//    (polygon area / surface area) — worstEarRatio ≥ kEarAreaFraction. An ear that already meets it moves nothing, so a
+//    flat convex patch (its ears at their true shape) still reproduces itself exactly.
+//    Where an interior mesh edge joining
 //    two boundary vertices (a chord) would then lie on one straight hull edge (its triangles collapse: the map could
 //    not be bijective; Floater's condition for weakly convex boundaries), the points on that edge are lifted onto a
 //    shallow parabola over it (sagitta ≤ kBulge · edge length / 4, limited by the hull's turning angles at both ends),
@@ -28,8 +38,14 @@
 
 namespace straightest {
 
-inline constexpr double kBulge = 0.05;         // end slope of the parabola (sagitta = kBulge · L / 4)
-inline constexpr double kMinAngleStep = 0.01;  // measured: least polar-angle step, as a fraction of the mean
+inline constexpr double kBulge = 0.05;           // end slope of the parabola (sagitta = kBulge · L / 4)
+inline constexpr double kMinAngleStep = 0.01;    // measured: least polar-angle step, as a fraction of the mean
+inline constexpr double kEarAreaFraction = 0.1;  // measured: least 2D area of an ear / (its 3D area × map scale)
+inline constexpr double kEarLiftTarget = 1.5;    // a lifted ear aims at this multiple of its least area
+inline constexpr int64_t kPocketFaces = 16;      // a chord's side of at most this many faces is a pocket
+inline constexpr double kMaxEarLift = 2;         // a lift at most doubles an apex's radius in one round
+inline constexpr int kMaxEarRounds = 64;         // lift-and-project rounds before giving up (never seen reached)
+inline constexpr double kOutlierFactor = 1.5;    // measured: a reached trace longer than this × graph distance
 
 enum class BoundaryKind { Measured, Circle, Square };
 const char* boundaryKindName(BoundaryKind k);
@@ -40,7 +56,13 @@ struct BoundaryMap {
   std::vector<Vec2> polygon;  // their positions in the plane
   int64_t fallbacks = 0;      // measured: traces that failed and used the Dijkstra radius
   int64_t movedToHull = 0;    // measured: points moved outward by the convexification
+  int64_t outliers = 0;       // measured: reached traces implausibly long (see kOutlierFactor), radius replaced
 };
+
+/// The radius a failed or outlying trace gets, per vertex: the heat method's geodesic distance from the source,
+/// kept between the straight-line distance (no path is shorter; on coarse patches the heat method can fall far
+/// below it) and the edge-graph distance (an upper bound, which overestimates by 4–15 % on real patches).
+std::vector<double> fallbackRadii(const TriMesh& mesh, const SurfacePoint& source);
 
 /// Requires a disk (checked by the caller). `source` must be an interior surface point for measured.
 /// Records the time of its traces as "trace" in `timings`.
@@ -63,10 +85,25 @@ UnitSquareFrame unitSquareFrame(const std::vector<Vec2>& polygon);
 /// Interior edges of the mesh whose two ends are both on the loop ("chords"), as indices into the loop.
 std::vector<std::array<int32_t, 2>> boundaryChords(const TriMesh& mesh, const std::vector<int32_t>& loop);
 
+/// A face whose three corners are all on the loop (an "ear"): its corners as indices into the loop, its 3D area.
+struct BoundaryEar {
+  std::array<int32_t, 3> corners;
+  double area3D = 0;
+};
+std::vector<BoundaryEar> boundaryEars(const TriMesh& mesh, const std::vector<int32_t>& loop);
+
+/// The least over the ears (of positive 3D area) of (2D area in the polygon) / (3D area × scale), where the
+/// scale is the polygon's area over surfaceArea (the mean area ratio of a map with that boundary); +inf
+/// without ears.
+double worstEarRatio(const std::vector<Vec2>& polygon, const std::vector<BoundaryEar>& ears, double surfaceArea);
+
 /// Moves points strictly inside the convex hull of `points` radially (from the origin) onto the hull,
 /// then bulges the hull edges along which one of `chords` (pairs of indices into points) would lie (its
 /// triangles would collapse; see the file comment). The origin must be strictly inside the hull; returns the number of
 /// points moved onto the hull, or -1 when the origin is not inside.
-int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 2>>& chords);
+/// With `ears` (and the surface's area), every ear's apex is first lifted until worstEarRatio ≥ kEarAreaFraction
+/// (see the file comment).
+int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_t, 2>>& chords,
+                  const std::vector<BoundaryEar>& ears = {}, double surfaceArea = 0);
 
 }  // namespace straightest

@@ -59,7 +59,8 @@ struct Parameterization {
   std::vector<Vec2> boundaryPolygon;  // the chosen boundary, in the same [0, 1]² frame as uv
   std::vector<int32_t> boundaryLoop;
   StretchMetrics metrics;
-  int64_t fallbacks = 0;                      // failed traces that used the Dijkstra radius (measured)
+  int64_t fallbacks = 0;                      // failed traces that used the geodesic-estimate radius (measured)
+  int64_t outliers = 0;                       // reached traces too long to trust, radius replaced (measured)
   int64_t weightFallbacks = 0;                // vertices whose weights fell back to uniform
   double residual = 0;                        // relative residual of the linear solve
   std::vector<BoundaryCandidate> candidates;  // auto: every boundary tried

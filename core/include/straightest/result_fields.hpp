@@ -137,6 +137,7 @@ void visitFields(const Parameterization& p, V& v) {
   v.count("flipped", m.flipped);
   v.count("degenerate", m.degenerate);
   v.count("fallbacks", p.fallbacks);
+  v.count("outliers", p.outliers);
   v.count("weightFallbacks", p.weightFallbacks);
   v.object("angleDistortion", [&](auto& o) {
     o.number("mean", m.angleDistortionMean);
