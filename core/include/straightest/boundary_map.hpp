@@ -31,7 +31,9 @@ namespace straightest {
 inline constexpr double kBulge = 0.05;         // end slope of the parabola (sagitta = kBulge · L / 4)
 inline constexpr double kMinAngleStep = 0.01;  // measured: least polar-angle step, as a fraction of the mean
 
-enum class BoundaryKind { Measured, Circle, Square };
+// Free: no fixed polygon; the boundary moves with the distortion-minimizing refinement
+// (free_boundary.hpp, run by parameterize).
+enum class BoundaryKind { Measured, Circle, Square, Free };
 const char* boundaryKindName(BoundaryKind k);
 
 struct BoundaryMap {
