@@ -1,8 +1,10 @@
 // Benchmark of every stage on one mesh, as one JSON line: load, source, base plane, all-boundary
-// traces, then the measured-boundary parameterization's boundary, weights, solve and metrics; the
-// median of `repeats` runs per stage and the process's peak memory. Built natively and to WASM from
-// this one source so scripts/bench.mjs can put the two side by side. Never pass/fail.
-//   bench_stages TARGET MESH [REPEATS]     MESH: a file, heightfield:N or sample:NAME
+// traces, then the measured-boundary parameterization's boundary, weights, solve and metrics, then the
+// free boundary's refinement of that map ("refine", and its metrics in "refine_metrics"); the median
+// of `repeats` runs per stage and the process's peak memory. Built natively and to WASM from this one
+// source so scripts/bench.mjs can put the two side by side (the refinement runs the same iterations
+// in both: compare per run, or per iteration with free_iterations). Never pass/fail.
+//   bench_stages TARGET MESH [REPEATS] [MAX_ITERATIONS]     MESH: a file, heightfield:N or sample:NAME
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -44,11 +46,16 @@ static Expected<TriMesh> open(const std::string& spec) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_stages TARGET MESH [REPEATS]\n");
+    std::fprintf(stderr, "usage: bench_stages TARGET MESH [REPEATS] [MAX_ITERATIONS]\n");
     return 2;
   }
   const std::string target = argv[1], spec = argv[2];
   const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
+  FreeBoundaryOptions free;
+  if (argc > 4) free.maxIterations = std::max(1, std::atoi(argv[4]));
+  double freeL2 = 0;
+  int32_t freeIterations = 0;
+  bool freeBijective = false;
   std::map<std::string, std::vector<double>> stage;
   int64_t vertices = 0, faces = 0, paths = 0, reached = 0, crossed = 0;
   double l2 = 0;
@@ -104,6 +111,17 @@ int main(int argc, char** argv) {
     }
     l2 = p.value().metrics.l2;
     bijective = p.value().metrics.bijective;
+    // The free boundary from this map (parameterize with boundary free does the same when it is bijective).
+    Timings ft;
+    const auto refined = refineParameterization(mesh, p.value(), free, {}, &ft);
+    if (!refined) {
+      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                  refined.error().message.c_str());
+      return 2;
+    }
+    freeL2 = refined.value().metrics.l2;
+    freeIterations = refined.value().iterations;
+    freeBijective = refined.value().metrics.bijective;
     if (r < 0) {
       if (++warmups < 200 && msSince(warmStart) < 1500) --r;  // stay in the warm-up
       continue;
@@ -113,16 +131,19 @@ int main(int argc, char** argv) {
     stage["solve"].push_back(pt["solve"]);
     stage["metrics"].push_back(pt["metrics"]);
     stage["param_total"].push_back(pt["total"]);
+    stage["refine"].push_back(ft["refine"]);
+    stage["refine_metrics"].push_back(ft["metrics"]);
   }
   std::printf(
       "{\"target\":\"%s\",\"mesh\":\"%s\",\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,\"paths\":%lld,"
-      "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
+      "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"free_l2\":%.6f,"
+      "\"free_bijective\":%s,\"free_iterations\":%d,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
       target.c_str(), spec.c_str(), static_cast<long long>(vertices), static_cast<long long>(faces), repeats,
       static_cast<long long>(paths), static_cast<long long>(reached), static_cast<long long>(crossed), l2,
-      bijective ? "true" : "false", peakMemoryMB());
+      bijective ? "true" : "false", freeL2, freeBijective ? "true" : "false", freeIterations, peakMemoryMB());
   bool first = true;
-  for (const char* name :
-       {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics", "param_total"}) {
+  for (const char* name : {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics",
+                           "param_total", "refine", "refine_metrics"}) {
     std::vector<double>& v = stage[name];
     std::sort(v.begin(), v.end());
     std::printf("%s\"%s\":%.3f", first ? "" : ",", name, v[v.size() / 2]);

@@ -113,7 +113,7 @@ class MeshHandle {
   }
 
   val parameterizeMesh(const val& sourceJs, const std::string& boundary, const std::string& weights,
-                       const std::string& solver, const val& progress) const {
+                       const std::string& solver, const val& freeJs, const val& progress) const {
     return respond([&]() -> Expected<val> {
       ParamOptions options;
       auto source = sourceFrom(sourceJs);
@@ -124,6 +124,9 @@ class MeshHandle {
       if (!w) return w.error();
       auto linear = parseLinearSolver(solver);
       if (!linear) return linear.error();
+      auto free = freeOptionsFrom(freeJs);
+      if (!free) return free.error();
+      options.free = free.value();
       options.source = source.value();
       options.boundary = b.value();
       options.weights = w.value();
@@ -143,7 +146,9 @@ class MeshHandle {
     return respond([&]() -> Expected<val> {
       auto source = sourceFrom(sourceJs);
       if (!source) return source.error();
-      auto kinds = namesFrom(kindsJs, kBoundaryKindNames, "boundary");
+      // Undefined: every kind with a polygon (not free, which has none without its refinement).
+      auto kinds = kindsJs.isUndefined() ? Expected<std::vector<BoundaryKind>>(polygonBoundaryKinds())
+                                         : namesFrom(kindsJs, kBoundaryKindNames, "boundary");
       if (!kinds) return kinds.error();
       auto polygons = boundaryPolygons(*mesh_, source.value(), kinds.value(), progressFrom(progress));
       if (!polygons) return polygons.error();
@@ -154,7 +159,7 @@ class MeshHandle {
   }
 
   val compare(const val& sourceJs, const val& boundariesJs, const val& weightsJs, const std::string& solver,
-              const val& progress) const {
+              const val& freeJs, const val& progress) const {
     return respond([&]() -> Expected<val> {
       auto source = sourceFrom(sourceJs);
       if (!source) return source.error();
@@ -164,8 +169,10 @@ class MeshHandle {
       if (!weights) return weights.error();
       auto linear = parseLinearSolver(solver);
       if (!linear) return linear.error();
+      auto free = freeOptionsFrom(freeJs);
+      if (!free) return free.error();
       auto comparison = compareParameterizations(*mesh_, source.value(), boundaries.value(), weights.value(),
-                                                 linear.value(), progressFrom(progress));
+                                                 linear.value(), progressFrom(progress), free.value());
       if (!comparison) return comparison.error();
       return toJs(comparison.value());
     });
@@ -247,6 +254,9 @@ val nameLists() {
   o.set("traceStatuses", stringArray(namesOf(kTraceStatusNames)));
   o.set("boundaryKinds", stringArray(namesOf(kBoundaryKindNames)));
   o.set("boundaryChoices", stringArray(namesOf(kBoundaryKindNames, kAutoName)));
+  std::vector<std::string> polygonKinds;
+  for (BoundaryKind k : polygonBoundaryKinds()) polygonKinds.push_back(boundaryKindName(k));
+  o.set("polygonBoundaryKinds", stringArray(polygonKinds));
   o.set("weightKinds", stringArray(namesOf(kWeightKindNames)));
   o.set("solvers", stringArray(namesOf(kLinearSolverNames)));
   o.set("distanceMethods", stringArray(namesOf(kDistanceMethodNames)));

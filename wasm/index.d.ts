@@ -116,25 +116,52 @@ export interface StraightestPathsOptions {
 /** (stage, fraction in [0, 1]) → return false to cancel. Called synchronously from the WASM work. */
 export type ProgressCallback = (stage: string, fraction: number) => boolean | void;
 
-export type BoundaryKind = 'measured' | 'circle' | 'square';
+/**
+ * Where the boundary goes: 'measured' (the paper's straightest distances and angles), 'circle',
+ * 'square', or 'free' (the measured map — the circle's when the measured one is not bijective —
+ * refined with every vertex, boundary included, free to move; it never folds).
+ */
+export type BoundaryKind = 'measured' | 'circle' | 'square' | 'free';
+/** The fixed boundaries a free refinement starts from. */
+export type InitBoundary = 'measured' | 'circle';
 export type WeightKind = 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform';
 export type LinearSolver = 'multigrid' | 'lu' | 'bicgstab';
 export type DistanceMethod = 'heat' | 'dijkstra';
 
 export interface ParameterizeOptions {
-  /** Center of the measured boundary (default 'auto'); must be interior. */
+  /** Center of the measured boundary (default 'auto'); must be interior (also for 'free' and 'auto'). */
   source?: SurfacePoint | 'auto';
   /**
-   * Default 'measured'; 'auto' tries all three and keeps the preferred map: a bijective map beats
-   * any other, then the lower L2 stretch; among non-bijective maps the fewer flipped + degenerate
-   * triangles (the same rule as compareParameterizations' `best`).
+   * Default 'measured'; 'auto' tries measured, circle, square and free (refined from measured when its
+   * map is bijective, else from circle, without a second solve) and keeps the preferred map: a
+   * bijective map beats any other, then the lower L2 stretch; among non-bijective maps the fewer
+   * flipped + degenerate triangles; ties keep the earlier kind (the same rule as
+   * compareParameterizations' `best`).
    */
   boundary?: BoundaryKind | 'auto';
   weights?: WeightKind;
   /** Default 'multigrid' (BiCGSTAB + algebraic multigrid); 'lu' direct; 'bicgstab' with ILUT. */
   solver?: LinearSolver;
-  /** Stages 'source', 'trace', 'weights', 'solve', 'metrics'; return false to cancel (throws 'cancelled'). */
+  /** Free boundary: refinement iterations at most (default 200; a positive integer). */
+  maxIterations?: number;
+  /** Free boundary: stop refining after this many milliseconds (default 60000); then converged is false. */
+  timeBudgetMs?: number;
+  /**
+   * Stages 'source', 'trace', 'weights', 'solve', 'metrics', and for 'free' and 'auto' 'refine' (then
+   * 'metrics' again); return false to cancel (throws 'cancelled'; the mesh stays usable).
+   */
   onProgress?: ProgressCallback;
+}
+
+/** A map parameterize tried: its stretch and bad-triangle counts. */
+export interface BoundaryCandidate {
+  boundary: BoundaryKind;
+  l2: number;
+  linf: number;
+  flipped: number;
+  degenerate: number;
+  /** Pairs of boundary edges that cross in the plane (only a free boundary can have any). */
+  overlaps: number;
 }
 
 export interface Parameterization {
@@ -145,36 +172,68 @@ export interface Parameterization {
   uv: Float32Array;
   /** L2 texture stretch per face (Infinity for flipped or degenerate faces). */
   faceStretch: Float32Array;
-  /** The boundary polygon (u, v per boundary vertex) in the uv frame, and its vertices. */
+  /**
+   * The boundary polygon (u, v per boundary vertex) in the uv frame, and its vertices. For 'free' it
+   * is the refined loop's uv: not convex.
+   */
   boundaryPolygon: Float32Array;
   boundaryLoop: Int32Array;
   /** Sander et al.'s stretch, 1 for an isometry; Infinity when the map is not bijective. */
   stretch: { l2: number; linf: number };
+  /** No flipped, no degenerate triangle and no boundary self-overlap. */
   bijective: boolean;
   flipped: number;
   degenerate: number;
+  /** Pairs of boundary edges that cross in the plane (the texture would be sampled twice there). */
+  overlaps: number;
   /** Measured boundary: traces that failed and used the edge-graph distance instead. */
   fallbacks: number;
   weightFallbacks: number;
   angleDistortion: { mean: number; max: number };
   areaDistortion: { mean: number; max: number };
-  /** Relative residual of the linear solve. */
+  /** Relative residual of the linear solve (the start's, for 'free'). */
   residual: number;
-  candidates: { boundary: BoundaryKind; l2: number; linf: number; flipped: number; degenerate: number }[];
-  timings: { source: number; trace: number; boundary: number; weights: number; solve: number; metrics: number; total: number };
+  /**
+   * The free refinement's start: 'measured' when its map is bijective, else 'circle'. null (and so
+   * are the five fields below) when the result's boundary is fixed.
+   */
+  init: InitBoundary | null;
+  /** Refinement iterations run (at most maxIterations). */
+  iterations: number | null;
+  /** Symmetric Dirichlet energy per unit area of the start (4 for an isometry; Infinity if it folds). */
+  energyInitial: number | null;
+  /** The same energy of the result (never above energyInitial when the start was bijective). */
+  energyFinal: number | null;
+  /** The relative-decrease rule stopped it (false: the iteration cap or the time budget did). */
+  converged: boolean | null;
+  /** The start had flipped or degenerate triangles and was untangled first. */
+  untangled: boolean | null;
+  /** Every map solved: 'auto' lists all four kinds; 'free' its start(s) and itself last. */
+  candidates: BoundaryCandidate[];
+  /** Milliseconds per stage; every stage is listed (0 when it did not run). */
+  timings: {
+    source: number; trace: number; boundary: number; weights: number; solve: number; refine: number;
+    metrics: number; total: number;
+  };
 }
 
 export interface BoundaryPolygonsOptions {
   /** Center of the measured boundary (default 'auto'); must be interior. */
   source?: SurfacePoint | 'auto';
-  /** Default ['measured', 'circle', 'square']. */
-  kinds?: BoundaryKind[];
+  /**
+   * Default: every kind with a polygon, ['measured', 'circle', 'square'] (st.polygonBoundaryKinds).
+   * 'free' has no polygon before its refinement: asking for it throws 'invalid_argument'.
+   */
+  kinds?: PolygonBoundaryKind[];
   /** Stage 'trace' (measured); return false to cancel (throws 'cancelled'). */
   onProgress?: ProgressCallback;
 }
 
+/** The boundary kinds with a polygon without a solve. */
+export type PolygonBoundaryKind = Exclude<BoundaryKind, 'free'>;
+
 export interface BoundaryPolygon {
-  boundary: BoundaryKind;
+  boundary: PolygonBoundaryKind;
   /**
    * u, v per loop vertex in exactly the [0, 1]² frame `parameterize({ boundary })` puts its uv and
    * boundaryPolygon in (for the convex-combination weights; cotan may leave the polygon's box); null
@@ -191,11 +250,15 @@ export interface BoundaryPolygon {
 export interface CompareOptions {
   /** One source for every cell (default 'auto'). */
   source?: SurfacePoint | 'auto';
-  /** Default ['measured', 'circle', 'square']. */
+  /** Default ['measured', 'circle', 'square', 'free']. */
   boundaries?: BoundaryKind[];
   /** Default ['shape-preserving', 'mean-value', 'cotan', 'uniform']. */
   weights?: WeightKind[];
   solver?: LinearSolver;
+  /** Free rows: refinement iterations at most (default 200). */
+  maxIterations?: number;
+  /** Free rows: refinement time budget in milliseconds (default 60000). */
+  timeBudgetMs?: number;
   /** Stage 'compare': the fraction of cells done; return false to cancel (throws 'cancelled'). */
   onProgress?: ProgressCallback;
 }
@@ -208,8 +271,16 @@ export interface ComparisonRow {
   linf: number | null;
   flipped: number | null;
   degenerate: number | null;
+  /** Pairs of boundary edges that cross in the plane. */
+  overlaps: number | null;
   bijective: boolean | null;
-  /** Wall time of this cell's parameterization. */
+  /** Free rows: the refinement's start ('measured' if its map is bijective, else 'circle'); else null. */
+  init: InitBoundary | null;
+  /** Free rows: refinement iterations; else null. */
+  iterations: number | null;
+  /** Free rows: whether the relative-decrease rule stopped the refinement; else null. */
+  converged: boolean | null;
+  /** Wall time of this cell's parameterization (a free row includes its start's solve). */
   timeMs: number;
   error: string | null;
   category: ErrorCategory | null;
@@ -259,8 +330,10 @@ export class Straightest {
   /** Bytes currently allocated inside WASM memory. */
   readonly heapUsedBytes: number;
   readonly traceStatuses: TraceStatus[];
-  /** ['measured', 'circle', 'square'] */
+  /** ['measured', 'circle', 'square', 'free'] */
   readonly boundaryKinds: BoundaryKind[];
+  /** The kinds boundaryPolygons gives without a solve: ['measured', 'circle', 'square']. */
+  readonly polygonBoundaryKinds: PolygonBoundaryKind[];
   /** The kinds and 'auto'. */
   readonly boundaryChoices: (BoundaryKind | 'auto')[];
   readonly weightKinds: WeightKind[];

@@ -92,19 +92,25 @@ export class Mesh {
   }
 
   /**
-   * Flattens a disk: boundary 'measured' (default), 'circle', 'square' or 'auto' (the preferred map of
-   * the three); weights 'shape-preserving' (default), 'mean-value', 'cotan' or 'uniform'.
+   * Flattens a disk: boundary 'measured' (default), 'circle', 'square', 'free' (the measured map — or
+   * the circle's when the measured one is not bijective — refined with its boundary free to move,
+   * never folding) or 'auto' (the preferred map of the four); weights 'shape-preserving' (default),
+   * 'mean-value', 'cotan' or 'uniform'. maxIterations and timeBudgetMs cap the free refinement.
    * Returns uv (2 floats per vertex, in [0, 1]²), per-face stretch and the metrics.
    */
-  parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid', onProgress } = {}) {
+  parameterize({
+    source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid',
+    maxIterations, timeBudgetMs, onProgress,
+  } = {}) {
     return unwrap(this.#live().parameterize(source, String(boundary), String(weights), String(solver),
-      progressCallback(onProgress)));
+      { maxIterations, timeBudgetMs }, progressCallback(onProgress)));
   }
 
   /**
    * The boundary polygon of each kind, without solving: in the [0, 1]² frame parameterize with that
    * boundary puts its uv in. One entry per kind: { boundary, polygon (2 floats per loop vertex, or
-   * null), loop, error, category }.
+   * null), loop, error, category }. Default kinds: every kind but 'free' (st.polygonBoundaryKinds),
+   * whose boundary exists only after its refinement; asking for 'free' throws 'invalid_argument'.
    */
   boundaryPolygons({ source = 'auto', kinds, onProgress } = {}) {
     return unwrap(this.#live().boundaryPolygons(source, kinds, progressCallback(onProgress))).polygons;
@@ -112,12 +118,15 @@ export class Mesh {
 
   /**
    * Every boundary × weights, parameterized and judged: { rows: [{ boundary, weights, l2, linf,
-   * flipped, degenerate, bijective, timeMs, error, category }], best } (best: the row boundary 'auto'
-   * would prefer, -1 when every row failed).
+   * flipped, degenerate, overlaps, bijective, init, iterations, converged, timeMs, error, category }],
+   * best } (best: the row boundary 'auto' would prefer, -1 when every row failed). Free rows refine
+   * their weights' measured (or circle) map; maxIterations and timeBudgetMs cap that refinement.
    */
-  compareParameterizations({ source = 'auto', boundaries, weights, solver = 'multigrid', onProgress } = {}) {
+  compareParameterizations({
+    source = 'auto', boundaries, weights, solver = 'multigrid', maxIterations, timeBudgetMs, onProgress,
+  } = {}) {
     return unwrap(this.#live().compareParameterizations(source, boundaries, weights, String(solver),
-      progressCallback(onProgress)));
+      { maxIterations, timeBudgetMs }, progressCallback(onProgress)));
   }
 
   /** The mesh as OBJ text (input vertex order); with uv (2 per vertex) also `vt` lines. */
@@ -147,8 +156,11 @@ export class Straightest {
   /** The trace statuses, in the core's order: 'reached' is the only success. */
   get traceStatuses() { return [...this.#names.traceStatuses]; }
 
-  /** The boundary kinds: ['measured', 'circle', 'square']. */
+  /** The boundary kinds: ['measured', 'circle', 'square', 'free']. */
   get boundaryKinds() { return [...this.#names.boundaryKinds]; }
+
+  /** The kinds boundaryPolygons gives without a solve: every kind but 'free'. */
+  get polygonBoundaryKinds() { return [...this.#names.polygonBoundaryKinds]; }
 
   /** What parameterize's `boundary` takes: the kinds and 'auto'. */
   get boundaryChoices() { return [...this.#names.boundaryChoices]; }

@@ -1,6 +1,8 @@
 // The adapters of js_values.hpp.
 #include "js_values.hpp"
 
+#include <cmath>
+
 namespace straightest::js {
 namespace {
 
@@ -91,6 +93,25 @@ BuildLimits limitsFrom(const val& options) {
   if (!mv.isUndefined()) limits.maxVertices = static_cast<int64_t>(mv.as<double>());
   if (!mf.isUndefined()) limits.maxFaces = static_cast<int64_t>(mf.as<double>());
   return limits;
+}
+
+Expected<FreeBoundaryOptions> freeOptionsFrom(const val& options) {
+  FreeBoundaryOptions free;
+  if (options.isUndefined() || options.isNull()) return free;
+  const val iterations = options["maxIterations"], budget = options["timeBudgetMs"];
+  if (!iterations.isUndefined() && !iterations.isNull()) {
+    const double n = iterations.isNumber() ? iterations.as<double>() : -1;
+    if (!(n >= 1 && n <= 2147483647.0 && n == std::floor(n)))
+      return Error{ErrorCode::InvalidArgument, "maxIterations must be a positive integer"};
+    free.maxIterations = static_cast<int32_t>(n);
+  }
+  if (!budget.isUndefined() && !budget.isNull()) {
+    const double ms = budget.isNumber() ? budget.as<double>() : -1;
+    if (!(ms > 0) || !std::isfinite(ms))
+      return Error{ErrorCode::InvalidArgument, "timeBudgetMs must be a positive number of milliseconds"};
+    free.timeBudgetMs = ms;
+  }
+  return free;
 }
 
 val stringArray(const std::vector<std::string>& names) {

@@ -1,7 +1,7 @@
 // js_values.hpp — the bindings' adapters between JS values and core types, and nothing else:
 // surface points ('auto' → nullopt), targets ('boundary' → BoundaryVertices), name lists, progress
-// functions, build limits, and JsWriter, the visitor of result_fields.hpp that writes each result as
-// a plain JS object with typed arrays for its large arrays. No policy: every decision is the core's.
+// functions, build limits, the free boundary's options, and JsWriter, the visitor of result_fields.hpp that writes each
+// result as a plain JS object with typed arrays for its large arrays. No policy: every decision is the core's.
 #pragma once
 #include <emscripten/val.h>
 
@@ -47,6 +47,10 @@ Progress progressFrom(const val& fn);
 
 /// { maxVertices, maxFaces } (either may be missing).
 BuildLimits limitsFrom(const val& options);
+
+/// The free boundary's { maxIterations, timeBudgetMs } (either may be missing: the core's default);
+/// InvalidArgument unless a positive integer / a positive number.
+Expected<FreeBoundaryOptions> freeOptionsFrom(const val& options);
 
 /// A name list as a JS array of strings.
 val stringArray(const std::vector<std::string>& names);

@@ -103,4 +103,5 @@ export const BOUNDARY_COLORS = {
   measured: '#f0b429', // the paper's boundary: the accent gold
   circle: '#4ea8ff',
   square: '#5fd08a',
+  free: '#e07be0', // the refined boundary: not convex, drawn from the loop's uv
 };

@@ -1,6 +1,6 @@
-// The "Compare" panel: every boundary kind with every weights in the worker (12 runs, with their
-// progress), as a table grouped by boundary with the best row marked and the row on display
-// outlined; clicking a row shows that combination.
+// The "Compare" panel: every boundary kind with every weights in the worker (with their progress),
+// as a table grouped by boundary with the best row marked and the row on display outlined; clicking
+// a row shows that combination. Free rows also say where their refinement started and its iterations.
 
 import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
@@ -62,7 +62,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       header.className = 'group';
       const th = document.createElement('th');
       th.scope = 'rowgroup';
-      th.colSpan = 5;
+      th.colSpan = 7;
       th.innerHTML = '<span class="dot"></span>';
       th.firstChild.style.background = BOUNDARY_COLORS[boundary];
       th.append(`${boundary} boundary`);
@@ -72,14 +72,21 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         tr.dataset.boundary = row.boundary;
         tr.dataset.weights = row.weights;
         tr.title = row.error ?? `Show ${row.boundary} / ${WEIGHT_LABELS[row.weights]}`;
+        const refine = row.init ? `${row.init} · ${row.iterations}${row.converged ? '' : '+'}` : '–';
         const cells = row.error
-          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', formatMs(row.timeMs).replace(' ms', '')]
+          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs).replace(' ms', '')]
           : [WEIGHT_LABELS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
-            String(row.flipped + row.degenerate), row.timeMs.toFixed(row.timeMs >= 100 ? 0 : 1)];
+            String(row.flipped + row.degenerate), String(row.overlaps), refine,
+            row.timeMs.toFixed(row.timeMs >= 100 ? 0 : 1)];
         for (const text of cells) tr.insertCell().textContent = text;
         if (best && row.boundary === best.boundary && row.weights === best.weights) tr.classList.add('best');
         if (row.error) tr.classList.add('failed');
         if (!row.error && row.flipped + row.degenerate > 0) tr.cells[3].classList.add('bad');
+        if (!row.error && row.overlaps > 0) tr.cells[4].classList.add('bad');
+        if (row.init) {
+          tr.cells[5].title = `refined from the ${row.init} map in ${row.iterations} iterations` +
+            (row.converged ? '' : ' (stopped by the iteration cap or the time budget)');
+        }
       }
     }
     table.hidden = false;

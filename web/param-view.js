@@ -26,6 +26,16 @@ const $ = (id) => document.getElementById(id);
 // work per solve; the button runs it, with progress and Cancel).
 const LARGE_MESH_VERTICES = 300_000;
 
+/** The boundary menu's words for the core's kinds (st.boundaryKinds) and 'auto'. */
+const BOUNDARY_CHOICES = {
+  measured: ['measured', 'straightest distances and angles from the center, made convex (the paper)'],
+  circle: ['circle', 'the unit circle by boundary arc length'],
+  square: ['square', 'the unit square by boundary arc length'],
+  free: ['free (refined)', 'the measured map (the circle\'s when that folds) refined with the boundary free to ' +
+    'move: less distortion, never folds'],
+  auto: ['auto (best)', 'every boundary, keeping the least L2 stretch'],
+};
+
 /** Saves `blob` under `name` through a temporary download link. */
 function download(blob, name) {
   const url = URL.createObjectURL(blob);
@@ -106,7 +116,22 @@ export function createParamView({ session, view, surface, pathSource }) {
 
   // ---------------------------------------------------------------- panels
 
-  const statsFields = ['l2', 'linf', 'bijective', 'flips', 'fallbacks', 'angle', 'area', 'time'];
+  const statsFields = ['l2', 'linf', 'bijective', 'flips', 'fallbacks', 'angle', 'area', 'refine', 'time'];
+
+  /** The boundary menu from the core's kinds (once the worker has named them), keeping the choice. */
+  function fillBoundaryMenu() {
+    const select = $('boundary-select');
+    const kinds = session.boundaryKinds;
+    if (!kinds.length || select.options.length === kinds.length + 1) return;
+    const chosen = select.value;
+    select.replaceChildren(...[...kinds, 'auto'].map((kind) => {
+      const [label, title] = BOUNDARY_CHOICES[kind] ?? [kind, ''];
+      const option = new Option(label, kind);
+      option.title = title;
+      return option;
+    }));
+    select.value = [...kinds, 'auto'].includes(chosen) ? chosen : kinds[0];
+  }
 
   function clearStats() {
     for (const field of statsFields) {
@@ -136,23 +161,36 @@ export function createParamView({ session, view, surface, pathSource }) {
       if (title) dd.title = title; else dd.removeAttribute('title');
     };
     const method = $('param-method');
-    method.textContent = `${requested === 'auto' ? 'auto → ' : ''}${reply.boundary} boundary · ` +
-      `${WEIGHT_LABELS[reply.weights]} weights`;
+    method.textContent = `${requested === 'auto' ? 'auto → ' : ''}${reply.boundary} boundary` +
+      `${reply.init ? ` (from ${reply.init})` : ''} · ${WEIGHT_LABELS[reply.weights]} weights`;
     method.title = reply.candidates.length > 1
       ? `least L2 stretch of ${reply.candidates.map((c) => `${c.boundary} ${formatMetric(c.l2)}`).join(', ')}`
       : '';
     set('l2', formatMetric(reply.stretch.l2), 'strong');
     set('linf', formatMetric(reply.stretch.linf));
     set('bijective', reply.bijective ? 'yes' : 'no', reply.bijective ? 'good' : 'bad');
-    set('flips', `${reply.flipped} / ${reply.degenerate}`, reply.flipped + reply.degenerate ? 'bad' : '');
+    set('flips', `${reply.flipped} / ${reply.degenerate} / ${reply.overlaps}`,
+      reply.flipped + reply.degenerate + reply.overlaps ? 'bad' : '',
+      'flipped triangles / degenerate triangles / pairs of boundary edges crossing in the plane');
     set('fallbacks', `${reply.fallbacks} / ${reply.weightFallbacks}`, '',
       'traces of the measured boundary that used the edge-graph distance / faces whose weights fell back');
     set('angle', `${formatMetric(reply.angleDistortion.mean)} / ${formatMetric(reply.angleDistortion.max)}`);
     set('area', `${formatMetric(reply.areaDistortion.mean)} / ${formatMetric(reply.areaDistortion.max)}`);
+    if (reply.init) {
+      set('refine', `from ${reply.init} · ${reply.iterations} it. · ${formatMetric(reply.energyInitial)} → ` +
+        `${formatMetric(reply.energyFinal)}${reply.untangled ? ' · untangled' : ''}`,
+      reply.converged ? '' : 'warn',
+      'the start of the refinement, its iterations and its symmetric Dirichlet energy per unit area (4 for an ' +
+        `isometry); ${reply.converged ? 'converged' : 'stopped by the iteration cap or the time budget'}` +
+        (reply.untangled ? '; the start had folded triangles and was untangled first' : ''));
+    } else {
+      set('refine', '–', '', 'only the free boundary is refined');
+    }
     const t = reply.timings;
-    set('time', `${formatMs(t.solve, '')} / ${formatMs(t.total)}`, '',
+    set('time', `${formatMs(t.solve, '')}${t.refine > 0 ? ` + ${formatMs(t.refine, '')}` : ''} / ${formatMs(t.total)}`, '',
       `source ${formatMs(t.source)}, trace ${formatMs(t.trace)}, boundary ${formatMs(t.boundary)}, ` +
-      `weights ${formatMs(t.weights)}, solve ${formatMs(t.solve)}, metrics ${formatMs(t.metrics)}; ` +
+      `weights ${formatMs(t.weights)}, solve ${formatMs(t.solve)}, refine ${formatMs(t.refine)}, ` +
+      `metrics ${formatMs(t.metrics)}; ` +
       `relative residual ${reply.residual.toExponential(1)}; ${formatMs(reply.timeMs)} in the worker ` +
       '(plus the other boundaries\' polygons)');
   }
@@ -177,7 +215,8 @@ export function createParamView({ session, view, surface, pathSource }) {
       overlays: reply.overlays,
       boundary: reply.boundary,
       heat: $('stretch-toggle').checked,
-      caption: `${WEIGHT_LABELS[reply.weights]} · L2 ${formatMetric(reply.stretch.l2)} · ` +
+      caption: `${reply.init ? `free from ${reply.init} · ` : ''}${WEIGHT_LABELS[reply.weights]} · ` +
+        `L2 ${formatMetric(reply.stretch.l2)} · ` +
         `L∞ ${formatMetric(reply.stretch.linf)}${reply.bijective ? '' : ' · not bijective'}`,
     });
   }
@@ -244,6 +283,9 @@ export function createParamView({ session, view, surface, pathSource }) {
       linf: reply.stretch.linf,
       bijective: reply.bijective,
       flipped: reply.flipped,
+      overlaps: reply.overlaps,
+      init: reply.init,
+      iterations: reply.iterations,
     };
     hooks.paramError = null;
     hooks.parameterizations += 1;
@@ -310,6 +352,7 @@ export function createParamView({ session, view, surface, pathSource }) {
 
   /** A new mesh is on display: everything shown belongs to the previous one. */
   session.addEventListener('meshchange', () => {
+    fillBoundaryMenu();
     runs.supersede();
     running = false;
     forget();

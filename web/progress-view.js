@@ -25,6 +25,7 @@ const STAGE_LABELS = {
   weights: 'weights',
   solve: 'solve',
   metrics: 'metrics',
+  refine: 'refine (free boundary)',
   overlays: 'other boundaries',
   compare: 'runs',
   export: 'write OBJ',
@@ -40,7 +41,7 @@ function requestTitle(type, payload) {
     case 'paths': return 'Straightest paths';
     case 'distances': return 'Heat distances';
     case 'parameterize': return `Parameterization (${payload.boundary ?? 'measured'} boundary)`;
-    case 'compare': return 'Comparison (12 runs)';
+    case 'compare': return 'Comparison (every boundary × weights)';
     case 'exportObj': return 'OBJ export';
     default: return null; // 'init' and the like: no group
   }

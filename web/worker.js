@@ -6,7 +6,8 @@
 //
 // Protocol (every request carries an `id`; the reply echoes it; 'init' comes first):
 //   → { id, type: 'init', moduleUrl }   ← { id, type: 'ready', samples: string[], boundaryKinds }
-//        (the boundary names mesh.parameterize() takes, 'auto' aside, in the core's order)
+//        (the boundary names mesh.parameterize() takes, 'auto' aside, in the core's order; 'free'
+//        among them)
 //   → { id, type: 'sample', name, restore? }                 ← { id, type: 'mesh', ... } (below)
 //   → { id, type: 'file', name, bytes: ArrayBuffer, restore? }  ← { id, type: 'mesh', ... }
 //        (the format follows the file name's extension, else the content)
@@ -37,7 +38,8 @@
 //        boundaryLoop transferred) plus timeMs and `overlays`: [{ boundary, polygon, error }], one per
 //        boundary kind — each boundary's polygon in the same [0,1]² frame (or polygon null and the
 //        core's message when that boundary failed), for the layout overlay: the chosen one from the
-//        parameterization, the others from mesh.boundaryPolygons() (no solve).
+//        parameterization, the others from mesh.boundaryPolygons() (no solve; the free boundary has no
+//        polygon before its refinement, so it is there only when it is the parameterization's).
 //   → { id, type: 'compare', source }                        ← { id, type: 'progress', stage:
 //        'compare', fraction, done, total } after each cell, then { id, type: 'comparison', source,
 //        rows: [{ boundary, weights, l2, linf, flipped, degenerate, bijective, timeMs, error,
@@ -53,8 +55,9 @@
 // the first one with `stages`, the request's planned stages in order:
 //   sample, file: 'load' (parsing and checks: one call, so only 0 and 1), 'upload'
 //   paths: 'trace', 'upload'          distances: 'heat', 'upload'
-//   parameterize: 'source', 'trace' (measured and auto boundaries), 'weights', 'solve', 'metrics'
-//                 (the core's stages), 'overlays' (the other boundaries' polygons), 'upload'
+//   parameterize: 'source', 'trace' (measured, free and auto boundaries), 'weights', 'solve',
+//                 'metrics', 'refine' (free and auto) (the core's stages), 'overlays' (the other
+//                 boundaries' polygons), 'upload'
 //   compare: 'compare'                exportObj: 'export'
 // 'upload' is packing the results into transferable arrays and posting them. The core's callbacks
 // (≤ ~100 per stage) are throttled to one message per 50 ms; a stage's start and its final 1.0 are
@@ -69,6 +72,7 @@ let currentMesh = null; // the mesh later operations will work on; deleted when 
 let currentClosed = false; // the current mesh has no boundary (its 'boundary' targets are none)
 let boundaryKinds = []; // the core's boundary and weight kinds (st.boundaryKinds, st.weightKinds),
 let weightKinds = []; // once initialized
+let polygonKinds = []; // the kinds with a polygon without a solve (st.polygonBoundaryKinds: all but free)
 
 function straightest() {
   if (!modulePromise) throw new Error('the geometry worker was not initialized');
@@ -79,10 +83,15 @@ function straightest() {
 
 const THROTTLE_MS = 50; // at most one intermediate 'progress' message per 50 ms and request
 
-/** The core's stages of mesh.parameterize() for `boundary`, in order: only measured and auto trace. */
+/**
+ * The core's stages of mesh.parameterize() for `boundary`, in order: measured, free and auto trace;
+ * free and auto refine after the fixed map's metrics (whose second 'metrics', of the refined map,
+ * counts as that stage again).
+ */
 function parameterizeStages(boundary) {
-  const traced = ['measured', 'auto', undefined].includes(boundary);
-  return ['source', ...(traced ? ['trace'] : []), 'weights', 'solve', 'metrics'];
+  const traced = ['measured', 'free', 'auto', undefined].includes(boundary);
+  const refined = ['free', 'auto'].includes(boundary);
+  return ['source', ...(traced ? ['trace'] : []), 'weights', 'solve', 'metrics', ...(refined ? ['refine'] : [])];
 }
 
 /** The stages a request goes through, in order (see the protocol above). */
@@ -227,15 +236,16 @@ function describeError(err) {
  * measured kind traces). Reports the 'overlays' stage.
  */
 function boundaryOverlays(mesh, source, known, progress) {
-  const others = mesh.boundaryPolygons({
+  const kinds = polygonKinds.filter((kind) => kind !== known.boundary);
+  const others = kinds.length === 0 ? [] : mesh.boundaryPolygons({
     source,
-    kinds: boundaryKinds.filter((kind) => kind !== known.boundary),
+    kinds,
     onProgress: (stage, fraction) => progress.update('overlays', fraction),
   });
-  return boundaryKinds.map((boundary) => {
-    if (boundary === known.boundary) return { boundary, polygon: known.polygon.slice(), error: null };
-    const { polygon, error } = others.find((o) => o.boundary === boundary);
-    return { boundary, polygon: polygon && owned(polygon), error };
+  return boundaryKinds.flatMap((boundary) => {
+    if (boundary === known.boundary) return [{ boundary, polygon: known.polygon.slice(), error: null }];
+    const other = others.find((o) => o.boundary === boundary);
+    return other ? [{ boundary, polygon: other.polygon && owned(other.polygon), error: other.error }] : [];
   });
 }
 
@@ -243,7 +253,7 @@ const handlers = {
   async init({ moduleUrl }) {
     modulePromise ??= import(moduleUrl).then(({ createStraightest }) => createStraightest());
     const st = await straightest();
-    ({ boundaryKinds, weightKinds } = st);
+    ({ boundaryKinds, weightKinds, polygonBoundaryKinds: polygonKinds } = st);
     return { reply: { type: 'ready', samples: st.sampleNames(), boundaryKinds } };
   },
 

@@ -2,12 +2,18 @@
 // (each result through its field list, result_fields.hpp). Exit codes: 0 success, 2 bad input or
 // usage (message on stderr, or {"error", "category"} on stdout with --json-errors; a usage error is
 // category invalid_argument, as in JS), 1 internal failure. Never a signal for bad input.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "json_writer.hpp"
@@ -42,13 +48,20 @@ std::string usage() {
          "      --source auto|N        center for the measured boundary (default auto)\n"
          "      --boundary " +
          alternatives(namesOf(kBoundaryKindNames, kAutoName)) +
-         "   (default measured; auto keeps the preferred map)\n"
+         "   (default measured; free refines the measured (or circle) map, letting the\n"
+         "                             boundary move, without folding; auto keeps the preferred map)\n"
          "      --weights " +
          alternatives(namesOf(kWeightKindNames)) +
          "   (default shape-preserving)\n"
          "      --solver " +
          alternatives(namesOf(kLinearSolverNames)) +
          "   sparse solver (default multigrid)\n"
+         "      --max-iterations N     free boundary: refinement iterations at most (default " +
+         std::to_string(FreeBoundaryOptions{}.maxIterations) +
+         ")\n"
+         "      --time-budget-ms T     free boundary: stop refining after T ms (default " +
+         std::to_string(static_cast<long long>(FreeBoundaryOptions{}.timeBudgetMs)) +
+         "), converged false\n"
          "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order\n"
          "\n"
          "MESH is an .obj or .off file, sample:NAME for a built-in sample (" +
@@ -60,6 +73,7 @@ std::string usage() {
          "  --pretty         indent the JSON output\n"
          "  --json-errors    report errors as {\"error\": ..., \"category\": ...} on stdout\n"
          "  --max-vertices N, --max-faces N   refuse larger meshes (defaults 50M / 100M)\n"
+         "  --progress       progress lines on stderr: STAGE PERCENT (param and paths)\n"
          "  -h, --help       this text\n"
          "\n"
          "exit codes: 0 success, 2 bad input or usage, 1 internal error\n";
@@ -67,10 +81,11 @@ std::string usage() {
 
 struct Options {
   std::string command, mesh;
-  bool pretty = false, jsonErrors = false, points = false;
+  bool pretty = false, jsonErrors = false, points = false, progress = false;
   std::string source = "auto", to = "boundary";
   std::string boundary = "measured", weights = "shape-preserving", solver = "multigrid", output;
   BuildLimits limits;
+  FreeBoundaryOptions free;
 };
 
 struct UsageError {
@@ -94,6 +109,28 @@ int64_t parseCount(const std::string& flag, const char* value) {
   return v;
 }
 
+double parsePositive(const std::string& flag, const char* value) {
+  char* end = nullptr;
+  const double v = std::strtod(value, &end);
+  if (!*value || *end || !(v > 0) || !std::isfinite(v))
+    throw UsageError{flag + " expects a positive number, got '" + value + "'"};
+  return v;
+}
+
+/// --progress: a line on stderr when a stage starts and at every further tenth of it.
+Progress progressLines(bool enabled) {
+  if (!enabled) return {};
+  auto last = std::make_shared<std::pair<std::string, int>>("", -1);
+  return Progress([last](const char* stage, double fraction) {
+    const int tenth = static_cast<int>(fraction * 10);
+    if (last->first != stage || tenth > last->second) {
+      *last = {stage, tenth};
+      std::cerr << stage << " " << 10 * tenth << "%\n";
+    }
+    return true;
+  });
+}
+
 Options parseArgs(int argc, char** argv) {
   Options o;
   std::vector<std::string> positional;
@@ -113,6 +150,11 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--boundary") o.boundary = value();
     else if (a == "--weights") o.weights = value();
     else if (a == "--solver") o.solver = value();
+    else if (a == "--max-iterations")
+      o.free.maxIterations = static_cast<int32_t>(
+          std::min<int64_t>(parseCount(a, value()), std::numeric_limits<int32_t>::max()));
+    else if (a == "--time-budget-ms") o.free.timeBudgetMs = parsePositive(a, value());
+    else if (a == "--progress") o.progress = true;
     else if (a == "-o" || a == "--output") o.output = value();
     else if (a == "-h" || a == "--help") o.command = "help";
     else if (a.size() > 1 && a[0] == '-') throw UsageError{"unknown option '" + a + "'"};
@@ -195,7 +237,7 @@ int runPaths(const Options& o, const TriMesh& mesh, double loadMs) {
   Timings timings;
   timings.add("load", loadMs);
   auto traced = traceStraightestPaths(mesh, source.value(), std::move(targets).value(),
-                                      TraceOptions{o.points, 0, &timings});
+                                      TraceOptions{o.points, 0, &timings}, progressLines(o.progress));
   if (!traced) return fail(o, traced.error());
   const PathBatch& batch = traced.value();
   json out = cli::toJson(batch);
@@ -233,10 +275,11 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   options.weights = weights.value();
   options.solver = solver.value();
   options.source = source.value();
+  options.free = o.free;
   Timings timings;
   timings.add("load", loadMs);
   options.timings = &timings;
-  auto result = parameterize(mesh, options);
+  auto result = parameterize(mesh, options, progressLines(o.progress));
   if (!result) return fail(o, result.error());
   const Parameterization& p = result.value();
   if (!o.output.empty()) {

@@ -1,14 +1,31 @@
 #include "straightest/boundary_polygons.hpp"
 
+#include "straightest/enum_names.hpp"
 #include "straightest/parameterize.hpp"
 
 namespace straightest {
+
+std::vector<BoundaryKind> polygonBoundaryKinds() {
+  std::vector<BoundaryKind> kinds;
+  for (const EnumName<BoundaryKind>& e : kBoundaryKindNames)
+    if (e.value != BoundaryKind::Free) kinds.push_back(e.value);
+  return kinds;
+}
 
 Expected<std::vector<BoundaryPolygon>> boundaryPolygons(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
                                                         const std::vector<BoundaryKind>& kinds,
                                                         const Progress& progress) {
   auto disk = requireDisk(mesh);
   if (!disk) return disk.error();
+  for (BoundaryKind kind : kinds)
+    if (kind == BoundaryKind::Free) {
+      std::vector<std::string> names;
+      for (BoundaryKind k : polygonBoundaryKinds()) names.push_back(boundaryKindName(k));
+      return Error{ErrorCode::InvalidArgument,
+                   "the free boundary has no polygon without its nonlinear refinement (parameterize with boundary "
+                   "'free' returns it as boundaryPolygon); polygons exist for " +
+                       choiceList(names, ", ", " and ")};
+    }
   std::vector<BoundaryPolygon> out;
   for (BoundaryKind kind : kinds) {
     BoundaryPolygon entry;
@@ -28,6 +45,7 @@ Expected<std::vector<BoundaryPolygon>> boundaryPolygons(const TriMesh& mesh, con
       }
       case BoundaryKind::Circle: map = circleBoundary(mesh); break;
       case BoundaryKind::Square: map = squareBoundary(mesh); break;
+      case BoundaryKind::Free: break;  // refused above
     }
     if (map) {
       const UnitSquareFrame frame = unitSquareFrame(map.value().polygon);

@@ -98,20 +98,54 @@ Expected<SurfacePoint> interiorSource(const TriMesh& mesh, const std::optional<S
   return s;
 }
 
+namespace {
+
+BoundaryCandidate candidateOf(BoundaryKind kind, const StretchMetrics& m) {
+  return {kind, m.l2, m.linf, m.flipped, m.degenerate, m.overlaps};
+}
+
+/// One fixed boundary's solved map, before it is scaled into [0, 1]².
+struct SolvedMap {
+  BoundaryKind kind = BoundaryKind::Circle;
+  std::vector<Vec2> uv, polygon;
+  std::vector<int32_t> loop;
+  StretchMetrics metrics;
+  int64_t fallbacks = 0;
+  int64_t outliers = 0;
+  double residual = 0;
+};
+
+/// `result`'s map fields from `map` (the source, weights and candidates are the caller's).
+void takeMap(Parameterization& result, SolvedMap map) {
+  result.boundary = map.kind;
+  result.uv = std::move(map.uv);
+  result.boundaryPolygon = std::move(map.polygon);
+  result.boundaryLoop = std::move(map.loop);
+  result.metrics = std::move(map.metrics);
+  result.fallbacks = map.fallbacks;
+  result.outliers = map.outliers;
+  result.residual = map.residual;
+}
+
+}  // namespace
+
 Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options, const Progress& progress) {
   const Error cancelled = cancelledError("parameterization");
   Timings* timings = options.timings;
-  for (const char* stage : {"source", "trace", "boundary", "weights", "solve", "metrics", "total"})
+  for (const char* stage : {"source", "trace", "boundary", "weights", "solve", "refine", "metrics", "total"})
     record(timings, stage, 0);  // every stage listed, in this order, whether it runs or not
   const Stopwatch total;
   auto disk = requireDisk(mesh);
   if (!disk) return disk.error();
   Parameterization result;
   result.weights = options.weights;
+  const bool chooses = !options.boundary;
+  const bool free = options.boundary == BoundaryKind::Free;
+  const bool refines = chooses || free;
 
   if (!report(progress, "source", 0)) return cancelled;
   Stopwatch stage;
-  const bool needsSource = !options.boundary || *options.boundary == BoundaryKind::Measured;
+  const bool needsSource = refines || *options.boundary == BoundaryKind::Measured;
   if (needsSource) {
     auto s = interiorSource(mesh, options.source);
     if (!s) return s.error();
@@ -129,10 +163,11 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
     auto m = measuredBoundary(mesh, result.source, progress, &traceTime);
     if (!m && m.error().code == ErrorCode::Cancelled) return m.error();
     if (m) boundaries.push_back(std::move(m).value());
-    else if (options.boundary) return m.error();
+    else if (options.boundary == BoundaryKind::Measured) return m.error();
+    // auto and free go on without it: free then starts from the circle.
   }
-  if (!options.boundary || *options.boundary == BoundaryKind::Circle) boundaries.push_back(circleBoundary(mesh));
-  if (!options.boundary || *options.boundary == BoundaryKind::Square) boundaries.push_back(squareBoundary(mesh));
+  if (chooses || free || *options.boundary == BoundaryKind::Circle) boundaries.push_back(circleBoundary(mesh));
+  if (chooses || *options.boundary == BoundaryKind::Square) boundaries.push_back(squareBoundary(mesh));
   record(timings, "trace", traceTime["trace"]);
   record(timings, "boundary", stage.lap() - traceTime["trace"]);
 
@@ -142,35 +177,108 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   record(timings, "weights", stage.lap());
 
   bool haveBest = false;
+  std::optional<SolvedMap> start;  // the free boundary's: measured when bijective, else the circle's
   for (BoundaryMap& boundary : boundaries) {
+    if (free && start) break;  // the measured map is bijective: no circle needed
     stage.lap();
-    std::vector<Vec2> uv;
-    const auto solved = solveInterior(mesh, W, boundary, options.solver, uv, progress);
+    SolvedMap map;
+    const auto solved = solveInterior(mesh, W, boundary, options.solver, map.uv, progress);
     if (!solved) return solved.error().code == ErrorCode::Cancelled ? cancelled : solved.error();
-    const double residual = solved.value();
+    map.residual = solved.value();
     record(timings, "solve", stage.lap());
     if (!report(progress, "metrics", 0)) return cancelled;
-    StretchMetrics metrics = textureStretch(mesh, uv);
+    map.metrics = textureStretch(mesh, map.uv);
     record(timings, "metrics", stage.lap());
-    result.candidates.push_back({boundary.kind, metrics.l2, metrics.linf, metrics.flipped, metrics.degenerate});
-    if (!haveBest || preferredMap(metrics.l2, metrics.flipped + metrics.degenerate, result.metrics.l2,
+    map.kind = boundary.kind;
+    map.polygon = std::move(boundary.polygon);
+    map.loop = std::move(boundary.loop);
+    map.fallbacks = boundary.fallbacks;
+    map.outliers = boundary.outliers;
+    result.candidates.push_back(candidateOf(map.kind, map.metrics));
+    const bool startsFree = refines && !start &&
+                            (map.kind == BoundaryKind::Circle ||
+                             (map.kind == BoundaryKind::Measured && map.metrics.bijective));
+    if (startsFree) start = map;
+    if (free) continue;  // the result is the refined map, whatever the start's numbers
+    if (!haveBest || preferredMap(map.metrics.l2, map.metrics.flipped + map.metrics.degenerate, result.metrics.l2,
                                   result.metrics.flipped + result.metrics.degenerate)) {
       haveBest = true;
-      result.boundary = boundary.kind;
-      result.uv = std::move(uv);
-      result.boundaryPolygon = boundary.polygon;
-      result.boundaryLoop = boundary.loop;
-      result.metrics = std::move(metrics);
-      result.fallbacks = boundary.fallbacks;
-      result.outliers = boundary.outliers;
-      result.residual = residual;
+      takeMap(result, std::move(map));
     }
   }
+  if (haveBest) normalizeIntoUnitSquare(mesh, result.uv, result.boundaryPolygon);
+  if (refines && start) {
+    Parameterization from;
+    from.source = result.source;
+    from.weights = result.weights;
+    from.weightFallbacks = result.weightFallbacks;
+    from.candidates = std::move(result.candidates);
+    takeMap(from, std::move(*start));
+    // Refined from the start in [0, 1]², exactly as refineParameterization of parameterize's own
+    // result would be (the comparison refines that way): the same map either way.
+    normalizeIntoUnitSquare(mesh, from.uv, from.boundaryPolygon);
+    auto refined = refineParameterization(mesh, from, options.free, progress, timings);
+    if (!refined) return refined.error();
+    Parameterization& r = refined.value();
+    if (free || !haveBest ||
+        preferredMap(r.metrics.l2, r.metrics.flipped + r.metrics.degenerate, result.metrics.l2,
+                     result.metrics.flipped + result.metrics.degenerate)) {
+      result = std::move(r);
+    } else {
+      result.candidates = std::move(r.candidates);
+    }
+    haveBest = true;
+  }
   if (!haveBest) return Error{ErrorCode::Topology, "no boundary map could be built"};
-  normalizeIntoUnitSquare(mesh, result.uv, result.boundaryPolygon);
   report(progress, "metrics", 1.0);
   record(timings, "total", total.ms());
   return result;
+}
+
+Expected<Parameterization> refineParameterization(const TriMesh& mesh, const Parameterization& start,
+                                                  const FreeBoundaryOptions& options, const Progress& progress,
+                                                  Timings* timings) {
+  auto disk = requireDisk(mesh);
+  if (!disk) return disk.error();
+  if (start.boundary == BoundaryKind::Free)
+    return Error{ErrorCode::InvalidArgument,
+                 "a free-boundary refinement starts from a fixed-boundary map (measured or circle), not a free one"};
+  if (start.uv.size() != static_cast<size_t>(mesh.numVertices()))
+    return Error{ErrorCode::InvalidArgument, "the start map has " + std::to_string(start.uv.size()) +
+                                                 " uv for a mesh of " + std::to_string(mesh.numVertices()) +
+                                                 " vertices"};
+  const Error cancelled = cancelledError("parameterization");
+  if (!report(progress, "refine", 0)) return cancelled;
+  Stopwatch stage;
+  auto refined = refineFreeBoundary(mesh, start.uv, options, progress);
+  if (!refined) return refined.error().code == ErrorCode::Cancelled ? cancelled : refined.error();
+  record(timings, "refine", stage.lap());
+  if (!report(progress, "metrics", 0)) return cancelled;
+  FreeBoundaryResult& free = refined.value();
+  Parameterization p;
+  p.source = start.source;
+  p.boundary = BoundaryKind::Free;
+  p.weights = start.weights;
+  p.uv = std::move(free.uv);
+  p.metrics = textureStretch(mesh, p.uv);  // scale-invariant: the same before and after normalizing
+  record(timings, "metrics", stage.lap());
+  p.boundaryLoop = start.boundaryLoop;
+  normalizeIntoUnitSquare(mesh, p.uv, p.boundaryPolygon);
+  p.boundaryPolygon.reserve(p.boundaryLoop.size());
+  for (int32_t v : p.boundaryLoop) p.boundaryPolygon.push_back(p.uv[v]);
+  p.fallbacks = start.fallbacks;
+  p.outliers = start.outliers;
+  p.weightFallbacks = start.weightFallbacks;
+  p.residual = start.residual;
+  p.candidates = start.candidates;
+  p.candidates.push_back(candidateOf(BoundaryKind::Free, p.metrics));
+  p.init = start.boundary;
+  p.iterations = free.iterations;
+  p.energyInitial = free.energyInitial;
+  p.energyFinal = free.energyFinal;
+  p.converged = free.converged;
+  p.untangled = free.untangled;
+  return p;
 }
 
 }  // namespace straightest

@@ -53,6 +53,16 @@ TEST(BoundaryPolygons, AMeasuredBoundaryWithABoundarySourceFailsAloneWithThePara
   EXPECT_FALSE(polygons[2].error);
 }
 
+TEST(BoundaryPolygons, TheFreeBoundaryHasNoneWithoutItsRefinementAndIsNotADefaultKind) {
+  EXPECT_EQ(polygonBoundaryKinds(), kAllKinds);
+  const TriMesh mesh = makeSample("cap").value();
+  const auto free = boundaryPolygons(mesh, std::nullopt, {BoundaryKind::Circle, BoundaryKind::Free});
+  ASSERT_FALSE(free.ok());
+  EXPECT_EQ(free.error().code, ErrorCode::InvalidArgument);
+  EXPECT_NE(free.error().message.find("free boundary has no polygon"), std::string::npos) << free.error().message;
+  EXPECT_NE(free.error().message.find("measured, circle and square"), std::string::npos) << free.error().message;
+}
+
 TEST(BoundaryPolygons, NeedADiskAndStopWhenCancelled) {
   const auto closed = boundaryPolygons(testing::icosphere(1), std::nullopt, kAllKinds);
   ASSERT_FALSE(closed.ok());

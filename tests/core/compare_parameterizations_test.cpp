@@ -12,7 +12,8 @@
 namespace straightest {
 namespace {
 
-const std::vector<BoundaryKind> kKinds = {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Square};
+const std::vector<BoundaryKind> kKinds = {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Square,
+                                          BoundaryKind::Free};
 const std::vector<WeightKind> kWeights = {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Cotan,
                                           WeightKind::Uniform};
 
@@ -44,14 +45,20 @@ TEST(CompareParameterizations, EveryCellIsTheParameterizationAndBestIsWhatAutoPi
       EXPECT_EQ(row.l2, p.metrics.l2);
       EXPECT_EQ(row.linf, p.metrics.linf);
       EXPECT_EQ(row.flipped, p.metrics.flipped);
+      EXPECT_EQ(row.overlaps, p.metrics.overlaps);
       EXPECT_EQ(row.bijective, p.metrics.bijective);
+      EXPECT_EQ(row.init, p.init);  // free: the same start (measured if bijective, else circle)
+      EXPECT_EQ(row.init.has_value(), kKinds[b] == BoundaryKind::Free);
+      if (row.init) {
+        EXPECT_EQ(row.iterations, p.iterations);
+      }
       EXPECT_GE(row.timeMs, 0);
     }
   ASSERT_GE(c.best, 0);
   for (const ComparisonRow& row : c.rows)
     EXPECT_FALSE(preferredMap(row.l2, row.flipped + row.degenerate, c.rows[c.best].l2,
                               c.rows[c.best].flipped + c.rows[c.best].degenerate));
-  // Per weights, the best boundary of its three rows is the one boundary 'auto' keeps.
+  // Per weights, the best boundary of its four rows is the one boundary 'auto' keeps.
   for (WeightKind w : kWeights) {
     const Comparison one = compareParameterizations(mesh, std::nullopt, kKinds, {w}).value();
     ParamOptions options;
@@ -65,11 +72,36 @@ TEST(CompareParameterizations, AFailedCellKeepsItsErrorAndIsNeverBest) {
   const TriMesh mesh = makeSample("cap").value();
   const SurfacePoint onBoundary = SurfacePoint::vertex(mesh.boundaryLoops()[0][0]);
   const Comparison c = compareParameterizations(mesh, onBoundary, kKinds, {WeightKind::Uniform}).value();
-  ASSERT_EQ(c.rows.size(), 3u);
+  ASSERT_EQ(c.rows.size(), 4u);
   ASSERT_TRUE(c.rows[0].error);
   EXPECT_EQ(c.rows[0].error->code, ErrorCode::InvalidArgument);
   EXPECT_FALSE(c.rows[1].error);
-  EXPECT_GE(c.best, 1);
+  ASSERT_TRUE(c.rows[3].error);  // free needs an interior source as measured does
+  EXPECT_EQ(c.rows[3].error->message, c.rows[0].error->message);
+  EXPECT_TRUE(c.best == 1 || c.best == 2);
+}
+
+TEST(CompareParameterizations, AFreeRowAloneOrListedFirstIsTheSameRefinement) {
+  const TriMesh mesh = makeSample("mountain").value();
+  const std::vector<WeightKind> weights = {WeightKind::MeanValue, WeightKind::Uniform};
+  const Comparison alone = compareParameterizations(mesh, std::nullopt, {BoundaryKind::Free}, weights).value();
+  const Comparison first =
+      compareParameterizations(mesh, std::nullopt, {BoundaryKind::Free, BoundaryKind::Measured}, weights).value();
+  ASSERT_EQ(alone.rows.size(), 2u);
+  ASSERT_EQ(first.rows.size(), 4u);
+  for (size_t w = 0; w < weights.size(); ++w) {
+    const ComparisonRow &a = alone.rows[w], &f = first.rows[w];
+    ASSERT_FALSE(a.error);
+    EXPECT_EQ(a.boundary, BoundaryKind::Free);
+    EXPECT_EQ(f.boundary, BoundaryKind::Free);
+    EXPECT_EQ(a.weights, weights[w]);
+    EXPECT_EQ(f.weights, weights[w]);
+    EXPECT_EQ(a.l2, f.l2);
+    EXPECT_EQ(a.init, f.init);
+    EXPECT_GT(a.timeMs, 0);  // the start's solve is part of it
+    EXPECT_EQ(first.rows[2 + w].boundary, BoundaryKind::Measured);
+    EXPECT_FALSE(first.rows[2 + w].init);
+  }
 }
 
 TEST(CompareParameterizations, NeedsADiskAndCancelsAsAnError) {

@@ -41,10 +41,11 @@ TEST(EnumNames, TheNameFunctionsReadTheTables) {
 TEST(EnumNames, AutoIsTheAbsentBoundaryAndErrorsListEveryChoice) {
   EXPECT_FALSE(parseBoundaryChoice("auto").value().has_value());
   EXPECT_EQ(parseBoundaryChoice("square").value(), BoundaryKind::Square);
+  EXPECT_EQ(parseBoundaryChoice("free").value(), BoundaryKind::Free);
   const auto bad = parseBoundaryChoice("ellipse");
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().code, ErrorCode::InvalidArgument);
-  EXPECT_EQ(bad.error().message, "unknown boundary 'ellipse' (use measured, circle, square or auto)");
+  EXPECT_EQ(bad.error().message, "unknown boundary 'ellipse' (use measured, circle, square, free or auto)");
   EXPECT_EQ(parseWeightKind("harmonic").error().message,
             "unknown weights 'harmonic' (use shape-preserving, mean-value, cotan or uniform)");
   EXPECT_EQ(choiceList({"a"}), "a");

@@ -83,7 +83,7 @@ TEST(Parameterize, ConvexBoundaryWithConvexWeightsNeverFlipsOnTheSamples) {
 TEST(Parameterize, AutoKeepsTheLeastStretchedCandidate) {
   const TriMesh mesh = makeSample("mountain").value();
   const Parameterization p = param(mesh, std::nullopt, WeightKind::ShapePreserving);
-  ASSERT_EQ(p.candidates.size(), 3u);
+  ASSERT_EQ(p.candidates.size(), 4u);
   for (const BoundaryCandidate& c : p.candidates) EXPECT_LE(p.metrics.l2, c.l2);
 }
 
@@ -161,6 +161,181 @@ TEST(Parameterize, AlmostClosedCapIsBijectiveOnACircleAndMeasuredGivesAResultOrA
   } else {
     EXPECT_FALSE(measured.error().message.empty());
   }
+}
+
+// The free boundary. These hold for any correct refinement: they specify the plumbing (the start rule,
+// the fields, the candidates, errors, cancellation), not how far the energy goes down.
+
+/// What every free result must satisfy: a map in [0, 1]² whose polygon is its loop's uv, honest
+/// bijectivity, the refinement's fields, and itself as the last candidate.
+void expectFreeResult(const TriMesh& mesh, const Parameterization& p, const ParamOptions& o) {
+  EXPECT_EQ(p.boundary, BoundaryKind::Free);
+  ASSERT_TRUE(p.init);
+  EXPECT_TRUE(*p.init == BoundaryKind::Measured || *p.init == BoundaryKind::Circle);
+  EXPECT_GE(p.iterations, 0);
+  EXPECT_LE(p.iterations, o.free.maxIterations);
+  const StretchMetrics& m = p.metrics;
+  EXPECT_EQ(m.bijective, m.flipped == 0 && m.degenerate == 0 && m.overlaps == 0);
+  EXPECT_EQ(std::isfinite(m.l2), m.bijective);
+  ASSERT_EQ(p.uv.size(), static_cast<size_t>(mesh.numVertices()));
+  for (const Vec2& q : p.uv) {
+    EXPECT_TRUE(q.x >= 0 && q.x <= 1 && q.y >= 0 && q.y <= 1) << q.x << ", " << q.y;
+  }
+  EXPECT_EQ(p.boundaryLoop, mesh.boundaryLoops()[0]);
+  ASSERT_EQ(p.boundaryPolygon.size(), p.boundaryLoop.size());
+  for (size_t i = 0; i < p.boundaryLoop.size(); ++i) {
+    EXPECT_EQ(p.boundaryPolygon[i].x, p.uv[p.boundaryLoop[i]].x);
+    EXPECT_EQ(p.boundaryPolygon[i].y, p.uv[p.boundaryLoop[i]].y);
+  }
+  ASSERT_FALSE(p.candidates.empty());
+  const BoundaryCandidate& last = p.candidates.back();
+  EXPECT_EQ(last.kind, BoundaryKind::Free);
+  EXPECT_EQ(last.l2, m.l2);
+  EXPECT_EQ(last.flipped, m.flipped);
+  EXPECT_EQ(last.overlaps, m.overlaps);
+}
+
+TEST(FreeBoundary, StartsFromTheMeasuredMapWhereItIsBijectiveElseFromTheCircle) {
+  for (const std::string& name : sampleNames())
+    for (WeightKind w : {WeightKind::ShapePreserving, WeightKind::Cotan}) {
+      const TriMesh mesh = makeSample(name).value();
+      ParamOptions o;
+      o.weights = w;
+      o.free.maxIterations = 20;
+      o.boundary = BoundaryKind::Measured;
+      auto measured = parameterize(mesh, o);
+      o.boundary = BoundaryKind::Free;
+      const Parameterization p = parameterize(mesh, o).value();
+      expectFreeResult(mesh, p, o);
+      const bool measuredStarts = measured && measured.value().metrics.bijective;
+      EXPECT_EQ(*p.init, measuredStarts ? BoundaryKind::Measured : BoundaryKind::Circle) << name;
+      // Its candidates are the maps it solved: measured, the circle only when measured would not do, itself.
+      std::vector<BoundaryKind> solved;
+      for (const BoundaryCandidate& c : p.candidates) solved.push_back(c.kind);
+      if (measuredStarts) {
+        EXPECT_EQ(solved, (std::vector<BoundaryKind>{BoundaryKind::Measured, BoundaryKind::Free})) << name;
+        EXPECT_EQ(p.fallbacks, measured.value().fallbacks);
+        if (std::isfinite(p.energyInitial)) {
+          EXPECT_LE(p.energyFinal, p.energyInitial) << name;
+        }
+      } else {
+        EXPECT_EQ(solved.back(), BoundaryKind::Free);
+        EXPECT_EQ(solved[solved.size() - 2], BoundaryKind::Circle);
+      }
+    }
+}
+
+TEST(FreeBoundary, IsRefinedFromTheFixedMapExactlyAsRefineParameterizationDoes) {
+  const TriMesh mesh = makeSample("face").value();
+  ParamOptions o;
+  o.free.maxIterations = 15;
+  const Parameterization measured = parameterize(mesh, o).value();
+  ASSERT_TRUE(measured.metrics.bijective);
+  o.boundary = BoundaryKind::Free;
+  const Parameterization free = parameterize(mesh, o).value();
+  const Parameterization refined = refineParameterization(mesh, measured, o.free).value();
+  EXPECT_EQ(refined.init, BoundaryKind::Measured);
+  ASSERT_EQ(refined.uv.size(), free.uv.size());
+  for (size_t v = 0; v < free.uv.size(); ++v) {
+    EXPECT_EQ(refined.uv[v].x, free.uv[v].x);
+    EXPECT_EQ(refined.uv[v].y, free.uv[v].y);
+  }
+  EXPECT_EQ(refined.metrics.l2, free.metrics.l2);
+  EXPECT_EQ(refined.iterations, free.iterations);
+  // A free map is not a start; nor is a uv of the wrong size.
+  EXPECT_EQ(refineParameterization(mesh, free).error().code, ErrorCode::InvalidArgument);
+  Parameterization shortStart = measured;
+  shortStart.uv.pop_back();
+  EXPECT_EQ(refineParameterization(mesh, shortStart).error().code, ErrorCode::InvalidArgument);
+  EXPECT_EQ(refineParameterization(testing::icosphere(1), measured).error().code, ErrorCode::Topology);
+}
+
+TEST(FreeBoundary, AutoRefinesWhatItSolvedAndKeepsThePreferredOfFour) {
+  for (const char* name : {"mountain", "cap"}) {
+    const TriMesh mesh = makeSample(name).value();
+    ParamOptions o;
+    o.boundary = std::nullopt;
+    o.free.maxIterations = 10;
+    const Parameterization p = parameterize(mesh, o).value();
+    ASSERT_EQ(p.candidates.size(), 4u) << name;
+    const BoundaryKind order[] = {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Square,
+                                  BoundaryKind::Free};
+    for (size_t i = 0; i < 4; ++i) EXPECT_EQ(p.candidates[i].kind, order[i]) << name;
+    // The free candidate is boundary free's map: the same start, refined the same way.
+    o.boundary = BoundaryKind::Free;
+    const Parameterization free = parameterize(mesh, o).value();
+    EXPECT_EQ(p.candidates[3].l2, free.metrics.l2) << name;
+    EXPECT_EQ(p.candidates[3].flipped, free.metrics.flipped) << name;
+    // The kept map is the first preferred one in candidate order; its refinement fields only if free.
+    size_t best = 0;
+    for (size_t i = 1; i < 4; ++i) {
+      const BoundaryCandidate &c = p.candidates[i], &b = p.candidates[best];
+      if (preferredMap(c.l2, c.flipped + c.degenerate, b.l2, b.flipped + b.degenerate)) best = i;
+    }
+    EXPECT_EQ(p.boundary, p.candidates[best].kind) << name;
+    EXPECT_EQ(p.metrics.l2, p.candidates[best].l2) << name;
+    EXPECT_EQ(p.init.has_value(), p.boundary == BoundaryKind::Free) << name;
+  }
+}
+
+TEST(FreeBoundary, TimingsListRefineAndOnlyFreeAndAutoSpendTimeThere) {
+  const TriMesh mesh = makeSample("mountain").value();
+  const std::vector<std::string> stages = {"source", "trace",  "boundary", "weights",
+                                           "solve",  "refine", "metrics",  "total"};
+  for (std::optional<BoundaryKind> b :
+       {std::optional<BoundaryKind>(BoundaryKind::Circle), std::optional<BoundaryKind>(BoundaryKind::Free),
+        std::optional<BoundaryKind>()}) {
+    Timings timings;
+    ParamOptions o;
+    o.boundary = b;
+    o.timings = &timings;
+    o.free.maxIterations = 5;
+    const Parameterization p = parameterize(mesh, o).value();
+    std::vector<std::string> names;
+    for (const auto& [name, ms] : timings.stages()) names.push_back(name);
+    EXPECT_EQ(names, stages);
+    if (b == BoundaryKind::Circle) {
+      EXPECT_EQ(timings["refine"], 0);
+      EXPECT_FALSE(p.init);
+    }
+  }
+}
+
+TEST(FreeBoundary, ReportsRefineAndCancellingThereIsACancelledErrorThatLeavesNothingBroken) {
+  const TriMesh mesh = makeHeightField(30);
+  for (std::optional<BoundaryKind> b :
+       {std::optional<BoundaryKind>(BoundaryKind::Free), std::optional<BoundaryKind>()}) {
+    ParamOptions o;
+    o.boundary = b;
+    o.free.maxIterations = 5;
+    std::vector<std::string> stages;
+    ASSERT_TRUE(parameterize(mesh, o, [&](const char* stage, double) {
+                  if (stages.empty() || stages.back() != stage) stages.push_back(stage);
+                  return true;
+                }).ok());
+    const auto refine = std::find(stages.begin(), stages.end(), "refine");
+    ASSERT_NE(refine, stages.end());
+    EXPECT_NE(std::find(refine, stages.end(), "metrics"), stages.end()) << "metrics after the refinement";
+    EXPECT_EQ(stages.back(), "metrics");
+    auto cancelled = parameterize(mesh, o, [](const char* stage, double) { return std::string(stage) != "refine"; });
+    ASSERT_FALSE(cancelled.ok());
+    EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled);
+    EXPECT_TRUE(parameterize(mesh, o).ok());  // and the next call works
+  }
+}
+
+TEST(FreeBoundary, NeedsADiskAndAnInteriorSourceAsMeasuredDoes) {
+  ParamOptions o;
+  o.boundary = BoundaryKind::Free;
+  EXPECT_EQ(parameterize(testing::loadGood("good/tetrahedron.off"), o).error().code, ErrorCode::Topology);
+  EXPECT_EQ(parameterize(testing::loadGood("good/annulus.off"), o).error().code, ErrorCode::Topology);
+  const TriMesh mesh = makeSample("cap").value();
+  o.source = SurfacePoint::vertex(mesh.boundaryLoops()[0][0]);
+  auto onBoundary = parameterize(mesh, o);
+  ASSERT_FALSE(onBoundary.ok());
+  EXPECT_EQ(onBoundary.error().code, ErrorCode::InvalidArgument);
+  o.boundary = BoundaryKind::Measured;
+  EXPECT_EQ(onBoundary.error().message, parameterize(mesh, o).error().message);
 }
 
 TEST(ObjWriter, WritesOneVtPerVertexInTheInputOrder) {

@@ -301,12 +301,16 @@ describe('parameterization', () => {
     await page.click('#compare-button');
     await page.waitForFunction(() => window.__straightest.compare);
     const rows = await page.evaluate(() => window.__straightest.compare);
-    assert(rows.length === 12, `${rows.length} comparison rows, expected 3 × 4`);
+    assert(rows.length === 16, `${rows.length} comparison rows, expected 4 × 4`);
     const combos = new Set(rows.map((r) => `${r.boundary}/${r.weights}`));
-    assert(combos.size === 12, `the rows repeat combinations: ${[...combos].join(', ')}`);
+    assert(combos.size === 16, `the rows repeat combinations: ${[...combos].join(', ')}`);
+    const freeRows = rows.filter((r) => r.boundary === 'free');
+    assert(freeRows.length === 4 && freeRows.every((r) => ['measured', 'circle'].includes(r.init) &&
+      Number.isInteger(r.iterations) && Number.isInteger(r.overlaps)), `free rows: ${JSON.stringify(freeRows)}`);
+    assert(rows.every((r) => (r.boundary === 'free') === (r.init !== null)), 'only free rows have a start');
     assert(rows.every((r) => !r.error && Number.isFinite(r.l2) && r.timeMs >= 0), 'a comparison cell failed');
     const tableRows = await page.$$eval('#compare-table tbody tr[data-boundary]', (trs) => trs.length);
-    assert(tableRows === 12, `the table shows ${tableRows} rows`);
+    assert(tableRows === 16, `the table shows ${tableRows} rows`);
     const best = rows.reduce((a, b) => (b.l2 < a.l2 ? b : a));
     const bestRow = await page.$eval('#compare-table tr.best', (tr) => [tr.dataset.boundary, tr.dataset.weights]);
     assert(bestRow[0] === best.boundary && bestRow[1] === best.weights,
@@ -332,6 +336,45 @@ describe('parameterization', () => {
     const [png] = await Promise.all([page.waitForEvent('download'), page.click('#export-png-button')]);
     const layout = decodePng(Buffer.from(await streamText(await png.createReadStream(), 'latin1'), 'latin1'));
     assert(layout.width > 100 && png.suggestedFilename().endsWith('.png'), `layout PNG ${png.suggestedFilename()}`);
+  });
+
+  pageTest('the free boundary from the menu: its layout, stats, stage and exports', {
+    ready: 'window.__straightest.param',
+  }, async ({ page }) => {
+    const menu = await page.$$eval('#boundary-select option', (options) => options.map((o) => o.value));
+    assert(menu.join() === 'measured,circle,square,free,auto', `boundary menu: ${menu.join()}`);
+    const before = await page.evaluate(() => window.__straightest.parameterizations);
+    await page.selectOption('#boundary-select', 'free');
+    await page.click('#param-button');
+    await page.waitForFunction((n) => window.__straightest.parameterizations > n, before);
+    const { param, progress } = await page.evaluate(() => window.__straightest);
+    assert(param.boundary === 'free' && ['measured', 'circle'].includes(param.init) && Number.isInteger(param.iterations),
+      `free parameterization: ${JSON.stringify(param)}`);
+    assert(!param.bijective || (param.flipped === 0 && param.overlaps === 0), `bijective with folds: ${JSON.stringify(param)}`);
+    assert(progress.stages['parameterize:refine'] === 1, `refine stage: ${JSON.stringify(progress.stages)}`);
+    const refine = (await page.textContent('#param-refine')).trim();
+    assert(refine.startsWith(`from ${param.init}`) && refine.includes(`${param.iterations} it.`), `refine stat: '${refine}'`);
+    assert((await page.textContent('#param-method')).includes('free boundary'), 'the method line does not say free');
+
+    // The layout shows the free map: a good share of the canvas is drawn on.
+    const drawn = await page.evaluate(() => {
+      const canvas = document.getElementById('uv-canvas');
+      const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
+      const background = [data[4 * (canvas.width + 1)], data[4 * (canvas.width + 1) + 1], data[4 * (canvas.width + 1) + 2]];
+      let differing = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        if (background.some((c, k) => Math.abs(data[i + k] - c) > 12)) differing++;
+      }
+      return differing / (data.length / 4);
+    });
+    assert(drawn > 0.1, `only ${(drawn * 100).toFixed(1)}% of the uv canvas is drawn on`);
+
+    const [obj] = await Promise.all([page.waitForEvent('download'), page.click('#export-obj-button')]);
+    const text = await streamText(await obj.createReadStream());
+    const vt = text.split('\n').filter((line) => line.startsWith('vt ')).length;
+    assert(vt === 2500 && obj.suggestedFilename().includes('free'), `free OBJ ${obj.suggestedFilename()}: ${vt} vt lines`);
+    const [png] = await Promise.all([page.waitForEvent('download'), page.click('#export-png-button')]);
+    assert(png.suggestedFilename().includes('free') && png.suggestedFilename().endsWith('.png'), `layout PNG ${png.suggestedFilename()}`);
   });
 
   pageTest('a closed mesh shows the core’s disk message in the parameterization panel', {

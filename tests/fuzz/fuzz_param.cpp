@@ -1,6 +1,6 @@
 // libFuzzer harness: parameterize() on random disks (height-field grids with random heights and
 // jitter, spherical caps; rotated and scaled), sometimes with triangles removed (a notched disk, or
-// not a disk any more), with a random boundary (measured / circle / square / auto), weights
+// not a disk any more), with a random boundary (measured / circle / square / free / auto), weights
 // (shape-preserving / mean-value / uniform / cotan), source (automatic, an interior vertex or face
 // point, or a boundary vertex) and solver. Also textureStretch on random uv.
 // Invariants: a result or an error with a known category (Topology / InvalidArgument) and a message;
@@ -8,7 +8,9 @@
 // of the mesh, its polygon at the loop's uv; stretch is finite iff the map is bijective
 // (no flipped, no degenerate triangle) and then L2 ≥ 1 and L∞ ≥ L2; with convex-combination weights
 // (not cotan) the uv solve u_i = Σ λ_ij u_j, and with a circle or measured boundary the map is bijective
-// (Tutte/Floater): flipped == 0.
+// (Tutte/Floater): flipped == 0. Free (a few refinement iterations, to stay fast): a start named
+// (measured or circle), iterations within the cap, a map reported bijective has no flipped, degenerate
+// or overlapping-boundary element, and the energy never rises from a start that did not fold.
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cstdlib>
@@ -88,10 +90,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
   ParamOptions options;
   static const std::optional<BoundaryKind> boundaries[] = {BoundaryKind::Measured, BoundaryKind::Circle,
-                                                           BoundaryKind::Square, std::nullopt};
+                                                           BoundaryKind::Square, BoundaryKind::Free, std::nullopt};
   static const WeightKind weights[] = {WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Uniform,
                                        WeightKind::Cotan};
-  options.boundary = boundaries[in.ConsumeIntegralInRange(0, 3)];
+  options.boundary = boundaries[in.ConsumeIntegralInRange(0, 4)];
+  options.free.maxIterations = in.ConsumeIntegralInRange(1, 8);
   options.weights = weights[in.ConsumeIntegralInRange(0, 7) == 0 ? 3 : in.ConsumeIntegralInRange(0, 2)];
   options.solver = in.ConsumeBool() ? LinearSolver::SparseLU : LinearSolver::BiCGSTAB;
   const bool autoSource = in.ConsumeBool();
@@ -150,11 +153,25 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (options.boundary) {
     FUZZ_CHECK(p.boundary == *options.boundary, "boundary kind");
   } else {
-    FUZZ_CHECK(p.candidates.size() >= 2 && p.candidates.size() <= 3, "auto: %zu candidates", p.candidates.size());
+    FUZZ_CHECK(p.candidates.size() >= 3 && p.candidates.size() <= 4, "auto: %zu candidates", p.candidates.size());
+    FUZZ_CHECK(p.candidates.back().kind == BoundaryKind::Free, "auto: the free candidate comes last");
     for (const BoundaryCandidate& c : p.candidates)
       FUZZ_CHECK(!(c.l2 < p.metrics.l2), "auto kept L2 %.17g over a candidate with %.17g", p.metrics.l2, c.l2);
   }
   checkMetrics(mesh, p.metrics, "parameterize");
+  FUZZ_CHECK(p.init.has_value() == (p.boundary == BoundaryKind::Free), "init set for a %s map",
+             boundaryKindName(p.boundary));
+  if (p.boundary == BoundaryKind::Free) {
+    FUZZ_CHECK(*p.init == BoundaryKind::Measured || *p.init == BoundaryKind::Circle, "free started from %s",
+               boundaryKindName(*p.init));
+    FUZZ_CHECK(p.iterations >= 0 && p.iterations <= options.free.maxIterations, "%d iterations, cap %d", p.iterations,
+               options.free.maxIterations);
+    FUZZ_CHECK(p.candidates.back().kind == BoundaryKind::Free && p.candidates.back().l2 == p.metrics.l2,
+               "free: the last candidate is the result");
+    if (!p.untangled && std::isfinite(p.energyInitial))
+      FUZZ_CHECK(p.energyFinal <= p.energyInitial * (1 + 1e-12), "free: energy rose from %.17g to %.17g",
+                 p.energyInitial, p.energyFinal);
+  }
   FUZZ_CHECK(p.fallbacks >= 0 && p.weightFallbacks >= 0, "negative fallback counts");
   const bool convexWeights = options.weights != WeightKind::Cotan;
   const char* weightName = weightKindName(options.weights);
@@ -162,9 +179,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (convexWeights) {
     // The uv solve the interior equations u_i = Σ λ_ij u_j (checked in the [0, 1]² frame: the reported
     // relative residual is meaningless when the right-hand side is ~0, e.g. a measured boundary
-    // around a source that its weights reproduce exactly).
+    // around a source that its weights reproduce exactly). Not a free map: it moved on from the solve.
     const InteriorWeights W = interiorWeights(mesh, options.weights);
-    for (size_t r = 0; r < W.rows.size(); ++r) {
+    for (size_t r = 0; p.boundary != BoundaryKind::Free && r < W.rows.size(); ++r) {
       double u = 0, v = 0;
       for (int32_t k = W.weights.start[r]; k < W.weights.start[r + 1]; ++k) {
         u += W.weights.value[k] * p.uv[W.weights.col[k]][0];

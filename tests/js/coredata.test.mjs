@@ -12,7 +12,8 @@ const quadGrid = await readFile(new URL('../data/good/quad_grid.obj', import.met
 
 test('name lists come from the core', () => {
   assert.deepEqual(st.traceStatuses, ['reached', 'hit_boundary', 'returned_to_source', 'loop', 'step_limit', 'no_exit', 'degenerate_plane']);
-  assert.deepEqual(st.boundaryKinds, ['measured', 'circle', 'square']);
+  assert.deepEqual(st.boundaryKinds, ['measured', 'circle', 'square', 'free']);
+  assert.deepEqual(st.polygonBoundaryKinds, ['measured', 'circle', 'square']);
   assert.deepEqual(st.boundaryChoices, [...st.boundaryKinds, 'auto']);
   assert.deepEqual(st.weightKinds, ['shape-preserving', 'mean-value', 'cotan', 'uniform']);
   assert.deepEqual(st.solvers, ['multigrid', 'lu', 'bicgstab']);
@@ -74,7 +75,7 @@ test('boundaryPolygons are parameterize\'s polygons in its frame, without a solv
   for (const name of st.sampleNames()) {
     const mesh = st.sample(name);
     const polygons = mesh.boundaryPolygons();
-    assert.deepEqual(polygons.map((p) => p.boundary), ['measured', 'circle', 'square']);
+    assert.deepEqual(polygons.map((p) => p.boundary), st.polygonBoundaryKinds);
     for (const entry of polygons) {
       assert.equal(entry.error, null, `${name} ${entry.boundary}: ${entry.error}`);
       const p = mesh.parameterize({ boundary: entry.boundary });
@@ -91,6 +92,8 @@ test('boundaryPolygons are parameterize\'s polygons in its frame, without a solv
   assert.match(measured.error, /on the boundary/);
   assert.ok(circle.polygon instanceof Float32Array);
   assert.throws(() => cap.boundaryPolygons({ kinds: ['ellipse'] }), /unknown boundary 'ellipse'/);
+  assert.throws(() => cap.boundaryPolygons({ kinds: ['circle', 'free'] }),
+    (e) => e.category === 'invalid_argument' && /free boundary has no polygon/.test(e.message));
   assert.throws(() => cap.boundaryPolygons({ onProgress: () => false }), (e) => e.category === 'cancelled');
   cap.delete();
 });
@@ -141,7 +144,7 @@ test('compareParameterizations: every boundary × weights, best by the rule of b
   const stages = new Set();
   const c = mesh.compareParameterizations({ onProgress: (stage) => { stages.add(stage); } });
   assert.deepEqual([...stages], ['compare']);
-  assert.equal(c.rows.length, 12);
+  assert.equal(c.rows.length, 16);
   assert.deepEqual(c.rows.slice(0, 4).map((r) => r.weights), st.weightKinds);
   assert.deepEqual([...new Set(c.rows.map((r) => r.boundary))], st.boundaryKinds);
   for (const row of c.rows) {
@@ -149,6 +152,9 @@ test('compareParameterizations: every boundary × weights, best by the rule of b
     const p = mesh.parameterize({ boundary: row.boundary, weights: row.weights });
     assert.equal(row.l2, p.stretch.l2);
     assert.equal(row.bijective, p.bijective);
+    assert.equal(row.overlaps, p.overlaps);
+    assert.equal(row.init, p.init, 'free rows start where boundary free starts; fixed rows have none');
+    assert.equal(row.iterations, p.iterations);
     assert.ok(row.timeMs >= 0);
   }
   assert.ok(c.best >= 0);

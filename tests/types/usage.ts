@@ -133,13 +133,27 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
     onProgress: (stage: string, fraction: number) => stage !== 'solve' || fraction < 1,
   });
   for (const weights of ['shape-preserving', 'mean-value', 'cotan', 'uniform'] as const)
-    for (const boundary of ['measured', 'circle', 'square'] as const)
+    for (const boundary of ['measured', 'circle', 'square', 'free'] as const)
       for (const solver of ['multigrid', 'lu', 'bicgstab'] as const) mesh.parameterize({ weights, boundary, solver });
   const uv: Float32Array = p.uv;
   const stretch: number = p.stretch.l2 + p.stretch.linf;
   const bijective: boolean = p.bijective;
   const best = p.candidates.reduce((a, b) => (b.l2 < a.l2 ? b : a));
-  assertType<Equal<typeof best.boundary, 'measured' | 'circle' | 'square'>>();
+  assertType<Equal<typeof best.boundary, 'measured' | 'circle' | 'square' | 'free'>>();
+  const overlaps: number = p.overlaps + best.overlaps;
+  // The free boundary: its refinement's options and fields (null for a fixed boundary).
+  const free: Parameterization = mesh.parameterize({ boundary: 'free', maxIterations: 50, timeBudgetMs: 2000 });
+  const init: 'measured' | 'circle' | null = free.init;
+  const iterations: number | null = free.iterations;
+  const energies: (number | null)[] = [free.energyInitial, free.energyFinal];
+  const stops: (boolean | null)[] = [free.converged, free.untangled];
+  const refineMs: number = free.timings.refine;
+  void [overlaps, init, iterations, energies, stops, refineMs];
+  // @ts-expect-error a free refinement never starts from the square
+  const squareStart: 'square' | null = free.init;
+  void squareStart;
+  // @ts-expect-error the iteration cap is a number
+  mesh.parameterize({ boundary: 'free', maxIterations: '10' });
   const polygon: Float32Array = p.boundaryPolygon;
   const loop: Int32Array = p.boundaryLoop;
   const total: number = p.timings.total;
@@ -166,13 +180,22 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   }
   // @ts-expect-error 'auto' is a request, not a boundary kind with a polygon
   mesh.boundaryPolygons({ kinds: ['auto'] });
+  // @ts-expect-error the free boundary has no polygon without its refinement
+  mesh.boundaryPolygons({ kinds: ['free'] });
+  const polygonKinds: ('measured' | 'circle' | 'square')[] = st.polygonBoundaryKinds;
+  const freeRows = mesh.compareParameterizations({ boundaries: ['free'], maxIterations: 20, timeBudgetMs: 500 }).rows;
+  const rowInit: 'measured' | 'circle' | null = freeRows[0].init;
+  const rowFacts: [number | null, number | null, boolean | null] = [
+    freeRows[0].iterations, freeRows[0].overlaps, freeRows[0].converged,
+  ];
+  void [polygonKinds, rowInit, rowFacts];
   const comparison = mesh.compareParameterizations({ boundaries: ['circle'], weights: ['uniform', 'cotan'] });
   const bestRow: number = comparison.best;
   const l2: number | null = comparison.rows[0].l2;
   // @ts-expect-error a failed cell has no numbers: l2 may be null
   const l2Number: number = comparison.rows[0].l2;
   const directions: Float64Array = paths.directions;
-  const kinds: ('measured' | 'circle' | 'square')[] = st.boundaryKinds;
+  const kinds: ('measured' | 'circle' | 'square' | 'free')[] = st.boundaryKinds;
   const format: 'obj' | 'off' | 'auto' = st.formatFromFileName('bunny.OBJ');
   mesh.straightestPaths({ targets: ['boundary', 3, { vertex: 4 }] });
   void [loopVertices, normals, bestRow, l2, l2Number, directions, kinds, format];

@@ -47,7 +47,9 @@ inline constexpr double kMaxEarLift = 2;         // a lift at most doubles an ap
 inline constexpr int kMaxEarRounds = 64;         // lift-and-project rounds before giving up (never seen reached)
 inline constexpr double kOutlierFactor = 1.5;    // measured: a reached trace longer than this × graph distance
 
-enum class BoundaryKind { Measured, Circle, Square };
+// Free: no fixed polygon; the boundary moves with the distortion-minimizing refinement
+// (free_boundary.hpp, run by parameterize).
+enum class BoundaryKind { Measured, Circle, Square, Free };
 const char* boundaryKindName(BoundaryKind k);
 
 struct BoundaryMap {

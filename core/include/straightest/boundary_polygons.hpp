@@ -3,6 +3,8 @@
 // parameterize with that boundary puts its uv and boundaryPolygon in (unitSquareFrame of the polygon:
 // the convex-combination interior lies inside it). The measured kind traces lengths only.
 // What the page overlays on a uv layout to compare the boundaries, at the cost of the traces.
+// The free boundary has no polygon before its nonlinear refinement (parameterize with boundary free
+// returns it as boundaryPolygon), so it is not one of these kinds.
 #pragma once
 #include <optional>
 #include <vector>
@@ -18,9 +20,14 @@ struct BoundaryPolygon {
   std::optional<Error> error;  // why this kind has no polygon (e.g. measured with a boundary source)
 };
 
+/// The kinds that have a polygon without a solve: every boundary kind but free, in the name table's
+/// order (the default list of the bindings).
+std::vector<BoundaryKind> polygonBoundaryKinds();
+
 /// One entry per kind, in the given order. The mesh must be a disk (else a Topology error for the
 /// whole call); `source` (nullopt: the default source) is needed by measured only, and a bad one is
-/// that entry's error. Progress stage "trace" (measured); cancelling returns a Cancelled error.
+/// that entry's error. Asking for free is an InvalidArgument error for the whole call. Progress stage
+/// "trace" (measured); cancelling returns a Cancelled error.
 Expected<std::vector<BoundaryPolygon>> boundaryPolygons(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
                                                         const std::vector<BoundaryKind>& kinds,
                                                         const Progress& progress = {});

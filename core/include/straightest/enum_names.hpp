@@ -35,7 +35,8 @@ inline constexpr EnumName<TraceStatus> kTraceStatusNames[] = {
 };
 inline constexpr EnumName<BoundaryKind> kBoundaryKindNames[] = {{BoundaryKind::Measured, "measured"},
                                                                 {BoundaryKind::Circle, "circle"},
-                                                                {BoundaryKind::Square, "square"}};
+                                                                {BoundaryKind::Square, "square"},
+                                                                {BoundaryKind::Free, "free"}};
 inline constexpr EnumName<WeightKind> kWeightKindNames[] = {{WeightKind::ShapePreserving, "shape-preserving"},
                                                             {WeightKind::MeanValue, "mean-value"},
                                                             {WeightKind::Cotan, "cotan"},

@@ -1,20 +1,25 @@
-// parameterize.hpp — a disk mesh mapped to the plane: a boundary map (measured, circle, square, or
-// auto: all three, keeping the preferred one by preferredMap) and interior convex-combination
+// parameterize.hpp — a disk mesh mapped to the plane: a boundary map (measured, circle, square,
+// free, or auto: all four, keeping the preferred one by preferredMap) and interior convex-combination
 // weights, solved for u and v together (linear_solve.hpp: multigrid-preconditioned BiCGSTAB by
-// default); judged with texture stretch.
+// default); judged with texture stretch. The free boundary starts from a fixed one — the measured
+// map where it is bijective, otherwise the circle's (reported as `init`) — and lets every vertex,
+// boundary included, move to lower the symmetric Dirichlet energy without ever folding
+// (free_boundary.hpp).
 //
 // Topology: a single connected disk (one boundary loop, Euler characteristic 1); anything else is a
-// Topology error naming what was found. The source (measured boundary) must be an interior point.
-// UVs are scaled into [0, 1]² by their bounding box (aspect kept); unreferenced vertices get (0, 0).
-// With convex-combination weights (all but cotan) the interior lies inside the convex boundary
-// polygon, so that box is the polygon's (unitSquareFrame): boundary_polygons.hpp gives every
-// polygon in this frame without a solve.
+// Topology error naming what was found. The source (measured and free boundaries) must be an interior
+// point. UVs are scaled into [0, 1]² by their bounding box (aspect kept); unreferenced vertices get
+// (0, 0). With convex-combination weights (all but cotan) and a fixed boundary the interior lies
+// inside the convex boundary polygon, so that box is the polygon's (unitSquareFrame):
+// boundary_polygons.hpp gives every fixed polygon in this frame without a solve. The free boundary's
+// polygon is the refined loop's uv (not convex), known only after the refinement.
 #pragma once
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "straightest/boundary_map.hpp"
+#include "straightest/free_boundary.hpp"
 #include "straightest/interior_weights.hpp"
 #include "straightest/linear_solve.hpp"
 #include "straightest/texture_stretch.hpp"
@@ -34,8 +39,9 @@ struct ParamOptions {
   std::optional<BoundaryKind> boundary = BoundaryKind::Measured;  // nullopt: auto
   WeightKind weights = WeightKind::ShapePreserving;
   LinearSolver solver = LinearSolver::Multigrid;
-  /// When set, receives "source", "trace", "boundary", "weights", "solve", "metrics" and "total"
-  /// (every one, 0 for a stage that did not run).
+  FreeBoundaryOptions free;  // the refinement's iteration cap, tolerance and time budget (boundary free and auto)
+  /// When set, receives "source", "trace", "boundary", "weights", "solve", "refine", "metrics" and
+  /// "total" (every one, 0 for a stage that did not run).
   Timings* timings = nullptr;
 };
 
@@ -43,12 +49,13 @@ struct BoundaryCandidate {
   BoundaryKind kind;
   double l2, linf;
   int64_t flipped, degenerate;
+  int64_t overlaps;  // crossing pairs of boundary edges (only a free boundary can have any)
 };
 
 /// The one rule that picks a map among candidates (boundary 'auto' and the comparison's best): a
 /// bijective map (finite L2 stretch) beats any other; among bijective maps the lower L2 stretch wins;
 /// among non-bijective ones the fewer flipped + degenerate triangles. Ties keep the incumbent (so
-/// the earlier candidate in measured, circle, square order).
+/// the earlier candidate in measured, circle, square, free order).
 bool preferredMap(double l2, int64_t badTriangles, double incumbentL2, int64_t incumbentBadTriangles);
 
 struct Parameterization {
@@ -63,7 +70,15 @@ struct Parameterization {
   int64_t outliers = 0;                       // reached traces too long to trust, radius replaced (measured)
   int64_t weightFallbacks = 0;                // vertices whose weights fell back to uniform
   double residual = 0;                        // relative residual of the linear solve
-  std::vector<BoundaryCandidate> candidates;  // auto: every boundary tried
+  std::vector<BoundaryCandidate> candidates;  // every map solved: auto's four; free's start(s) and itself
+  // The free-boundary refinement (boundary free, or auto when it kept the free map); init is nullopt
+  // for a fixed boundary and the other fields are then meaningless.
+  std::optional<BoundaryKind> init;  // the fixed boundary the refinement started from: measured or circle
+  int32_t iterations = 0;            // refinement iterations (FreeBoundaryResult)
+  double energyInitial = 0;          // symmetric Dirichlet energy per unit area of the start (+inf if it folds)
+  double energyFinal = 0;            // of the result: 4 for an isometry
+  bool converged = false;            // stopped by the relative-decrease rule (not the cap or the time budget)
+  bool untangled = false;            // the start had flipped or degenerate triangles and was untangled first
 };
 
 /// Checks that the mesh is a single disk (message says what was found otherwise).
@@ -74,8 +89,20 @@ Expected<bool> requireDisk(const TriMesh& mesh);
 Expected<SurfacePoint> interiorSource(const TriMesh& mesh, const std::optional<SurfacePoint>& source);
 
 /// Progress stages: "source", "trace", "weights", "solve", "metrics" (auto: "trace" once, then "solve"
-/// and "metrics" per candidate). Cancelling returns a Cancelled error.
+/// and "metrics" per fixed candidate), then for free and auto "refine" and "metrics". Free solves the
+/// measured map, then the circle's only when the measured one is not bijective; auto refines the one
+/// of its maps that rule picks (no second solve). Cancelling returns a Cancelled error.
 Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options,
                                         const Progress& progress = {});
+
+/// The free boundary refined from a fixed-boundary parameterization already computed (what
+/// parameterize does after its solve, for a caller that holds the start, e.g. the comparison). The
+/// result has boundary Free, init = start.boundary, the start's source, weights, loop, fallbacks
+/// and residual, and its candidates plus the free one. Records "refine" and "metrics" in `timings`.
+/// Errors: Topology (not a disk), InvalidArgument (a start that is itself free, or of the wrong
+/// size), Cancelled.
+Expected<Parameterization> refineParameterization(const TriMesh& mesh, const Parameterization& start,
+                                                  const FreeBoundaryOptions& options = {},
+                                                  const Progress& progress = {}, Timings* timings = nullptr);
 
 }  // namespace straightest

@@ -117,6 +117,24 @@ void visitFields(const BoundaryCandidate& c, V& v) {
   v.number("linf", c.linf);
   v.count("flipped", c.flipped);
   v.count("degenerate", c.degenerate);
+  v.count("overlaps", c.overlaps);
+}
+
+/// The free-boundary refinement's fields: its start, iterations, energies and how it stopped; null
+/// for a fixed boundary (no refinement ran).
+template <class V>
+void visitRefinement(const Parameterization& p, V& v) {
+  if (!p.init) {
+    for (const char* name : {"init", "iterations", "energyInitial", "energyFinal", "converged", "untangled"})
+      v.nothing(name);
+    return;
+  }
+  v.text("init", boundaryKindName(*p.init));
+  v.count("iterations", p.iterations);
+  v.number("energyInitial", p.energyInitial);
+  v.number("energyFinal", p.energyFinal);
+  v.flag("converged", p.converged);
+  v.flag("untangled", p.untangled);
 }
 
 template <class V>
@@ -136,6 +154,7 @@ void visitFields(const Parameterization& p, V& v) {
   v.flag("bijective", m.bijective);
   v.count("flipped", m.flipped);
   v.count("degenerate", m.degenerate);
+  v.count("overlaps", m.overlaps);
   v.count("fallbacks", p.fallbacks);
   v.count("outliers", p.outliers);
   v.count("weightFallbacks", p.weightFallbacks);
@@ -148,6 +167,7 @@ void visitFields(const Parameterization& p, V& v) {
     o.number("max", m.areaDistortionMax);
   });
   v.number("residual", p.residual);
+  visitRefinement(p, v);
   v.list("candidates", p.candidates);
 }
 
@@ -176,13 +196,21 @@ void visitFields(const ComparisonRow& r, V& v) {
   v.text("boundary", boundaryKindName(r.boundary));
   v.text("weights", weightKindName(r.weights));
   if (r.error) {
-    for (const char* name : {"l2", "linf", "flipped", "degenerate", "bijective"}) v.nothing(name);
+    for (const char* name : {"l2", "linf", "flipped", "degenerate", "overlaps", "bijective"}) v.nothing(name);
   } else {
     v.number("l2", r.l2);
     v.number("linf", r.linf);
     v.count("flipped", r.flipped);
     v.count("degenerate", r.degenerate);
+    v.count("overlaps", r.overlaps);
     v.flag("bijective", r.bijective);
+  }
+  if (r.error || !r.init) {
+    for (const char* name : {"init", "iterations", "converged"}) v.nothing(name);
+  } else {
+    v.text("init", boundaryKindName(*r.init));
+    v.count("iterations", r.iterations);
+    v.flag("converged", r.converged);
   }
   v.number("timeMs", r.timeMs);
   visitOptionalError(r.error, v);
