@@ -186,8 +186,16 @@ export interface Parameterization {
   degenerate: number;
   /** Pairs of boundary edges that cross in the plane (the texture would be sampled twice there). */
   overlaps: number;
-  /** Measured boundary: traces that failed and used the edge-graph distance instead. */
+  /**
+   * Measured boundary: traces that failed; their radius is the heat-method distance clamped between the
+   * straight-line and the edge-graph distance.
+   */
   fallbacks: number;
+  /**
+   * Measured boundary: reached traces longer than 1.5× the edge-graph distance (an upper bound of the
+   * geodesic distance); their radius is replaced like a failed trace's.
+   */
+  outliers: number;
   weightFallbacks: number;
   angleDistortion: { mean: number; max: number };
   areaDistortion: { mean: number; max: number };

@@ -278,6 +278,28 @@ TEST(FreeBoundary, AutoRefinesWhatItSolvedAndKeepsThePreferredOfFour) {
   }
 }
 
+TEST(FreeBoundary, OnEverySampleItIsBijectiveAndLessStretchedThanEveryFixedBoundarySoAutoPicksIt) {
+  // The samples are curved disks: no fixed convex boundary is an isometry's, and the energy the free
+  // boundary lowers bounds the stretch; a bijective start can only give a bijective free map.
+  for (const std::string& name : sampleNames()) {
+    const TriMesh mesh = makeSample(name).value();
+    ParamOptions o;
+    o.boundary = std::nullopt;
+    const Parameterization p = parameterize(mesh, o).value();
+    ASSERT_EQ(p.candidates.size(), 4u) << name;
+    const BoundaryCandidate& free = p.candidates[3];
+    ASSERT_EQ(free.kind, BoundaryKind::Free) << name;
+    EXPECT_TRUE(std::isfinite(free.l2)) << name;
+    EXPECT_EQ(free.flipped + free.degenerate + free.overlaps, 0) << name;
+    for (size_t i = 0; i < 3; ++i) EXPECT_LT(free.l2, p.candidates[i].l2) << name << " vs " << i;
+    EXPECT_GT(free.l2, 1) << name;
+    EXPECT_EQ(p.boundary, BoundaryKind::Free) << name;
+    EXPECT_TRUE(p.converged) << name;
+    EXPECT_LT(p.energyFinal, p.energyInitial) << name;
+    EXPECT_GE(p.energyFinal, 4) << name;  // 4 per unit area only for an isometry
+  }
+}
+
 TEST(FreeBoundary, TimingsListRefineAndOnlyFreeAndAutoSpendTimeThere) {
   const TriMesh mesh = makeSample("mountain").value();
   const std::vector<std::string> stages = {"source", "trace",  "boundary", "weights",
