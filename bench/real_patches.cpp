@@ -2,17 +2,18 @@
 // with the numbers that say why a boundary fails there: one JSON object per patch per line, which
 // scripts/results.mjs turns into the "real patches" table of docs/RESULTS.md.
 //
-// Per patch: its size, and for each boundary (circle, measured, square, and free when the core knows it)
-// with shape-preserving weights and the default source: L2 / L∞ stretch, flipped, degenerate and
-// overlapping counts, bijectivity, failed traces (the measured boundary's fallbacks), free-boundary
-// iterations where the result has them, time, and the worst ear. An ear is a triangle whose three
-// corners are all boundary vertices: the measured boundary's convexification can put all three on one
-// straight hull edge and collapse it. Its area ratio is (2D area / 3D area) of the ear divided by
-// (total 2D area / total 3D area), the map's mean scale: 1 for an ear mapped like the map as a whole,
-// near 0 for a collapsed one, negative for a flipped one.
+// Per patch: its size, and for each boundary (circle, measured, square, free) with shape-preserving
+// weights and the default source: L2 / L∞ stretch, flipped, degenerate and overlapping counts,
+// bijectivity, failed traces and outliers (the measured boundary's), time, and the worst ear; for free
+// also its start (init), iterations, convergence and the refinement's own time, and the same refinement
+// forced to start from the circle's map ("free_from_circle", through refineParameterization), so that
+// RESULTS.md can say what the measured start buys. An ear is a triangle whose three corners are all
+// boundary vertices: the measured boundary's convexification can put all three on one straight hull
+// edge and collapse it. Its area ratio is (2D area / 3D area) of the ear divided by (total 2D area /
+// total 3D area), the map's mean scale: 1 for an ear mapped like the map as a whole, near 0 for a
+// collapsed one, negative for a flipped one.
 //
-// usage: real_patches PATCH.off...
-#include <chrono>
+// usage: real_patches MESH.off... (any disk meshes: scripts/results.mjs also runs it on CGAL's sample disks)
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -22,21 +23,11 @@
 
 #include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
+#include "straightest/timings.hpp"
 
 using namespace straightest;
 
 namespace {
-
-/// The free-boundary refinement's iteration count when the result type has one (it comes with the
-/// free boundary), −1 otherwise: the tool builds before and after that lands.
-template <class P>
-auto iterationsOf(const P& p, int) -> decltype(static_cast<int64_t>(p.iterations)) {
-  return static_cast<int64_t>(p.iterations);
-}
-template <class P>
-int64_t iterationsOf(const P&, long) {
-  return -1;
-}
 
 std::string num(double x, int digits = 6) {
   if (!std::isfinite(x)) return "null";
@@ -95,29 +86,57 @@ std::vector<std::pair<std::string, BoundaryKind>> boundaries() {
   return kinds;
 }
 
+/// One map's JSON object: its stretch and counts, and for a free map its refinement's numbers.
+std::string describe(const TriMesh& mesh, const Parameterization& p, double ms, const Timings& timings) {
+  const StretchMetrics& m = p.metrics;
+  const auto [ear, ears] = worstEar(mesh, p.uv);
+  std::string json = "{\"l2\":" + num(m.l2) + ",\"linf\":" + num(m.linf) + ",\"flipped\":" + std::to_string(m.flipped) +
+                     ",\"degenerate\":" + std::to_string(m.degenerate) + ",\"overlaps\":" + std::to_string(m.overlaps) +
+                     ",\"bijective\":" + (m.bijective ? "true" : "false") +
+                     ",\"fallbacks\":" + std::to_string(p.fallbacks) + ",\"outliers\":" + std::to_string(p.outliers) +
+                     ",\"worst_ear\":" + num(ear) + ",\"ears\":" + std::to_string(ears) + ",\"ms\":" + num(ms, 4);
+  if (p.init)
+    json += ",\"init\":" + jsonString(boundaryKindName(*p.init)) + ",\"iterations\":" + std::to_string(p.iterations) +
+            ",\"converged\":" + (p.converged ? "true" : "false") +
+            ",\"untangled\":" + (p.untangled ? "true" : "false") + ",\"energy_initial\":" + num(p.energyInitial) +
+            ",\"energy_final\":" + num(p.energyFinal) + ",\"refine_ms\":" + num(timings["refine"], 4);
+  return json + "}";
+}
+
+std::string errorJson(const Error& error) { return "{\"error\":" + jsonString(error.message) + "}"; }
+
 std::string runBoundary(const TriMesh& mesh, BoundaryKind kind) {
+  Timings timings;
   ParamOptions options;
   options.boundary = kind;
   options.weights = WeightKind::ShapePreserving;
-  const auto start = std::chrono::steady_clock::now();
+  options.timings = &timings;
+  const Stopwatch clock;
   const auto result = parameterize(mesh, options);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!result) return "{\"error\":" + jsonString(result.error().message) + "}";
-  const Parameterization& p = result.value();
-  const StretchMetrics& m = p.metrics;
-  const auto [ear, ears] = worstEar(mesh, p.uv);
-  return "{\"l2\":" + num(m.l2) + ",\"linf\":" + num(m.linf) + ",\"flipped\":" + std::to_string(m.flipped) +
-         ",\"degenerate\":" + std::to_string(m.degenerate) + ",\"overlaps\":" + std::to_string(m.overlaps) +
-         ",\"bijective\":" + (m.bijective ? "true" : "false") + ",\"fallbacks\":" + std::to_string(p.fallbacks) +
-         ",\"iterations\":" + (iterationsOf(p, 0) < 0 ? "null" : std::to_string(iterationsOf(p, 0))) +
-         ",\"worst_ear\":" + num(ear) + ",\"ears\":" + std::to_string(ears) + ",\"ms\":" + num(ms, 4) + "}";
+  if (!result) return errorJson(result.error());
+  return describe(mesh, result.value(), clock.ms(), timings);
+}
+
+/// The free boundary refined from the circle's map whatever the measured map is (parameterize's free
+/// starts from the measured map when it is bijective); ms counts the circle's solve and the refinement.
+std::string runFreeFromCircle(const TriMesh& mesh) {
+  ParamOptions options;
+  options.boundary = BoundaryKind::Circle;
+  options.weights = WeightKind::ShapePreserving;
+  const Stopwatch clock;
+  const auto start = parameterize(mesh, options);
+  if (!start) return errorJson(start.error());
+  Timings timings;
+  const auto result = refineParameterization(mesh, start.value(), options.free, {}, &timings);
+  if (!result) return errorJson(result.error());
+  return describe(mesh, result.value(), clock.ms(), timings);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: real_patches PATCH.off...\n");
+    std::fprintf(stderr, "usage: real_patches MESH.off...\n");
     return 2;
   }
   const auto kinds = boundaries();
@@ -136,6 +155,7 @@ int main(int argc, char** argv) {
                        ",\"faces\":" + std::to_string(s.faces) + ",\"boundary_vertices\":" +
                        std::to_string(s.boundaryLoopSizes.empty() ? 0 : s.boundaryLoopSizes[0]);
     for (const auto& [kindName, kind] : kinds) line += ",\"" + kindName + "\":" + runBoundary(mesh.value(), kind);
+    line += ",\"free_from_circle\":" + runFreeFromCircle(mesh.value());
     std::printf("%s}\n", line.c_str());
     std::fflush(stdout);
   }
