@@ -1,5 +1,6 @@
 #include "untangle.hpp"
 
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -99,9 +100,61 @@ double dotAll(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
   return s;
 }
 
+/// L-BFGS's initial inverse Hessian: the inverse of the Dirichlet energy's stiffness on the 3D shape (the
+/// cotan Laplacian, fixed vertices held). With the identity instead, a fold along a thin protrusion
+/// unwinds about one ring per iteration; the Laplacian spreads each step along the whole surface.
+class Preconditioner {
+ public:
+  Preconditioner(const TriMesh& mesh, const std::vector<uint8_t>& fixed) : fixed_(fixed) {
+    const std::vector<FaceGradient> gradients = faceGradients(mesh, true);
+    const int32_t n = mesh.numVertices();
+    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<double> diagonal(n, 0);
+    for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+      const FaceGradient& g = gradients[f];
+      const Triangle& t = mesh.triangle(f);
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          if (fixed[t[a]] || fixed[t[b]]) continue;
+          const double k = g.area * (g.gx[a] * g.gx[b] + g.gy[a] * g.gy[b]);
+          if (a == b) diagonal[t[a]] += k;
+          else entries.emplace_back(t[a], t[b], k);
+        }
+    }
+    double trace = 0;
+    int32_t moving = 0;
+    for (int32_t v = 0; v < n; ++v)
+      if (!fixed[v]) trace += diagonal[v], ++moving;
+    // A small mass term: with no vertex held the Laplacian is singular (translations).
+    const double shift = 1e-6 * trace / std::max(1, moving);
+    for (int32_t v = 0; v < n; ++v) entries.emplace_back(v, v, fixed[v] ? 1.0 : diagonal[v] + shift);
+    Eigen::SparseMatrix<double> k(n, n);
+    k.setFromTriplets(entries.begin(), entries.end());
+    factor_.compute(k);
+    ok_ = factor_.info() == Eigen::Success && moving > 0;
+  }
+
+  /// v ← K⁻¹ v (both coordinates; zero at fixed vertices); unchanged if the factorization failed.
+  void apply(std::vector<Vec2>& v) const {
+    if (!ok_) return;
+    const Eigen::Index n = static_cast<Eigen::Index>(v.size());
+    Eigen::VectorXd x(n), y(n);
+    for (Eigen::Index i = 0; i < n; ++i) x[i] = v[i].x, y[i] = v[i].y;
+    x = factor_.solve(x);
+    y = factor_.solve(y);
+    for (Eigen::Index i = 0; i < n; ++i) v[i] = fixed_[i] ? Vec2{} : Vec2{x[i], y[i]};
+  }
+
+ private:
+  const std::vector<uint8_t>& fixed_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+  bool ok_ = false;
+};
+
 /// L-BFGS on the barrier at its current ε, from uv; returns the iterations taken (−1 when cancelled).
-int minimize(const Barrier& barrier, std::vector<Vec2>& uv, Clock::time_point deadline,
-             const std::function<bool(double)>& keepGoing) {
+int minimize(const Barrier& barrier, const Preconditioner& preconditioner, std::vector<Vec2>& uv,
+             Clock::time_point deadline, const std::function<bool(double)>& keepGoing) {
+  std::vector<Vec2> scratch;
   std::vector<Vec2> g, gNext, direction(uv.size()), trial(uv.size());
   double e = barrier.evaluate(uv, &g);
   struct Pair {
@@ -120,15 +173,18 @@ int minimize(const Barrier& barrier, std::vector<Vec2>& uv, Clock::time_point de
       alpha[k] = history[k].rho * dotAll(history[k].s, direction);
       for (size_t i = 0; i < uv.size(); ++i) direction[i] -= history[k].y[i] * alpha[k];
     }
+    preconditioner.apply(direction);
     if (!history.empty()) {
       const Pair& last = history.back();
-      const double gamma = dotAll(last.s, last.y) / dotAll(last.y, last.y);
+      scratch = last.y;
+      preconditioner.apply(scratch);
+      const double gamma = dotAll(last.s, last.y) / dotAll(last.y, scratch);
       for (Vec2& d : direction) d *= gamma;
     } else {
-      double gmax = 0;
-      for (const Vec2& v : g) gmax = std::max({gmax, std::abs(v.x), std::abs(v.y)});
-      if (gmax == 0) break;
-      const double first = 1e-3 / gmax;  // a first step that moves no vertex by more than 1e-3
+      double dmax = 0;
+      for (const Vec2& v : direction) dmax = std::max({dmax, std::abs(v.x), std::abs(v.y)});
+      if (!(dmax > 0) || !std::isfinite(dmax)) break;
+      const double first = 1e-3 / dmax;  // a first step that moves no vertex by more than 1e-3
       for (Vec2& d : direction) d *= first;
     }
     for (size_t k = 0; k < history.size(); ++k) {
@@ -202,6 +258,7 @@ Expected<UntangleResult> untangle(const TriMesh& mesh, std::vector<Vec2> uv, con
     return result;  // nothing to aim for: a boundary enclosing no area (the caller reports it)
   }
   Barrier barrier(mesh, fixed, std::sqrt(surfaceArea / mapArea));
+  const Preconditioner preconditioner(mesh, fixed);
   Reporter report(progress);
   double dMin = barrier.minDet(uv);
   barrier.eps = dMin > 0 ? 1e-3 : std::max(1e-3, std::sqrt(1e-12 + 0.04 * dMin * dMin));
@@ -209,7 +266,8 @@ Expected<UntangleResult> untangle(const TriMesh& mesh, std::vector<Vec2> uv, con
   for (int round = 0; round < kMaxRounds; ++round) {
     // Fraction 1 − 0.8^(rounds done): most starts are untangled within a few rounds, and the fraction
     // keeps moving (so the progress, and its cancellation, is called) however many there are.
-    const int inner = minimize(barrier, uv, deadline, [&](double f) { return report(1 - std::pow(0.8, round + f)); });
+    const int inner = minimize(barrier, preconditioner, uv, deadline,
+                               [&](double f) { return report(1 - std::pow(0.8, round + f)); });
     if (inner < 0) return cancelledError("parameterization");
     result.iterations += inner;
     dMin = barrier.minDet(uv);

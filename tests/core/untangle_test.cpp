@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "../../core/src/untangle.hpp"
+#include "straightest/parameterize.hpp"
 #include "straightest/texture_stretch.hpp"
 #include "test_meshes.hpp"
 
@@ -54,6 +55,54 @@ TEST(Untangle, EveryInteriorVertexOnOnePointIsSpreadOut) {
   ASSERT_TRUE(r);
   EXPECT_TRUE(r.value().injective);
   EXPECT_TRUE(textureStretch(mesh, r.value().uv).bijective);
+}
+
+/// A long finger (a closed tube of 8-vertex rings 0.8 apart, radius 1, capped at one end, open at the other)
+/// like an animal's leg: a convex-combination map from its open end shrinks the rings geometrically, so
+/// most of its faces underflow to zero area.
+TriMesh finger(int rings) {
+  const int segments = 8;
+  std::vector<Vec3> p;
+  std::vector<Triangle> t;
+  for (int k = 0; k < rings; ++k)
+    for (int s = 0; s < segments; ++s) {
+      const double angle = 2 * kPi * (s + 0.5 * k) / segments;
+      p.push_back({std::cos(angle), std::sin(angle), 0.8 * k});
+    }
+  p.push_back({0, 0, 0.8 * rings});
+  for (int k = 0; k + 1 < rings; ++k)
+    for (int s = 0; s < segments; ++s) {
+      const int a = k * segments + s, b = k * segments + (s + 1) % segments;
+      t.push_back({a, b, a + segments});
+      t.push_back({b, b + segments, a + segments});
+    }
+  const int tip = rings * segments, last = (rings - 1) * segments;
+  for (int s = 0; s < segments; ++s) t.push_back({last + s, last + (s + 1) % segments, tip});
+  return testing::buildOrFail(p, t);
+}
+
+TEST(Untangle, AScrambledLongFingerIsUntangledAlongItsWholeLength) {
+  // Like an animal's leg in a patch: a long tube folded all along, whose map must open all the way to
+  // the tip with the boundary held.
+  const TriMesh mesh = finger(48);
+  ParamOptions o;
+  o.boundary = BoundaryKind::Circle;
+  auto start = parameterize(mesh, o);
+  ASSERT_TRUE(start);
+  std::vector<Vec2> uv = start.value().uv;
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> anywhere(-0.7, 0.7);
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    if (!mesh.isBoundaryVertex(v)) uv[v] = {anywhere(rng), anywhere(rng)};
+  ASSERT_GT(textureStretch(mesh, uv).flipped, mesh.numFaces() / 4);
+  auto r = run(mesh, uv);
+  ASSERT_TRUE(r);
+  EXPECT_TRUE(r.value().injective);
+  EXPECT_TRUE(textureStretch(mesh, r.value().uv).bijective);
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    if (mesh.isBoundaryVertex(v)) {
+      EXPECT_EQ(r.value().uv[v], uv[v]);
+    }
 }
 
 TEST(Untangle, AnInjectiveMapIsAlreadyDone) {
