@@ -22,21 +22,6 @@ constexpr double kArmijo = 1e-4;        // sufficient decrease, as a fraction of
 constexpr int kMaxHalvings = 40;        // then no step lowers the energy: a stationary point
 constexpr double kUntangleShare = 0.5;  // of the "refine" progress, when the start must be untangled
 
-/// Calls the progress at most ~100 times: only when the fraction has moved by a hundredth.
-class Reporter {
- public:
-  explicit Reporter(const Progress& p) : progress_(p) {}
-  bool operator()(double fraction) {
-    if (fraction < last_ + 0.01) return true;
-    last_ = fraction;
-    return progress_("refine", fraction);
-  }
-
- private:
-  const Progress& progress_;
-  double last_ = -1;
-};
-
 /// The texture-stretch rule: a face with 2D area ≤ kDegenerateUV × mean |area| (or negative) is bad.
 bool hasBadFace(const TriMesh& mesh, const std::vector<Vec2>& uv) { return !allFacesPositive(mesh, uv, kDegenerateUV); }
 
@@ -133,7 +118,7 @@ Expected<FreeBoundaryResult> refineFreeBoundary(const TriMesh& mesh, const std::
   if (!result.untangled) result.energyInitial = energy;
   const int64_t allowedOverlaps = boundaryOverlaps(mesh, uv);
 
-  Reporter report(slimProgress);
+  ThrottledProgress report(slimProgress, "refine");
   SlimGlobalStep global(mesh);
   std::vector<Mat2> weights(mesh.numFaces()), rotations(mesh.numFaces());
   std::vector<Vec2> next, direction(uv.size()), trial(uv.size());

@@ -71,17 +71,10 @@ Expected<bool> ilutSolve(const CsrMatrix& A, const std::vector<double>& rhs, std
 
 /// Eigen's SparseLU (COLAMD) for both columns at once; false if A is singular.
 bool directSolve(const CsrMatrix& A, const std::vector<double>& rhs, std::vector<double>& x) {
-  const int32_t n = A.rows;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
   lu.compute(toEigen(A));
   if (lu.info() != Eigen::Success) return false;
-  Eigen::MatrixXd b(n, 2);
-  for (int32_t r = 0; r < n; ++r) b.row(r) << rhs[2 * r], rhs[2 * r + 1];
-  const Eigen::MatrixXd sol = lu.solve(b);
-  for (int32_t r = 0; r < n; ++r) {
-    x[2 * r] = sol(r, 0);
-    x[2 * r + 1] = sol(r, 1);
-  }
+  solveInterleaved(lu, rhs, x);
   return true;
 }
 

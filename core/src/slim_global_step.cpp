@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "eigen_bridge.hpp"
+
 namespace straightest {
 namespace {
 
@@ -176,13 +178,7 @@ bool SlimGlobalStep::directSolve(std::vector<double>& x) {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& cholesky = cholesky_->factor;
   cholesky.factorize(a);
   if (cholesky.info() != Eigen::Success) return false;
-  Eigen::MatrixX2d b(n_, 2);
-  for (int32_t v = 0; v < n_; ++v) b.row(v) << rhs_[2 * v], rhs_[2 * v + 1];
-  const Eigen::MatrixX2d solution = cholesky.solve(b);
-  for (int32_t v = 0; v < n_; ++v) {
-    x[2 * v] = solution(v, 0);
-    x[2 * v + 1] = solution(v, 1);
-  }
+  solveInterleaved(cholesky, rhs_, x);
   return true;
 }
 

@@ -25,21 +25,6 @@ double chi(double d, double eps) {
   return d >= 0 ? 0.5 * (d + r) : 0.5 * eps * eps / (r - d);
 }
 
-/// Calls the progress at most ~100 times: only when the fraction has moved by a hundredth.
-class Reporter {
- public:
-  explicit Reporter(const Progress& p) : progress_(p) {}
-  bool operator()(double fraction) {
-    if (fraction < last_ + 0.01) return true;
-    last_ = fraction;
-    return progress_("refine", fraction);
-  }
-
- private:
-  const Progress& progress_;
-  double last_ = -1;
-};
-
 class Barrier {
  public:
   Barrier(const TriMesh& mesh, const std::vector<uint8_t>& fixed, double scale)
@@ -259,7 +244,7 @@ Expected<UntangleResult> untangle(const TriMesh& mesh, std::vector<Vec2> uv, con
   }
   Barrier barrier(mesh, fixed, std::sqrt(surfaceArea / mapArea));
   const Preconditioner preconditioner(mesh, fixed);
-  Reporter report(progress);
+  ThrottledProgress report(progress, "refine");
   double dMin = barrier.minDet(uv);
   barrier.eps = dMin > 0 ? 1e-3 : std::max(1e-3, std::sqrt(1e-12 + 0.04 * dMin * dMin));
   double ePrev = barrier.evaluate(uv, nullptr);

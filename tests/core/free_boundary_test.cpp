@@ -182,32 +182,8 @@ TEST(FreeBoundary, AFoldedStartIsUntangledThenRefined) {
   EXPECT_LT(r.energyFinal, 4.2);
 }
 
-/// A finger: a closed tube (8 vertices a ring, `rings` rings 0.8 apart, radius 1) capped at one end,
-/// open at the other. Its only boundary is the open end, so a convex-combination map shrinks the rings
-/// geometrically towards the tip and their areas underflow the degeneracy threshold.
-TriMesh finger(int rings) {
-  const int segments = 8;
-  std::vector<Vec3> p;
-  std::vector<Triangle> t;
-  for (int k = 0; k < rings; ++k)
-    for (int s = 0; s < segments; ++s) {
-      const double angle = 2 * kPi * (s + 0.5 * k) / segments;
-      p.push_back({std::cos(angle), std::sin(angle), 0.8 * k});
-    }
-  p.push_back({0, 0, 0.8 * rings});
-  for (int k = 0; k + 1 < rings; ++k)
-    for (int s = 0; s < segments; ++s) {
-      const int a = k * segments + s, b = k * segments + (s + 1) % segments;
-      t.push_back({a, b, a + segments});
-      t.push_back({b, b + segments, a + segments});
-    }
-  const int tip = rings * segments, last = (rings - 1) * segments;
-  for (int s = 0; s < segments; ++s) t.push_back({last + s, last + (s + 1) % segments, tip});
-  return testing::buildOrFail(p, t);
-}
-
 TEST(FreeBoundary, ALongFingerWhoseLinearMapUnderflowsIsUntangledAndBijective) {
-  const TriMesh mesh = finger(32);
+  const TriMesh mesh = testing::finger(32);
   for (WeightKind weights : {WeightKind::MeanValue, WeightKind::Uniform}) {
     const std::vector<Vec2> start = startMap(mesh, BoundaryKind::Circle, weights);
     const StretchMetrics before = textureStretch(mesh, start);

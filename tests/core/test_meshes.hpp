@@ -132,4 +132,28 @@ inline TriMesh icosphere(int subdivisions) {
   return buildOrFail(std::move(p), std::move(t));
 }
 
+/// A finger like an animal's leg: a closed tube of 8-vertex rings 0.8 apart, radius 1, `rings` rings,
+/// capped at one end and open at the other (its only boundary). A convex-combination map from the open
+/// end shrinks the rings geometrically towards the tip, so their areas underflow to zero.
+inline TriMesh finger(int rings) {
+  const int segments = 8;
+  std::vector<Vec3> p;
+  std::vector<Triangle> t;
+  for (int k = 0; k < rings; ++k)
+    for (int s = 0; s < segments; ++s) {
+      const double angle = 2 * kPi * (s + 0.5 * k) / segments;
+      p.push_back({std::cos(angle), std::sin(angle), 0.8 * k});
+    }
+  p.push_back({0, 0, 0.8 * rings});
+  for (int k = 0; k + 1 < rings; ++k)
+    for (int s = 0; s < segments; ++s) {
+      const int a = k * segments + s, b = k * segments + (s + 1) % segments;
+      t.push_back({a, b, a + segments});
+      t.push_back({b, b + segments, a + segments});
+    }
+  const int tip = rings * segments, last = (rings - 1) * segments;
+  for (int s = 0; s < segments; ++s) t.push_back({last + s, last + (s + 1) % segments, tip});
+  return testing::buildOrFail(p, t);
+}
+
 }  // namespace straightest::testing

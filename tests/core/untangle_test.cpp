@@ -57,34 +57,10 @@ TEST(Untangle, EveryInteriorVertexOnOnePointIsSpreadOut) {
   EXPECT_TRUE(textureStretch(mesh, r.value().uv).bijective);
 }
 
-/// A long finger (a closed tube of 8-vertex rings 0.8 apart, radius 1, capped at one end, open at the other)
-/// like an animal's leg: a convex-combination map from its open end shrinks the rings geometrically, so
-/// most of its faces underflow to zero area.
-TriMesh finger(int rings) {
-  const int segments = 8;
-  std::vector<Vec3> p;
-  std::vector<Triangle> t;
-  for (int k = 0; k < rings; ++k)
-    for (int s = 0; s < segments; ++s) {
-      const double angle = 2 * kPi * (s + 0.5 * k) / segments;
-      p.push_back({std::cos(angle), std::sin(angle), 0.8 * k});
-    }
-  p.push_back({0, 0, 0.8 * rings});
-  for (int k = 0; k + 1 < rings; ++k)
-    for (int s = 0; s < segments; ++s) {
-      const int a = k * segments + s, b = k * segments + (s + 1) % segments;
-      t.push_back({a, b, a + segments});
-      t.push_back({b, b + segments, a + segments});
-    }
-  const int tip = rings * segments, last = (rings - 1) * segments;
-  for (int s = 0; s < segments; ++s) t.push_back({last + s, last + (s + 1) % segments, tip});
-  return testing::buildOrFail(p, t);
-}
-
 TEST(Untangle, AScrambledLongFingerIsUntangledAlongItsWholeLength) {
   // Like an animal's leg in a patch: a long tube folded all along, whose map must open all the way to
   // the tip with the boundary held.
-  const TriMesh mesh = finger(48);
+  const TriMesh mesh = testing::finger(48);
   ParamOptions o;
   o.boundary = BoundaryKind::Circle;
   auto start = parameterize(mesh, o);

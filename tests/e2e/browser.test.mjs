@@ -41,6 +41,20 @@ async function readTicker(page) {
   return page.evaluate(() => ({ ticks: window.__ticker.ticks, maxGap: window.__ticker.maxGap }));
 }
 
+/** The uv layout canvas's size and the share of its pixels that differ from its background colour. */
+function uvLayoutCoverage(page) {
+  return page.evaluate(() => {
+    const canvas = document.getElementById('uv-canvas');
+    const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
+    const background = [data[4 * (canvas.width + 1)], data[4 * (canvas.width + 1) + 1], data[4 * (canvas.width + 1) + 2]];
+    let differing = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (background.some((c, k) => Math.abs(data[i + k] - c) > 12)) differing++;
+    }
+    return { width: canvas.width, height: canvas.height, fraction: differing / (data.length / 4) };
+  });
+}
+
 describe('the static server', () => {
   counted('server redirects / to the page, serves WASM MIME types and refuses path traversal', {}, async ({ port }) => {
     const root = await rawGet(port, '/');
@@ -258,16 +272,7 @@ describe('parameterization', () => {
     assert(await page.isHidden('#error-panel'), 'error panel is visible');
 
     // The layout is drawn: a good share of the uv canvas differs from its background.
-    const layout = await page.evaluate(() => {
-      const canvas = document.getElementById('uv-canvas');
-      const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
-      const background = [data[4 * (canvas.width + 1)], data[4 * (canvas.width + 1) + 1], data[4 * (canvas.width + 1) + 2]];
-      let differing = 0;
-      for (let i = 0; i < data.length; i += 4) {
-        if (background.some((c, k) => Math.abs(data[i + k] - c) > 12)) differing++;
-      }
-      return { width: canvas.width, height: canvas.height, fraction: differing / (data.length / 4) };
-    });
+    const layout = await uvLayoutCoverage(page);
     assert(layout.width > 100 && layout.height > 100, `uv canvas is ${layout.width}×${layout.height}`);
     assert(layout.fraction > 0.1, `only ${(layout.fraction * 100).toFixed(1)}% of the uv canvas is drawn on`);
 
@@ -357,16 +362,7 @@ describe('parameterization', () => {
     assert((await page.textContent('#param-method')).includes('free boundary'), 'the method line does not say free');
 
     // The layout shows the free map: a good share of the canvas is drawn on.
-    const drawn = await page.evaluate(() => {
-      const canvas = document.getElementById('uv-canvas');
-      const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
-      const background = [data[4 * (canvas.width + 1)], data[4 * (canvas.width + 1) + 1], data[4 * (canvas.width + 1) + 2]];
-      let differing = 0;
-      for (let i = 0; i < data.length; i += 4) {
-        if (background.some((c, k) => Math.abs(data[i + k] - c) > 12)) differing++;
-      }
-      return differing / (data.length / 4);
-    });
+    const drawn = (await uvLayoutCoverage(page)).fraction;
     assert(drawn > 0.1, `only ${(drawn * 100).toFixed(1)}% of the uv canvas is drawn on`);
 
     const [obj] = await Promise.all([page.waitForEvent('download'), page.click('#export-obj-button')]);

@@ -54,6 +54,23 @@ class Progress {
   double begin_ = 0, end_ = 1;
 };
 
+/// A loop's progress in one stage, passed on only when the fraction has moved by a hundredth (so at
+/// most ~100 calls however many iterations); false means "stop".
+class ThrottledProgress {
+ public:
+  ThrottledProgress(const Progress& progress, const char* stage) : progress_(progress), stage_(stage) {}
+  bool operator()(double fraction) {
+    if (fraction < last_ + 0.01) return true;
+    last_ = fraction;
+    return progress_(stage_, fraction);
+  }
+
+ private:
+  const Progress& progress_;
+  const char* stage_;
+  double last_ = -1;
+};
+
 /// Calls `progress`; true means "go on".
 inline bool report(const Progress& progress, const char* stage, double fraction) { return progress(stage, fraction); }
 
