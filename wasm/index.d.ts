@@ -42,7 +42,7 @@ export type SurfacePoint =
   | { halfedge: number; t: number };
 
 export type TraceStatus =
-  | 'reached' | 'hit_boundary' | 'returned_to_source' | 'loop' | 'step_limit' | 'no_exit' | 'degenerate_plane';
+  | 'reached' | 'hit_boundary' | 'other_component' | 'loop' | 'step_limit' | 'no_exit' | 'degenerate_plane';
 
 export interface BasePlane {
   source: SurfacePoint;

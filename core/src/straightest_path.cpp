@@ -129,7 +129,7 @@ struct StraightestPathTracer::Impl::Walk {
     if (!first && (tr.isSourceFace(f1) || tr.isSourceFace(f2)) && onSegment(tr.sourcePosition_, P, Q)) {
       out.length += norm(tr.sourcePosition_ - P);
       emit(tr.source_, tr.sourcePosition_);
-      out.status = TraceStatus::ReturnedToSource;
+      out.status = TraceStatus::OtherComponent;
       return true;
     }
     out.length += norm(Q - P);

@@ -439,7 +439,7 @@ TEST(StraightestPathTracer, SourceOnAnEdgeWithThePlaneAlmostAlongTheEdgeLeavesTh
   // D at t ≤ 1e-7 on an edge of the grid vertex one more cell along the diagonal, so the plane crosses
   // the source edge at S at an angle below ~5e-8. The computed crossing of that edge landed up to ~1e-6
   // from S (rounding at coordinates ~1000), was taken as the first step, and led the walk back through
-  // the edge to S (returned_to_source; hit_boundary in another run). Each target must be reached along
+  // the edge to S (other_component; hit_boundary in another run). Each target must be reached along
   // the straight segment.
   const int n = 10;
   for (double angle : {0.0, 0.3, 1.1, 2.5})

@@ -11,7 +11,7 @@ const st = await createStraightest();
 const quadGrid = await readFile(new URL('../data/good/quad_grid.obj', import.meta.url));
 
 test('name lists come from the core', () => {
-  assert.deepEqual(st.traceStatuses, ['reached', 'hit_boundary', 'returned_to_source', 'loop', 'step_limit', 'no_exit', 'degenerate_plane']);
+  assert.deepEqual(st.traceStatuses, ['reached', 'hit_boundary', 'other_component', 'loop', 'step_limit', 'no_exit', 'degenerate_plane']);
   assert.deepEqual(st.boundaryKinds, ['measured', 'circle', 'square', 'free']);
   assert.deepEqual(st.polygonBoundaryKinds, ['measured', 'circle', 'square']);
   assert.deepEqual(st.boundaryChoices, [...st.boundaryKinds, 'auto']);

@@ -26,7 +26,7 @@ function describe(status: TraceStatus): string {
   switch (status) {
     case 'reached': return 'reached';
     case 'hit_boundary': return 'the section left the surface';
-    case 'returned_to_source': return 'a closed loop through the source';
+    case 'other_component': return 'a closed loop through the source';
     case 'loop': return 'the walk revisited a crossing';
     case 'step_limit': return 'too many steps';
     case 'no_exit': return 'no face continues the section';

@@ -27,7 +27,7 @@ struct EnumName {
 inline constexpr EnumName<TraceStatus> kTraceStatusNames[] = {
     {TraceStatus::Reached, "reached"},
     {TraceStatus::HitBoundary, "hit_boundary"},
-    {TraceStatus::ReturnedToSource, "returned_to_source"},
+    {TraceStatus::OtherComponent, "other_component"},
     {TraceStatus::Loop, "loop"},
     {TraceStatus::StepLimit, "step_limit"},
     {TraceStatus::NoExit, "no_exit"},

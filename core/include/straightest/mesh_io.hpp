@@ -49,4 +49,9 @@ Expected<TriMesh> loadMeshFile(const std::string& path, const BuildLimits& limit
 /// faces written as v/vt. Reading it back gives the same doubles.
 std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv = nullptr);
 
+/// OBJ text with a uv per face corner (cornerUv[3f + k], e.g. Parameterization::cornerUv): one `vt` per
+/// distinct uv, so a seam splits (`f v/vt` with different vt on its two sides); a face whose corners are
+/// NaN (outside the parameterized component) is written without vt.
+std::string writeObjWithCornerUv(const TriMesh& mesh, const std::vector<Vec2>& cornerUv);
+
 }  // namespace straightest

@@ -6,9 +6,13 @@
 // boundary included, move to lower the symmetric Dirichlet energy without ever folding
 // (free_boundary.hpp).
 //
-// Topology: a single connected disk (one boundary loop, Euler characteristic 1); anything else is a
-// Topology error naming what was found. The source (measured and free boundaries) must be an interior
-// point. UVs are scaled into [0, 1]² by their bounding box (aspect kept); unreferenced vertices get
+// Topology: every manifold mesh. A single connected disk (one boundary loop, Euler characteristic 1)
+// is mapped as it is; anything else is first made a disk by disk_cut.hpp (the largest component; holes
+// filled virtually with the longest loop as the outer boundary; closed and higher-genus surfaces cut
+// along a seam) and the disk is parameterized, virtual vertices and faces dropped from the output. The
+// result then says how (`cut`), and its map is per face corner (`cornerUv`: a seam vertex has one uv per
+// side). The source (measured and free boundaries) must be an interior point of the disk (not on the
+// seam). UVs are scaled into [0, 1]² by their bounding box (aspect kept); unreferenced vertices get
 // (0, 0). With convex-combination weights (all but cotan) and a fixed boundary the interior lies
 // inside the convex boundary polygon, so that box is the polygon's (unitSquareFrame):
 // boundary_polygons.hpp gives every fixed polygon in this frame without a solve. The free boundary's
@@ -19,6 +23,7 @@
 #include <vector>
 
 #include "straightest/boundary_map.hpp"
+#include "straightest/disk_cut.hpp"
 #include "straightest/free_boundary.hpp"
 #include "straightest/interior_weights.hpp"
 #include "straightest/linear_solve.hpp"
@@ -79,9 +84,24 @@ struct Parameterization {
   double energyFinal = 0;            // of the result: 4 for an isometry
   bool converged = false;            // stopped by the relative-decrease rule (not the cap or the time budget)
   bool untangled = false;            // the start had flipped or degenerate triangles and was untangled first
+
+  // How the mesh was made a disk (disk_cut.hpp) and the map per face corner. For a disk: cut Disk,
+  // cornerUv[3f + k] = uv[triangle(f)[k]], no seam. Otherwise uv holds, per mesh vertex, the uv of one of
+  // its copies (a seam vertex has several: cornerUv has each face's own), (0, 0) for vertices outside
+  // the parameterized component; boundaryLoop, boundaryPolygon and metrics.faceStretch are over the
+  // mesh's vertices and faces (faces outside the component: stretch NaN, cornerUv NaN).
+  CutMethod cut = CutMethod::Disk;
+  std::vector<Vec2> cornerUv;                // 3 per mesh face, in [0, 1]² like uv
+  std::vector<std::array<int32_t, 2>> seam;  // mesh edges cut open (vertex pairs)
+  std::vector<int32_t> filledLoops;          // indices into mesh.boundaryLoops() filled virtually
+  int32_t genus = 0;
+  double seamLength = 0;
+  int32_t component = 0, components = 1;  // which component was parameterized, of how many
+  int64_t virtualVertices = 0;            // vertices added by filling (never in the output)
 };
 
-/// Checks that the mesh is a single disk (message says what was found otherwise).
+/// Checks that the mesh is a single disk (message says what was found otherwise): the fixed-boundary
+/// polygons and the free refinement of a given start need one; parameterize does not.
 Expected<bool> requireDisk(const TriMesh& mesh);
 
 /// The source the measured boundary is centred on: resolveSource, then moved onto an edge or vertex

@@ -11,6 +11,14 @@
 //  - stop at D. If the walk hits the boundary, returns to S, revisits a crossing (loop) or exceeds the
 //    step bound, walk the other way along the same section from S (leaving on the −t side); if neither
 //    reaches D, return the first walk's status and partial path.
+// Closed meshes (no boundary loop; the paper's future work): the base normal is the area-weighted
+// normal at S (base_plane.hpp, reported as a fallback), and the section through S is a closed curve.
+// Both directions are always walked; when both reach D the section closes through D and the shorter
+// arc is returned (`reversed` says which way it leaves S: forward = toward t), the longer one's length
+// as `otherArcLength`. When the walk comes back to S without meeting D, D lies on another component
+// of the section (the plane cuts the surface in several closed curves): status OtherComponent, on any
+// mesh. Meshes with a boundary keep the paper's rule above (the first walk that reaches D), and report
+// otherArcLength only if the second walk ran and reached D too.
 // Cost is output-sensitive: O(faces crossed) per destination, and the tracer's setup is O(faces around
 // S) (plus one O(V) stamp array, allocated at the first walk through a vertex); no allocation per step
 // (the point buffers are reused). Loops need no per-edge stamps: between two vertex passings the
@@ -19,6 +27,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,13 +41,13 @@
 namespace straightest {
 
 enum class TraceStatus : uint8_t {
-  Reached,           // the only success
-  HitBoundary,       // the section left the surface before D
-  ReturnedToSource,  // the section is a closed loop through S that misses D
-  Loop,              // the walk revisited a crossing without returning to S
-  StepLimit,         // more steps than the bound
-  NoExit,            // at a vertex no face continues the section (degenerate neighbourhood)
-  DegeneratePlane,   // D − S parallel to the base normal, or D == S
+  Reached,          // the only success
+  HitBoundary,      // the section left the surface before D
+  OtherComponent,   // the section through S is a closed curve that misses D (D is on another of its components)
+  Loop,             // the walk revisited a crossing without returning to S
+  StepLimit,        // more steps than the bound
+  NoExit,           // at a vertex no face continues the section (degenerate neighbourhood)
+  DegeneratePlane,  // D − S parallel to the base normal, or D == S
 };
 const char* traceStatusName(TraceStatus s);
 inline constexpr int kTraceStatusCount = 7;
@@ -51,11 +60,13 @@ struct TraceOptions {
 
 struct StraightestPath {
   TraceStatus status = TraceStatus::NoExit;
-  double length = 0;                 // sum of segment lengths (of the partial path when not reached)
-  int64_t facesCrossed = 0;          // segments walked (each lies in one face or along one edge)
-  bool reversed = false;             // reached by the second walk (leaving on the −t side)
-  std::vector<SurfacePoint> points;  // S, crossings..., D (when keepPoints)
-  std::vector<Vec3> positions;       // their 3D positions
+  double length = 0;         // sum of segment lengths (of the partial path when not reached)
+  int64_t facesCrossed = 0;  // segments walked (each lies in one face or along one edge)
+  bool reversed = false;     // reached by the second walk (leaving on the −t side): "backward"
+  double otherArcLength = std::numeric_limits<double>::quiet_NaN();  // the other way's length to D, when both reach
+  std::vector<SurfacePoint> points;                                  // S, crossings..., D (when keepPoints)
+  std::vector<Vec3> positions;                                       // their 3D positions
+  std::vector<Vec3> otherPositions;  // the other arc's 3D positions S..D, when both reach (and keepPoints)
 };
 
 /// Traces straightest paths from one source; reuse it for many destinations (shared setup).
@@ -93,20 +104,26 @@ struct PathBatch {
   std::vector<double> length;
   std::vector<int64_t> facesCrossed;
   std::vector<uint8_t> reversed;
-  std::vector<Vec3> directions;  // per target: inPlaneDirection toward it (NaN × 3 where undefined)
+  std::vector<double> otherArcLength;  // NaN unless both directions reach the target
+  std::vector<Vec3> directions;        // per target: inPlaneDirection toward it (NaN × 3 where undefined)
   std::vector<Vec3> points;
   std::vector<int64_t> offsets;
+  std::vector<Vec3> otherPoints;      // the other arcs (empty ones where there is none), when keepPoints
+  std::vector<int64_t> otherOffsets;  // path i's other arc is otherPoints[otherOffsets[i] .. otherOffsets[i+1])
 };
 
 /// The vertices of the longest boundary loop, in order (empty for a closed mesh).
 std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh);
 
-/// A destination as callers name it: a surface point, or every vertex of the longest boundary loop.
+/// A destination as callers name it: a surface point, every vertex of the longest boundary loop
+/// ("boundary"), or every vertex of every loop, longest loop first ("all-boundaries").
 struct BoundaryVertices {};
-using TargetSpec = std::variant<SurfacePoint, BoundaryVertices>;
+struct AllBoundaryVertices {};
+using TargetSpec = std::variant<SurfacePoint, BoundaryVertices, AllBoundaryVertices>;
 
 /// The targets in order, each point validated (an error names "target i"), each BoundaryVertices
-/// expanded into boundaryTargets (a Topology error on a closed mesh).
+/// expanded into boundaryTargets and each AllBoundaryVertices into every loop's vertices (a Topology
+/// error on a closed mesh: "the mesh is closed (no boundary loop): name the targets").
 Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::vector<TargetSpec>& specs);
 
 /// What a batch amounts to: the CLI's "summary" and the npm result's counts.
