@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace straightest {
@@ -115,6 +116,61 @@ TriMesh makeSphericalCap(double radius, double thetaMax, int rings) {
     return Vec3{radius * std::sin(theta) * std::cos(phi), radius * std::sin(theta) * std::sin(phi),
                 radius * std::cos(theta)};
   });
+}
+
+TriMesh makeIcosphere(double radius, int subdivisions) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3> p{{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  for (auto& v : p) v = normalized(v);
+  std::vector<Triangle> t{{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                          {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (int s = 0; s < subdivisions; ++s) {
+    // Each edge's midpoint once, shared by its two faces.
+    std::map<std::pair<int, int>, int> mid;
+    auto midpoint = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      p.push_back(normalized(p[a] + p[b]));
+      return mid[key] = static_cast<int>(p.size()) - 1;
+    };
+    std::vector<Triangle> next;
+    next.reserve(4 * t.size());
+    for (const auto& f : t) {
+      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+      next.push_back({f[0], ab, ca});
+      next.push_back({f[1], bc, ab});
+      next.push_back({f[2], ca, bc});
+      next.push_back({ab, bc, ca});
+    }
+    t = std::move(next);
+  }
+  for (auto& v : p) v = v * radius;
+  return buildOrDie(std::move(p), std::move(t));
+}
+
+TriMesh makeTorus(double R, double r, int around, int tube) {
+  around = std::max(around, 3);
+  tube = std::max(tube, 3);
+  std::vector<Vec3> positions;
+  positions.reserve(static_cast<size_t>(around) * tube);
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      const double u = 2 * kPi * i / around, v = 2 * kPi * j / tube;
+      positions.push_back({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+    }
+  std::vector<Triangle> triangles;
+  triangles.reserve(2 * positions.size());
+  auto index = [&](int i, int j) { return static_cast<int32_t>((i % around) * tube + j % tube); };
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      // Counter-clockwise seen from outside: u grows along x, v around the tube.
+      triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+      triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+    }
+  return buildOrDie(std::move(positions), std::move(triangles));
 }
 
 Expected<TriMesh> makeSample(const std::string& name) {

@@ -1,4 +1,4 @@
-// The built-in samples are valid disks with the geometry their names promise.
+// The built-in samples (and the closed generators) are valid meshes with the geometry their names promise.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -46,6 +46,39 @@ TEST(Samples, UnknownNameListsTheAvailableOnes) {
   ASSERT_FALSE(mesh.ok());
   EXPECT_EQ(mesh.error().code, ErrorCode::InvalidArgument);
   EXPECT_NE(mesh.error().message.find("mountain"), std::string::npos);
+}
+
+TEST(Samples, IcosphereIsAClosedSphereOfTheGivenRadius) {
+  const TriMesh mesh = makeIcosphere(2.5, 3);
+  EXPECT_EQ(mesh.numVertices(), 642);
+  EXPECT_EQ(mesh.summary().eulerCharacteristic, 2);
+  EXPECT_TRUE(mesh.boundaryLoops().empty());
+  EXPECT_EQ(mesh.summary().reorientedFaces, 0);
+  for (const Vec3& p : mesh.positions()) EXPECT_NEAR(norm(p), 2.5, 1e-12);
+  // Outward orientation: every face normal points away from the centre.
+  for (int32_t f = 0; f < mesh.numFaces(); ++f)
+    EXPECT_GT(dot(mesh.faceNormal(f), mesh.position(mesh.triangle(f)[0])), 0);
+}
+
+TEST(Samples, TorusIsClosedOfGenusOneWithItsTubeOnTheGivenRadii) {
+  const double R = 3, r = 1;
+  const TriMesh mesh = makeTorus(R, r, 24, 12);
+  EXPECT_EQ(mesh.numVertices(), 24 * 12);
+  EXPECT_EQ(mesh.summary().eulerCharacteristic, 0);
+  EXPECT_TRUE(mesh.boundaryLoops().empty());
+  EXPECT_EQ(mesh.summary().reorientedFaces, 0);
+  for (const Vec3& p : mesh.positions()) {
+    const double rho = std::hypot(p.x, p.y);  // distance from the z axis
+    EXPECT_NEAR(std::hypot(rho - R, p.z), r, 1e-12);
+  }
+  // Outward: away from the tube's centre circle.
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    Vec3 c{0, 0, 0};
+    for (int32_t v : mesh.triangle(f)) c = c + mesh.position(v) * (1.0 / 3);
+    const double rho = std::hypot(c.x, c.y);
+    const Vec3 centre{c.x * R / rho, c.y * R / rho, 0};
+    EXPECT_GT(dot(mesh.faceNormal(f), c - centre), 0);
+  }
 }
 
 }  // namespace

@@ -102,35 +102,7 @@ inline TriMesh lShape(int m) {
 }
 
 /// An icosphere of radius 1 (subdivisions: 0 → 12 vertices, 3 → 642).
-inline TriMesh icosphere(int subdivisions) {
-  const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Vec3> p{{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
-                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
-  for (auto& v : p) v = normalized(v);
-  std::vector<Triangle> t{{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                          {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (int s = 0; s < subdivisions; ++s) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      p.push_back(normalized(p[a] + p[b]));
-      return mid[key] = static_cast<int>(p.size()) - 1;
-    };
-    std::vector<Triangle> next;
-    for (const auto& f : t) {
-      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-      next.push_back({f[0], ab, ca});
-      next.push_back({f[1], bc, ab});
-      next.push_back({f[2], ca, bc});
-      next.push_back({ab, bc, ca});
-    }
-    t = std::move(next);
-  }
-  return buildOrFail(std::move(p), std::move(t));
-}
+inline TriMesh icosphere(int subdivisions) { return makeIcosphere(1.0, subdivisions); }
 
 /// A finger like an animal's leg: a closed tube of 8-vertex rings 0.8 apart, radius 1, `rings` rings,
 /// capped at one end and open at the other (its only boundary). A convex-combination map from the open

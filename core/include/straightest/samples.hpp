@@ -36,4 +36,14 @@ TriMesh makeHeightField(int n);
 /// (vertex 0), the i-th ring having 6*i vertices. Its pole is the default source.
 TriMesh makeSphericalCap(double radius, double thetaMax, int rings);
 
+/// A closed icosphere: the icosahedron's 20 faces split in four `subdivisions` times, every vertex
+/// projected onto the sphere of the given radius (subdivisions 0 → 12 vertices, 3 → 642, 5 → 10242).
+TriMesh makeIcosphere(double radius, int subdivisions);
+
+/// A closed torus around the z axis: tube centre circle of radius R, tube radius r (r < R), `around`
+/// vertices along the centre circle and `tube` around the tube; vertex (i, j) = index i · tube + j sits
+/// at angle 2πi/around around z and 2πj/tube around the tube (j = 0 on the outer equator, radius R + r).
+/// Each quad is split along the same diagonal. Genus 1.
+TriMesh makeTorus(double R, double r, int around, int tube);
+
 }  // namespace straightest
