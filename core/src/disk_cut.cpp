@@ -127,16 +127,6 @@ Error internal(const std::string& what) { return Error{ErrorCode::Internal, "cut
 
 }  // namespace
 
-const char* cutMethodName(CutMethod m) {
-  switch (m) {
-    case CutMethod::Disk: return "disk";
-    case CutMethod::Fill: return "fill";
-    case CutMethod::Path: return "path";
-    case CutMethod::CutGraph: return "cut-graph";
-  }
-  return "?";
-}
-
 Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
   if (mesh.numFaces() == 0) return Error{ErrorCode::Topology, "the mesh has no face to cut into a disk"};
   if (!report(progress, kStage, 0)) return cancelledError("cutting to a disk");
