@@ -197,11 +197,16 @@ Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
     cut.seamEnds = {surface.meshVertex[seam.ends[0]], surface.meshVertex[seam.ends[1]]};
   if (!report(progress, kStage, 0.85)) return cancelledError("cutting to a disk");
 
-  detail::CutOpen open = detail::cutOpen(filled.value(), seam.edges);
-  for (int32_t v : open.copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
   cut.faceOrigin = std::move(surface.meshFace);
-  auto disk = TriMesh::build(std::move(open.positions), std::move(open.triangles));
-  if (!disk) return internal("the cut surface is not a mesh: " + disk.error().message);
+  Expected<TriMesh> disk = std::move(filled);  // without a seam (Disk, Fill) the filled surface is the disk
+  if (seam.edges.empty()) {
+    cut.vertexOrigin = std::move(surface.meshVertex);
+  } else {
+    detail::CutOpen open = detail::cutOpen(disk.value(), seam.edges);
+    for (int32_t v : open.copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
+    disk = TriMesh::build(std::move(open.positions), std::move(open.triangles));
+    if (!disk) return internal("the cut surface is not a mesh: " + disk.error().message);
+  }
   const MeshSummary& summary = disk.value().summary();
   if (summary.boundaryLoopSizes.size() != 1 || summary.eulerCharacteristic != 1 || summary.components != 1 ||
       summary.reorientedFaces != 0)

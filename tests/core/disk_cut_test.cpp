@@ -70,8 +70,16 @@ void expectDisk(const TriMesh& mesh, const DiskCut& cut) {
   std::sort(real.begin(), real.end());
   EXPECT_EQ(real, expected);
 
-  // One virtual vertex per filled loop, never on the boundary.
+  // One virtual vertex per filled loop, never on the boundary, fanned to the loop: one face per loop edge.
   EXPECT_EQ(std::count(cut.vertexOrigin.begin(), cut.vertexOrigin.end(), -1), int64_t(cut.filledLoops.size()));
+  size_t fanFaces = 0;
+  for (int32_t loop : cut.filledLoops) fanFaces += mesh.boundaryLoops()[loop].size();
+  EXPECT_EQ(std::count(cut.faceOrigin.begin(), cut.faceOrigin.end(), -1), int64_t(fanFaces));
+  for (int32_t f = 0; f < cut.disk.numFaces(); ++f) {
+    if (cut.faceOrigin[f] >= 0) continue;  // a fan face: its centre and two consecutive loop vertices
+    const Triangle& corners = cut.disk.triangle(f);
+    EXPECT_EQ(std::count_if(corners.begin(), corners.end(), [&](int32_t v) { return cut.vertexOrigin[v] < 0; }), 1);
+  }
 
   // The boundary: each seam edge twice; the rest is the loop left open (edges of the mesh's boundary).
   std::map<Edge, int> boundary;
@@ -135,6 +143,20 @@ TEST(DiskCut, ADiskIsLeftAsItIs) {
   EXPECT_EQ(cut.disk.triangles(), mesh.triangles());
   for (int32_t v = 0; v < mesh.numVertices(); ++v) EXPECT_EQ(cut.vertexOrigin[v], v);
   for (int32_t f = 0; f < mesh.numFaces(); ++f) EXPECT_EQ(cut.faceOrigin[f], f);
+}
+
+TEST(DiskCut, UnreferencedVerticesAreLeftOut) {
+  const TriMesh grid = testing::flatGrid(4, testing::GridPattern::Regular);
+  std::vector<Vec3> p{{-5, -5, 0}};  // vertex 0 belongs to no face
+  for (const Vec3& x : grid.positions()) p.push_back(x);
+  std::vector<Triangle> t;
+  for (Triangle f : grid.triangles()) t.push_back({f[0] + 1, f[1] + 1, f[2] + 1});
+  const TriMesh mesh = buildOrFail(p, t);
+  const DiskCut cut = cutOrFail(mesh);
+  expectDisk(mesh, cut);
+  EXPECT_EQ(cut.method, CutMethod::Disk);
+  ASSERT_EQ(cut.disk.numVertices(), 16);
+  for (int32_t v = 0; v < 16; ++v) EXPECT_EQ(cut.vertexOrigin[v], v + 1);
 }
 
 TEST(DiskCut, TheLargestComponentIsCut) {
@@ -228,8 +250,12 @@ TEST(DiskCut, ATorusIsCutAlongTwoLoops) {
   EXPECT_EQ(cut.genus, 1);
   EXPECT_EQ(seamEuler(cut), -1);
   EXPECT_EQ(cut.seamEnds[0], -1);
-  // Short loops: around the tube (2π·1) and around the hole (at least 2π·2, the inner equator).
-  EXPECT_LT(cut.seamLength, 2 * testing::kPi * (1 + 4) * 1.1);
+  // One loop winds around the hole, so the seam is at least as long as the inner equator (a 24-gon of
+  // radius R − r = 2); the shortest pair of loops is that equator and a tube circle (a 12-gon of radius 1):
+  // loops through a shortest-path tree are short, within a quarter of it here.
+  const double equator = 24 * 2 * 2 * std::sin(testing::kPi / 24), tube = 12 * 2 * std::sin(testing::kPi / 12);
+  EXPECT_GT(cut.seamLength, equator * std::cos(testing::kPi / 24));
+  EXPECT_LT(cut.seamLength, 1.25 * (equator + tube));
 }
 
 TEST(DiskCut, ClosedSurfacesOfGenusTwoAndThree) {
