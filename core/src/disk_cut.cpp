@@ -180,7 +180,7 @@ Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
 
   detail::Seam seam;
   if (cut.method == CutMethod::Path || cut.method == CutMethod::CutGraph) {
-    const Progress part = progress.range(0.1, 0.8);
+    const Progress part = progress.range(0.1, 0.7);
     auto found = cut.method == CutMethod::Path
                      ? detail::pathSeam(filled.value(), part, kStage)
                      : detail::treeCotreeSeam(filled.value(), surface.firstVirtual, part, kStage);
@@ -195,16 +195,16 @@ Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
   }
   if (cut.method == CutMethod::Path)
     cut.seamEnds = {surface.meshVertex[seam.ends[0]], surface.meshVertex[seam.ends[1]]};
-  if (!report(progress, kStage, 0.85)) return cancelledError("cutting to a disk");
 
   cut.faceOrigin = std::move(surface.meshFace);
   Expected<TriMesh> disk = std::move(filled);  // without a seam (Disk, Fill) the filled surface is the disk
   if (seam.edges.empty()) {
     cut.vertexOrigin = std::move(surface.meshVertex);
   } else {
-    detail::CutOpen open = detail::cutOpen(disk.value(), seam.edges);
-    for (int32_t v : open.copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
-    disk = TriMesh::build(std::move(open.positions), std::move(open.triangles));
+    auto open = detail::cutOpen(disk.value(), seam.edges, progress.range(0.75, 0.9), kStage);
+    if (!open) return cancelledError("cutting to a disk");
+    for (int32_t v : open->copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
+    disk = TriMesh::build(std::move(open->positions), std::move(open->triangles));
     if (!disk) return internal("the cut surface is not a mesh: " + disk.error().message);
   }
   const MeshSummary& summary = disk.value().summary();

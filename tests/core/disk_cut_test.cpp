@@ -294,6 +294,10 @@ TEST(DiskCut, CancellingReturnsCancelled) {
     ASSERT_FALSE(cut.ok());
     EXPECT_EQ(cut.error().code, ErrorCode::Cancelled);
   }
+  // Cancelled while the surface is being cut open (after the seam was found).
+  auto opening = cutToDisk(testing::icosphere(2), [](const char*, double f) { return !(f >= 0.75 && f < 0.9); });
+  ASSERT_FALSE(opening.ok());
+  EXPECT_EQ(opening.error().code, ErrorCode::Cancelled);
   int calls = 0;
   auto late = cutToDisk(makeTorus(3, 1, 12, 6), [&](const char*, double f) { return ++calls < 3 || f < 0; });
   ASSERT_FALSE(late.ok());
