@@ -171,6 +171,41 @@ TEST(DiskCut, TheLargestComponentIsCut) {
   EXPECT_EQ(cut.method, CutMethod::Disk);
 }
 
+/// The two meshes side by side (b's vertices after a's, moved by `offset`).
+TriMesh sideBySide(const TriMesh& a, const TriMesh& b, Vec3 offset) {
+  std::vector<Vec3> p = a.positions();
+  std::vector<Triangle> t = a.triangles();
+  const int32_t n = a.numVertices();
+  for (const Vec3& x : b.positions()) p.push_back(x + offset);
+  for (Triangle f : b.triangles()) t.push_back({f[0] + n, f[1] + n, f[2] + n});
+  return buildOrFail(p, t);
+}
+
+TEST(DiskCut, OnlyTheChosenComponentsLoopsAreFilled) {
+  // A small annulus first (its two loops come first), then a larger grid with two holes.
+  const TriMesh annulus = testing::gridOfCells(4, [](int i, int j) { return !(i == 1 && j == 1); });
+  const TriMesh mesh = sideBySide(annulus, testing::gridWithout({{2, 2}, {5, 5}}), {20, 0, 0});
+  ASSERT_EQ(mesh.boundaryLoops().size(), 5u);
+  const DiskCut cut = cutOrFail(mesh);
+  expectDisk(mesh, cut);
+  EXPECT_EQ(cut.component, 1);
+  EXPECT_EQ(cut.method, CutMethod::Fill);
+  ASSERT_EQ(cut.filledLoops.size(), 2u);
+  for (int32_t loop : cut.filledLoops) {
+    EXPECT_EQ(mesh.boundaryLoops()[loop].size(), 4u);
+    EXPECT_GE(mesh.boundaryLoops()[loop][0], annulus.numVertices());
+  }
+  // A torus beside the annulus: closed, so nothing is filled though the mesh has loops.
+  const TriMesh withTorus = sideBySide(annulus, makeTorus(3, 1, 16, 8), {20, 0, 0});
+  const DiskCut torus = cutOrFail(withTorus);
+  expectDisk(withTorus, torus);
+  EXPECT_EQ(torus.method, CutMethod::CutGraph);
+  EXPECT_TRUE(torus.filledLoops.empty());
+  // Two equal components: the first.
+  const TriMesh grid = testing::flatGrid(4, testing::GridPattern::Regular);
+  EXPECT_EQ(cutOrFail(sideBySide(grid, grid, {10, 0, 0})).component, 0);
+}
+
 TEST(DiskCut, HolesAreFilledAndTheLongestLoopStaysTheBoundary) {
   const TriMesh mesh = testing::gridWithout({{2, 2}, {5, 2}, {3, 5}});
   ASSERT_EQ(mesh.boundaryLoops().size(), 4u);
