@@ -19,6 +19,7 @@ namespace straightest {
 const char* traceStatusName(TraceStatus s) { return nameOf(kTraceStatusNames, s); }
 const char* boundaryKindName(BoundaryKind k) { return nameOf(kBoundaryKindNames, k); }
 const char* weightKindName(WeightKind k) { return nameOf(kWeightKindNames, k); }
+const char* cutMethodName(CutMethod m) { return nameOf(kCutMethodNames, m); }
 
 Expected<WeightKind> parseWeightKind(const std::string& name) { return parseName(kWeightKindNames, name, "weights"); }
 Expected<LinearSolver> parseLinearSolver(const std::string& name) {

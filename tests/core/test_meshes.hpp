@@ -104,6 +104,54 @@ inline TriMesh lShape(int m) {
 /// An icosphere of radius 1 (subdivisions: 0 → 12 vertices, 3 → 642).
 inline TriMesh icosphere(int subdivisions) { return makeIcosphere(1.0, subdivisions); }
 
+/// The boundary surface of a set of unit voxels (cells given by their lowest corner): every voxel side
+/// with no voxel behind it is a square split into two triangles, facing out; lattice points are shared.
+/// The voxels must not touch only along an edge or at a corner (that surface would not be manifold).
+inline TriMesh voxelSurface(const std::vector<std::array<int, 3>>& cells) {
+  std::map<std::array<int, 3>, int32_t> index;
+  std::vector<Vec3> p;
+  auto vertex = [&](std::array<int, 3> c) {
+    auto [it, added] = index.emplace(c, int32_t(p.size()));
+    if (added) p.push_back({double(c[0]), double(c[1]), double(c[2])});
+    return it->second;
+  };
+  auto filled = [&](std::array<int, 3> c) {
+    for (const auto& d : cells)
+      if (d == c) return true;
+    return false;
+  };
+  std::vector<Triangle> t;
+  for (const auto& c : cells)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side : {-1, 1}) {
+        std::array<int, 3> neighbour = c;
+        neighbour[axis] += side;
+        if (filled(neighbour)) continue;
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;  // e_u × e_v = e_axis
+        std::array<int, 3> base = c;
+        if (side > 0) base[axis] += 1;
+        std::array<std::array<int, 3>, 4> corner{base, base, base, base};
+        corner[1][u] += 1;
+        corner[2][u] += 1, corner[2][v] += 1;
+        corner[3][v] += 1;
+        std::array<int32_t, 4> q{vertex(corner[0]), vertex(corner[1]), vertex(corner[2]), vertex(corner[3])};
+        if (side < 0) std::swap(q[1], q[3]);  // face −e_axis
+        t.push_back({q[0], q[1], q[2]});
+        t.push_back({q[0], q[2], q[3]});
+      }
+  return buildOrFail(std::move(p), std::move(t));
+}
+
+/// A closed surface of genus g: a 3 × (2g+1) × 1 slab of voxels with g holes punched through it (g = 0: a
+/// 3 × 1 × 1 bar).
+inline TriMesh genusSlab(int g) {
+  std::vector<std::array<int, 3>> cells;
+  for (int y = 0; y < 2 * g + 1; ++y)
+    for (int x = 0; x < 3; ++x)
+      if (!(x == 1 && y % 2 == 1)) cells.push_back({x, y, 0});
+  return voxelSurface(cells);
+}
+
 /// A finger like an animal's leg: a closed tube of 8-vertex rings 0.8 apart, radius 1, `rings` rings,
 /// capped at one end and open at the other (its only boundary). A convex-combination map from the open
 /// end shrinks the rings geometrically towards the tip, so their areas underflow to zero.

@@ -12,12 +12,17 @@
 //  - k = 0, g = 0 (a sphere-like closed surface): cut along a seam, the shortest edge path between two
 //    far-apart vertices (seamEnds: the vertex farthest by edge-graph distance from the component's
 //    lowest-index vertex, then the one farthest from that — a double sweep that approximates the graph diameter, so the
-//    seam runs the surface's length and the disk is not a thin sliver). Method Path.
+//    seam runs the surface's length and the disk is not a thin sliver). Method Path. (A seam has at
+//    least two edges — one edge cannot open a triangle mesh — so where the two are neighbours, as on a
+//    tetrahedron, it goes on by one edge; seamEnds are its ends.)
 //  - g ≥ 1: every boundary loop (the outer one too) is filled virtually, then the closed surface is cut
 //    along a cut graph: tree–cotree (Eppstein 2003) — a shortest-path tree T of the primal edges from a
 //    root, a spanning tree C of the dual over the edges not in T; the 2g edges in neither close 2g
 //    loops through T; their union, pruned of dangling branches (repeatedly removing degree-1 vertices),
-//    is the seam. Method CutGraph. (Loops through a shortest-path tree are short, not shortest.)
+//    is the seam. Method CutGraph. C is a maximum spanning tree by the length of the loop each edge
+//    would close, so the 2g loops left over are the short ones (a greedy system of loops: short, not
+//    shortest). A filled loop's virtual vertex is a leaf of T and C takes the rest of its fan, so the
+//    seam never runs through a filled hole: it is made of mesh edges.
 // Cutting along the seam duplicates every seam vertex once per wedge of faces the seam separates
 // around it; each seam edge then appears exactly twice on the disk's boundary loop.
 #pragma once

@@ -49,6 +49,10 @@ inline constexpr EnumName<DistanceMethod> kDistanceMethodNames[] = {{DistanceMet
 inline constexpr EnumName<MeshFormat> kMeshFormatNames[] = {{MeshFormat::Obj, "obj"},
                                                             {MeshFormat::Off, "off"},
                                                             {MeshFormat::Auto, "auto"}};
+inline constexpr EnumName<CutMethod> kCutMethodNames[] = {{CutMethod::Disk, "disk"},
+                                                          {CutMethod::Fill, "fill"},
+                                                          {CutMethod::Path, "path"},
+                                                          {CutMethod::CutGraph, "cut-graph"}};
 
 /// The word that stands for "let the library choose" wherever a choice is optional (source, boundary).
 inline constexpr const char* kAutoName = "auto";
