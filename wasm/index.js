@@ -13,8 +13,9 @@ export { StraightestError };
 // `using` looks for.
 const disposeSymbol = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
-function unwrap(result) {
-  if (result.error !== undefined) throw new StraightestError(result.error, result.category);
+/** The result, or its {error, category} thrown as a StraightestError (hint(category) may add a sentence). */
+function unwrap(result, hint = undefined) {
+  if (result.error !== undefined) throw new StraightestError(result.error + (hint?.(result.category) ?? ''), result.category);
   return result;
 }
 
@@ -34,8 +35,8 @@ function toBytes(data) {
  * the work is cancelled like a `false`, and the same exception is rethrown here once the core has
  * returned cleanly.
  */
-function withProgress(onProgress, call) {
-  if (onProgress === undefined || onProgress === null) return unwrap(call(null));
+function withProgress(onProgress, call, hint = undefined) {
+  if (onProgress === undefined || onProgress === null) return unwrap(call(null), hint);
   if (typeof onProgress !== 'function') throw new TypeError('onProgress must be a function (stage, fraction) => boolean | void');
   let thrown = null;
   const result = call((stage, fraction) => {
@@ -48,7 +49,7 @@ function withProgress(onProgress, call) {
     }
   });
   if (thrown) throw thrown.error;
-  return unwrap(result);
+  return unwrap(result, hint);
 }
 
 const finalizer = typeof FinalizationRegistry === 'function'
@@ -72,6 +73,19 @@ export class Mesh {
     finalizer?.register(this, handle, this);
   }
 
+  /**
+   * A topology error's extra sentence when the surface is a triangle soup (more components than half its
+   * faces): its triangles share no vertices, which is what a non-indexed geometry gives.
+   */
+  #hint = (category) => {
+    if (category !== 'topology' || !this.#handle) return '';
+    const { faces, components } = this.#handle.info();
+    if (faces < 2 || components <= faces / 2) return '';
+    return ` (${components} components for ${faces} triangles: the triangles share no vertices, as in a non-indexed `
+      + "geometry such as STLLoader's; weld coincident vertices first, e.g. meshFromBufferGeometry(st, geometry, "
+      + "{ weld: true }) from 'straightest/three')";
+  };
+
   #live() {
     if (!this.#handle) throw new StraightestError('this mesh has been deleted (delete() or the end of its `using` scope)', 'invalid_argument');
     return this.#handle;
@@ -90,13 +104,13 @@ export class Mesh {
   boundaryLoops() { return this.#live().boundaryLoops(); }
 
   /** Area-weighted unit vertex normals, 3 floats per vertex (zero for unreferenced vertices). */
-  vertexNormals() { return unwrap(this.#live().vertexNormals()).normals; }
+  vertexNormals() { return unwrap(this.#live().vertexNormals(), this.#hint).normals; }
 
   /** The default source: the interior vertex farthest from the boundary ("center of the mesh"). */
-  defaultSource() { return unwrap(this.#live().defaultSource()).vertex; }
+  defaultSource() { return unwrap(this.#live().defaultSource(), this.#hint).vertex; }
 
   /** The base plane at a source: { source, origin, normal, fallback, note }. */
-  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(source)); }
+  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(source), this.#hint); }
 
   /**
    * Straightest paths from one source to many targets (shared setup). targets: 'boundary' (every
@@ -106,12 +120,12 @@ export class Mesh {
    */
   straightestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.straightestPaths(source, targets, !!points, progress));
+    return withProgress(onProgress, (progress) => handle.straightestPaths(source, targets, !!points, progress), this.#hint);
   }
 
   /** Shortest distances from a source to every vertex: 'heat' (factored once per mesh) or 'dijkstra'. */
   geodesicDistances(source = 'auto', method = 'heat') {
-    return unwrap(this.#live().geodesicDistances(source, String(method))).distances;
+    return unwrap(this.#live().geodesicDistances(source, String(method)), this.#hint).distances;
   }
 
   /**
@@ -127,7 +141,7 @@ export class Mesh {
   } = {}) {
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.parameterize(source, String(boundary), String(weights),
-      String(solver), { maxIterations, timeBudgetMs }, progress));
+      String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
   }
 
   /**
@@ -138,7 +152,7 @@ export class Mesh {
    */
   boundaryPolygons({ source = 'auto', kinds, onProgress } = {}) {
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.boundaryPolygons(source, kinds, progress)).polygons;
+    return withProgress(onProgress, (progress) => handle.boundaryPolygons(source, kinds, progress), this.#hint).polygons;
   }
 
   /**
@@ -152,7 +166,7 @@ export class Mesh {
   } = {}) {
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.compareParameterizations(source, boundaries, weights,
-      String(solver), { maxIterations, timeBudgetMs }, progress));
+      String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
   }
 
   /** The mesh as OBJ text (input vertex order); with uv (2 per vertex) also `vt` lines. */
