@@ -223,6 +223,10 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
 
   // three.js helpers.
   const fromThree: Mesh = meshFromBufferGeometry(st, geometry);
+  meshFromBufferGeometry(st, geometry, { weld: true }).delete();
+  meshFromBufferGeometry(st, geometry, { weld: 1e-6 }).delete();
+  // @ts-expect-error weld is true/false or a distance
+  meshFromBufferGeometry(st, geometry, { weld: 'yes' });
   const toThree: BufferGeometry = toBufferGeometry(fromThree);
   const textured: BufferGeometry = applyUV(toThree, p.uv);
   applyUV(geometry, [0, 0, 1, 0, 0, 1]);
@@ -231,6 +235,26 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   // @ts-expect-error the straightest instance comes first
   meshFromBufferGeometry(geometry);
   void textured;
+
+  // Lifetime: `using` frees a mesh at the end of its scope; constructors are the library's own.
+  {
+    using scoped = st.sample('cap');
+    const faces: number = scoped.info().faces;
+    void faces;
+  }
+  // @ts-expect-error meshes come from st.loadMesh, st.meshFromArrays or st.sample
+  new Mesh();
+  // Results give surface points in object form, never a bare index.
+  const resolved = paths.targets[0];
+  if ('vertex' in resolved) void resolved.vertex;
+  // @ts-expect-error a result's source is an object
+  const bareSource: number = paths.source;
+  void bareSource;
+  // Progress stages are named; unknown future stages still type-check.
+  mesh.parameterize({ onProgress: (stage) => stage === 'refine' || stage === 'some-later-stage' });
+  st.sample('face');
+  const error = new StraightestError('message', 'io', { cause: new Error('inner') });
+  void error;
 
   // Meshes hold WASM memory until deleted.
   const deleted: boolean = mesh.deleted;
