@@ -6,6 +6,7 @@ import {
   createStraightest,
   Mesh,
   StraightestError,
+  type Straightest,
   type BasePlane,
   type ErrorCategory,
   type MeshInfo,
@@ -15,6 +16,7 @@ import {
   type TraceStatus,
 } from 'straightest';
 import { applyUV, meshFromBufferGeometry, toBufferGeometry } from 'straightest/three';
+import * as inline from 'straightest/inline';
 import { BufferGeometry } from 'three';
 
 /** Compiles only when A and B are the same type (not merely assignable). */
@@ -43,6 +45,8 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   await createStraightest({ wasmUrl: new URL('https://example.org/straightest-core.wasm') });
   await createStraightest({ wasmUrl: '/assets/straightest-core.wasm', wasmBinary: new ArrayBuffer(8) });
   await createStraightest({ locateFile: (name, dir) => dir + name });
+  const embedded: Straightest = await inline.createStraightest();
+  void embedded;
   // @ts-expect-error the options are an object, not a URL string
   await createStraightest('/straightest-core.wasm');
 
