@@ -5,7 +5,8 @@
 //   - TypeScript (strict, declarations checked) compiles tests/types/usage.ts with moduleResolution
 //     bundler and node16 (TypeScript 7) and node (node10, TypeScript 5.9: 7 no longer has it);
 //   - esbuild and Vite bundle browser apps (tests/package/app) without configuration, and headless
-//     Chromium runs them: Vite's on the main thread and in a module worker, esbuild's with the .wasm
+//     Chromium runs them: Vite's on the main thread, in a module worker and through straightest/worker
+//     (transferred results, progress, cancel), esbuild's with the .wasm
 //     copied next to the bundle, and the single-file variant (straightest/inline).
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -54,7 +55,7 @@ after(() => {
 test('the tarball holds the module, its types, the inline variant and the license, and no C++', () => {
   const files = run('tar', ['tzf', tarball], dir);
   for (const f of ['wasm/dist/straightest-core.wasm', 'wasm/dist/straightest-core.mjs', 'wasm/dist/straightest-core-embedded.js',
-    'wasm/index.d.ts', 'wasm/inline.js', 'wasm/three.d.ts', 'LICENSE', 'README.md']) {
+    'wasm/index.d.ts', 'wasm/inline.js', 'wasm/three.d.ts', 'wasm/worker.js', 'wasm/worker-entry.js', 'LICENSE', 'README.md']) {
     assert.ok(files.includes(`package/${f}`), `${f} is not in the package`);
   }
   assert.doesNotMatch(files, /package\/core\//, 'C++ sources do not belong in the npm package');
@@ -167,6 +168,11 @@ test('esbuild and Vite bundle the package for the browser without configuration,
     assert.deepEqual(results['vite/index.html'].main, { vertices: capVertices, bijective: true });
     assert.equal(results['vite/index.html'].worker.vertices, mountainVertices);
     assert.ok(results['vite/index.html'].worker.reached > 0);
+    const helper = results['vite/index.html'].helper;
+    assert.deepEqual([helper.vertices, helper.uvIsFloat32, helper.uvLength, helper.bijective],
+      [capVertices, true, 2 * capVertices, true]);
+    assert.ok(helper.stages.includes('solve'), `progress stages: ${helper.stages}`);
+    assert.equal(helper.afterCancel, 'cancelled');
     assert.deepEqual(results['esbuild/esbuild-main.html'], { vertices: capVertices, bijective: true });
     assert.deepEqual(results['esbuild/inline-main.html'], { vertices: capVertices, bijective: true });
   } finally {

@@ -17,6 +17,7 @@ import {
 } from 'straightest';
 import { applyUV, meshFromBufferGeometry, toBufferGeometry } from 'straightest/three';
 import * as inline from 'straightest/inline';
+import { createStraightestWorker, type WorkerMesh } from 'straightest/worker';
 import { BufferGeometry } from 'three';
 
 /** Compiles only when A and B are the same type (not merely assignable). */
@@ -47,6 +48,19 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   await createStraightest({ locateFile: (name, dir) => dir + name });
   const embedded: Straightest = await inline.createStraightest();
   void embedded;
+  // straightest/worker: the same calls as promises; a signal cancels.
+  const inWorker = await createStraightestWorker({ wasmUrl: '/straightest-core.wasm' });
+  const remote: WorkerMesh = await inWorker.sample('cap');
+  const controller = new AbortController();
+  const remoteUv: Float32Array = (await remote.parameterize({ boundary: 'free', signal: controller.signal, onProgress: () => {} })).uv;
+  const remoteInfo: MeshInfo = await remote.info();
+  void [remoteUv, remoteInfo];
+  // @ts-expect-error the worker's results are promises
+  const notAwaited: MeshInfo = remote.info();
+  void notAwaited;
+  await remote.delete();
+  inWorker.cancel();
+  inWorker.terminate();
   // @ts-expect-error the options are an object, not a URL string
   await createStraightest('/straightest-core.wasm');
 
