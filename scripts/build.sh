@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the native library, CLI and tests (build/native) and/or the WASM module and tests
 # (build/wasm), then copies the module into the npm package (wasm/dist); `sanitize` builds the native
-# tests with ASan + UBSan (build/sanitize). Usage: build.sh native|wasm|sanitize|all
+# tests with ASan + UBSan (build/sanitize); `module` builds only the WASM module the npm package ships
+# (npm run build:wasm: no tests, no benchmarks). Usage: build.sh native|wasm|module|sanitize|all
 # The native build treats warnings as errors (STRAIGHTEST_WERROR): npm test and CI run through here, so a
 # new warning fails there instead of scrolling by; a hand-made `cmake --preset native` keeps them warnings.
 source "$(dirname "$0")/common.sh"
@@ -14,9 +15,11 @@ if [ "$target" = sanitize ]; then
   cmake --preset sanitize >/dev/null
   cmake --build --preset sanitize --target core_tests straightest
 fi
-if [ "$target" = wasm ] || [ "$target" = all ]; then
+if [ "$target" = wasm ] || [ "$target" = module ] || [ "$target" = all ]; then
   cmake --preset wasm >/dev/null
-  cmake --build --preset wasm
+  if [ "$target" = module ]; then cmake --build --preset wasm --target straightest_wasm; else cmake --build --preset wasm; fi
   mkdir -p wasm/dist
   cp build/wasm/straightest-core.mjs build/wasm/straightest-core.wasm wasm/dist/
+  # straightest/inline's copy of the module, as base64 in an ES module
+  node scripts/embed-wasm.mjs wasm/dist/straightest-core.wasm wasm/dist/straightest-core-embedded.js
 fi

@@ -1,24 +1,45 @@
 // Types of the straightest npm package (ESM). See README.md for usage.
 
+// `using mesh = ...` (TypeScript ≥ 5.2) needs Symbol.dispose; declared here too so that projects whose
+// `lib` predates esnext.disposable still type-check this file.
+declare global {
+  interface SymbolConstructor {
+    readonly dispose: unique symbol;
+  }
+}
+
+/** loadMesh's formats: 'auto' detects OBJ or OFF from the contents. */
 export type MeshFormat = 'auto' | 'obj' | 'off';
 
 /** Caps checked before building a mesh (defaults: 50M vertices, 100M faces). */
 export interface BuildLimits {
+  /** Largest vertex count accepted (default 50M); more throws 'too_large'. */
   maxVertices?: number;
+  /** Largest face count accepted (default 100M); more throws 'too_large'. */
   maxFaces?: number;
 }
 
+/** What mesh.info() reports: sizes, topology and what validation repaired. */
 export interface MeshInfo {
+  /** Vertex count (unreferenced vertices included). */
   vertices: number;
+  /** Triangle count (polygons are triangulated on load). */
   faces: number;
+  /** Undirected edge count. */
   edges: number;
   /** Sizes of the boundary loops, longest first (empty for a closed mesh). */
   boundaryLoops: number[];
+  /** V − E + F: 1 for a disk, 2 for a sphere. */
   eulerCharacteristic: number;
+  /** Connected pieces (a non-indexed geometry whose triangles share no vertex has one per triangle). */
   components: number;
+  /** Faces with (near) zero area, kept. */
   degenerateFaces: number;
+  /** Faces flipped to agree with their neighbours' orientation. */
   reorientedFaces: number;
+  /** Vertices no face uses. */
   unreferencedVertices: number;
+  /** Axis-aligned bounding box of the vertices. */
   bbox: { min: [number, number, number]; max: [number, number, number] };
   /** Human-readable notes on what was found and repaired. */
   problems: string[];
@@ -30,32 +51,48 @@ export type ErrorCategory =
   | 'invalid_face' | 'duplicate_face' | 'degenerate' | 'non_manifold_edge' | 'non_manifold_vertex' | 'non_orientable'
   | 'topology' | 'invalid_argument' | 'cancelled' | 'internal';
 
+/**
+ * The error every call of the package throws for bad input, a failed computation, a cancelled one
+ * ('cancelled'), a module that could not be loaded ('io') or a deleted mesh ('invalid_argument').
+ */
 export class StraightestError extends Error {
+  constructor(message?: string, category?: ErrorCategory, options?: { cause?: unknown });
+  /** Machine-readable kind of failure; `message` says what was found and where. */
   readonly category: ErrorCategory;
 }
 
-/** A point on the surface: a vertex index, {vertex}, {face, bary: [a, b, c]} or {halfedge, t}. */
-export type SurfacePoint =
-  | number
+/** A point on the surface as results give it: {vertex}, {face, bary: [a, b, c]} or {halfedge, t}. */
+export type SurfacePointObject =
   | { vertex: number }
   | { face: number; bary: [number, number, number] }
   | { halfedge: number; t: number };
 
+/** A point on the surface as arguments take it: a vertex index or any SurfacePointObject. */
+export type SurfacePoint = number | SurfacePointObject;
+
+/** How a path ended: 'reached' is the only success (see README.md for each status). */
 export type TraceStatus =
   | 'reached' | 'hit_boundary' | 'other_component' | 'loop' | 'step_limit' | 'no_exit' | 'degenerate_plane';
 
+/** The plane every cutting plane at a source contains the normal of. */
 export interface BasePlane {
-  source: SurfacePoint;
+  /** The source, resolved ('auto' becomes the vertex it chose). */
+  source: SurfacePointObject;
+  /** The source's 3D position. */
   origin: [number, number, number];
   /** Unit normal: mean of the virtual faces' normals (or the area-weighted normal when fallback). */
   normal: [number, number, number];
+  /** The virtual faces were degenerate and the area-weighted normal was used. */
   fallback: boolean;
+  /** Why the fallback was taken ('' when not). */
   note: string;
 }
 
 /** What a batch of paths amounts to (as the CLI's "summary"). */
 export interface PathSummary {
+  /** Paths traced. */
   paths: number;
+  /** Paths with status 'reached'. */
   reached: number;
   /** Count of each failing status that occurred. */
   failures: Partial<Record<TraceStatus, number>>;
@@ -67,14 +104,20 @@ export interface PathSummary {
   maxFacesCrossed: number;
 }
 
+/** straightestPaths' result: one entry per target in every per-path array. */
 export interface StraightestPaths {
-  source: SurfacePoint;
+  /** The source, resolved ('auto' becomes the vertex it chose). */
+  source: SurfacePointObject;
   /** 3D position of the source (the base plane's origin). */
   sourcePosition: [number, number, number];
+  /** The base plane's unit normal. */
   normal: [number, number, number];
+  /** The base plane fell back to the area-weighted normal (see BasePlane.fallback). */
   baseFallback: boolean;
+  /** Why it fell back ('' when not). */
   baseNote: string;
-  targets: SurfacePoint[];
+  /** The targets, resolved ('boundary' expanded into its vertices). */
+  targets: SurfacePointObject[];
   /** 3D position of every target, x, y, z each. */
   targetPositions: Float64Array;
   /** Number of paths (= targets). */
@@ -82,9 +125,11 @@ export interface StraightestPaths {
   /** Paths with status 'reached' (the core's count). */
   reached: number;
   summary: PathSummary;
+  /** Each path's status. */
   statuses: TraceStatus[];
   /** Straightest distances (of the partial path when not reached). */
   lengths: Float64Array;
+  /** Faces each path crossed. */
   facesCrossed: Uint32Array;
   /**
    * Per target, the unit direction t from the source toward it within the base plane (D − S without
@@ -94,7 +139,9 @@ export interface StraightestPaths {
   directions: Float64Array;
   /** Packed x, y, z of every path's points; path i is points [3·offsets[i], 3·offsets[i+1]). */
   points: Float32Array;
+  /** count + 1 offsets into points (in points, not floats); empty when points: false. */
   offsets: Uint32Array;
+  /** Milliseconds spent setting up and tracing. */
   timings: { prepare: number; trace: number };
 }
 
@@ -113,8 +160,20 @@ export interface StraightestPathsOptions {
   onProgress?: ProgressCallback;
 }
 
-/** (stage, fraction in [0, 1]) → return false to cancel. Called synchronously from the WASM work. */
-export type ProgressCallback = (stage: string, fraction: number) => boolean | void;
+/**
+ * The stages progress reports: straightestPaths 'trace'; parameterize 'source', 'trace', 'weights',
+ * 'solve', 'refine', 'metrics'; boundaryPolygons 'trace'; compareParameterizations 'compare'. Other
+ * names may come with new versions.
+ */
+export type ProgressStage =
+  | 'source' | 'trace' | 'weights' | 'solve' | 'refine' | 'metrics' | 'compare' | (string & {});
+
+/**
+ * (stage, fraction in [0, 1]) → return false to cancel (the call then throws 'cancelled'). Called
+ * synchronously from the WASM work. An exception it throws cancels the work too and is rethrown, as
+ * is, by the call once the core has unwound.
+ */
+export type ProgressCallback = (stage: ProgressStage, fraction: number) => boolean | void;
 
 /**
  * Where the boundary goes: 'measured' (the paper's straightest distances and angles), 'circle',
@@ -124,9 +183,14 @@ export type ProgressCallback = (stage: string, fraction: number) => boolean | vo
 export type BoundaryKind = 'measured' | 'circle' | 'square' | 'free';
 /** The fixed boundaries a free refinement starts from. */
 export type InitBoundary = 'measured' | 'circle';
+/** How interior vertices are placed: the convex-combination weights ('cotan' may fold). */
 export type WeightKind = 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform';
+/** The sparse solver: 'multigrid' (BiCGSTAB + algebraic multigrid), 'lu' (direct), 'bicgstab' (ILUT). */
 export type LinearSolver = 'multigrid' | 'lu' | 'bicgstab';
+/** Geodesic distances by the heat method (factored once per mesh) or along edges (Dijkstra). */
 export type DistanceMethod = 'heat' | 'dijkstra';
+/** The built-in sample meshes (st.sampleNames() lists them). */
+export type SampleName = 'mountain' | 'cap' | 'saddle' | 'face' | (string & {});
 
 export interface ParameterizeOptions {
   /** Center of the measured boundary (default 'auto'); must be interior (also for 'free' and 'auto'). */
@@ -139,6 +203,7 @@ export interface ParameterizeOptions {
    * compareParameterizations' `best`).
    */
   boundary?: BoundaryKind | 'auto';
+  /** Default 'shape-preserving'. */
   weights?: WeightKind;
   /** Default 'multigrid' (BiCGSTAB + algebraic multigrid); 'lu' direct; 'bicgstab' with ILUT. */
   solver?: LinearSolver;
@@ -155,18 +220,27 @@ export interface ParameterizeOptions {
 
 /** A map parameterize tried: its stretch and bad-triangle counts. */
 export interface BoundaryCandidate {
+  /** The boundary this map used. */
   boundary: BoundaryKind;
+  /** L2 texture stretch (Infinity when not bijective). */
   l2: number;
+  /** Worst per-face stretch. */
   linf: number;
+  /** Triangles turned over in the plane. */
   flipped: number;
+  /** Triangles of (near) zero area in the plane. */
   degenerate: number;
   /** Pairs of boundary edges that cross in the plane (only a free boundary can have any). */
   overlaps: number;
 }
 
+/** parameterize's result: the uv map and how good it is. */
 export interface Parameterization {
-  source: SurfacePoint;
+  /** The measured boundary's center, resolved. */
+  source: SurfacePointObject;
+  /** The boundary of this map ('auto' becomes the kind it chose). */
   boundary: BoundaryKind;
+  /** The interior weights used. */
   weights: WeightKind;
   /** u, v per vertex in [0, 1]² (aspect ratio kept). */
   uv: Float32Array;
@@ -182,7 +256,9 @@ export interface Parameterization {
   stretch: { l2: number; linf: number };
   /** No flipped, no degenerate triangle and no boundary self-overlap. */
   bijective: boolean;
+  /** Triangles turned over in the plane. */
   flipped: number;
+  /** Triangles of (near) zero area in the plane. */
   degenerate: number;
   /** Pairs of boundary edges that cross in the plane (the texture would be sampled twice there). */
   overlaps: number;
@@ -196,8 +272,11 @@ export interface Parameterization {
    * geodesic distance); their radius is replaced like a failed trace's.
    */
   outliers: number;
+  /** Vertices whose weights fell back to uniform (e.g. cotan weights that would fold). */
   weightFallbacks: number;
+  /** Angle distortion over the faces (0 for a conformal map). */
   angleDistortion: { mean: number; max: number };
+  /** Area distortion over the faces (0 for an area-preserving map). */
   areaDistortion: { mean: number; max: number };
   /** Relative residual of the linear solve (the start's, for 'free'). */
   residual: number;
@@ -240,7 +319,9 @@ export interface BoundaryPolygonsOptions {
 /** The boundary kinds with a polygon without a solve. */
 export type PolygonBoundaryKind = Exclude<BoundaryKind, 'free'>;
 
+/** One boundary kind's polygon, computed without a solve. */
 export interface BoundaryPolygon {
+  /** The kind of this polygon. */
   boundary: PolygonBoundaryKind;
   /**
    * u, v per loop vertex in exactly the [0, 1]² frame `parameterize({ boundary })` puts its uv and
@@ -252,6 +333,7 @@ export interface BoundaryPolygon {
   loop: Int32Array;
   /** Why this kind has no polygon (e.g. measured with a source on the boundary), else null. */
   error: string | null;
+  /** The failure's category, else null. */
   category: ErrorCategory | null;
 }
 
@@ -262,6 +344,7 @@ export interface CompareOptions {
   boundaries?: BoundaryKind[];
   /** Default ['shape-preserving', 'mean-value', 'cotan', 'uniform']. */
   weights?: WeightKind[];
+  /** Default 'multigrid'. */
   solver?: LinearSolver;
   /** Free rows: refinement iterations at most (default 200). */
   maxIterations?: number;
@@ -271,16 +354,23 @@ export interface CompareOptions {
   onProgress?: ProgressCallback;
 }
 
+/** One cell of compareParameterizations: a boundary × weights map and its measures. */
 export interface ComparisonRow {
+  /** The cell's boundary. */
   boundary: BoundaryKind;
+  /** The cell's interior weights. */
   weights: WeightKind;
   /** null when the cell failed (error set); Infinity when not bijective. */
   l2: number | null;
+  /** Worst per-face stretch; null when the cell failed. */
   linf: number | null;
+  /** Triangles turned over; null when the cell failed. */
   flipped: number | null;
+  /** Triangles of (near) zero area; null when the cell failed. */
   degenerate: number | null;
   /** Pairs of boundary edges that cross in the plane. */
   overlaps: number | null;
+  /** No flipped, degenerate or overlapping parts; null when the cell failed. */
   bijective: boolean | null;
   /** Free rows: the refinement's start ('measured' if its map is bijective, else 'circle'); else null. */
   init: InitBoundary | null;
@@ -290,10 +380,13 @@ export interface ComparisonRow {
   converged: boolean | null;
   /** Wall time of this cell's parameterization (a free row includes its start's solve). */
   timeMs: number;
+  /** Why the cell failed, else null. */
   error: string | null;
+  /** The failure's category, else null. */
   category: ErrorCategory | null;
 }
 
+/** compareParameterizations' result. */
 export interface Comparison {
   /** Boundary-major: for each boundary, every weights in the given order. */
   rows: ComparisonRow[];
@@ -301,7 +394,15 @@ export interface Comparison {
   best: number;
 }
 
+/**
+ * A validated triangle mesh in WASM memory, made by st.loadMesh, st.meshFromArrays or st.sample. Free
+ * it with delete() or declare it with `using` (Symbol.dispose); any use afterwards throws
+ * StraightestError 'invalid_argument'. A mesh dropped without either is freed by a FinalizationRegistry
+ * at some later garbage collection: a safety net with no timing guarantee.
+ */
 export class Mesh {
+  private constructor();
+  /** Sizes, topology and what validation repaired. */
   info(): MeshInfo;
   /** Every boundary loop's vertices in order (the surface on the left), longest first. */
   boundaryLoops(): Int32Array[];
@@ -313,10 +414,13 @@ export class Mesh {
   compareParameterizations(options?: CompareOptions): Comparison;
   /** The interior vertex farthest from the boundary ("center of the mesh"). */
   defaultSource(): number;
+  /** The base plane at a source (default 'auto'). */
   basePlane(source?: SurfacePoint | 'auto'): BasePlane;
+  /** Straightest paths from one source to many targets (see StraightestPathsOptions, StraightestPaths). */
   straightestPaths(options?: StraightestPathsOptions): StraightestPaths;
   /** Distances from the source to every vertex; 'heat' factors once per mesh and reuses it. */
   geodesicDistances(source?: SurfacePoint | 'auto', method?: DistanceMethod): Float64Array;
+  /** Flattens a disk into [0, 1]² (see ParameterizeOptions). Throws 'topology' unless a disk. */
   parameterize(options?: ParameterizeOptions): Parameterization;
   /** OBJ text in the input's vertex order; with uv also `vt` lines (faces as v/vt). */
   toOBJ(uv?: ArrayLike<number>): string;
@@ -324,19 +428,33 @@ export class Mesh {
   positions(): Float64Array;
   /** 3 vertex indices per triangle (a copy). */
   indices(): Uint32Array;
+  /** Whether delete() (or disposal) has freed this mesh. */
   readonly deleted: boolean;
-  /** Frees the WASM memory; any later call throws. */
+  /** Frees the WASM memory; any later call throws StraightestError 'invalid_argument'. Idempotent. */
   delete(): void;
+  /** The same as delete(), for `using mesh = st.sample('cap')`. */
+  [Symbol.dispose](): void;
 }
 
+/**
+ * The loaded library, from `await createStraightest()`. Its WASM memory lives as long as the object is
+ * reachable; the meshes it makes are what must be freed.
+ */
 export class Straightest {
+  private constructor();
+  /** Parses an OBJ or OFF file given as bytes or text; throws a StraightestError saying what is wrong where. */
   loadMesh(data: Uint8Array | ArrayBuffer | ArrayBufferView | string, format?: MeshFormat, limits?: BuildLimits): Mesh;
+  /** A mesh from flat arrays: x, y, z per vertex and 3 vertex indices per triangle. */
   meshFromArrays(positions: ArrayLike<number>, indices: ArrayLike<number>, limits?: BuildLimits): Mesh;
+  /** Names of the built-in sample meshes. */
   sampleNames(): string[];
-  sample(name: 'mountain' | 'cap' | 'saddle' | 'face' | string): Mesh;
+  /** A built-in sample mesh; an unknown name throws 'invalid_argument'. */
+  sample(name: SampleName): Mesh;
+  /** Bytes of WASM memory reserved (grows, never shrinks). */
   readonly memoryBytes: number;
   /** Bytes currently allocated inside WASM memory. */
   readonly heapUsedBytes: number;
+  /** The trace statuses in the core's order ('reached' first). */
   readonly traceStatuses: TraceStatus[];
   /** ['measured', 'circle', 'square', 'free'] */
   readonly boundaryKinds: BoundaryKind[];
@@ -344,16 +462,21 @@ export class Straightest {
   readonly polygonBoundaryKinds: PolygonBoundaryKind[];
   /** The kinds and 'auto'. */
   readonly boundaryChoices: (BoundaryKind | 'auto')[];
+  /** ['shape-preserving', 'mean-value', 'cotan', 'uniform'] */
   readonly weightKinds: WeightKind[];
+  /** ['multigrid', 'lu', 'bicgstab'] */
   readonly solvers: LinearSolver[];
+  /** ['heat', 'dijkstra'] */
   readonly distanceMethods: DistanceMethod[];
   /** ['obj', 'off', 'auto'] */
   readonly meshFormats: MeshFormat[];
+  /** Every StraightestError category, in the core's order. */
   readonly errorCategories: ErrorCategory[];
   /** 'obj' or 'off' by the name's extension (any case), else 'auto'. */
   formatFromFileName(name: string): MeshFormat;
 }
 
+/** Where createStraightest gets the WebAssembly module (by default the .wasm next to the package's JS). */
 export interface CreateOptions {
   /** URL of straightest-core.wasm when it is not served next to the module (bundlers, CDNs). */
   wasmUrl?: string | URL;
@@ -363,4 +486,8 @@ export interface CreateOptions {
   wasmBinary?: ArrayBuffer | Uint8Array;
 }
 
+/**
+ * Loads the WebAssembly module: in Node a file: URL is read from disk, anything else is fetched. A
+ * module that cannot be loaded rejects with StraightestError 'io' naming the URL and what came back.
+ */
 export function createStraightest(options?: CreateOptions): Promise<Straightest>;

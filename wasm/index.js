@@ -1,21 +1,21 @@
 // straightest — the npm package's ESM face. Loads the WebAssembly core once per createStraightest()
-// and wraps its Embind objects: errors become JS Errors, arrays are copied out of WASM memory once,
-// and meshes must be delete()d (a FinalizationRegistry frees forgotten ones eventually).
+// (wasm/load-wasm.js) and wraps its Embind objects: errors become StraightestErrors, arrays are copied
+// out of WASM memory once, and meshes must be delete()d or `using`-disposed (a FinalizationRegistry
+// frees forgotten ones eventually). This file is the entry for browsers, bundlers and Node alike: it
+// imports nothing from Node.
 import createStraightestModule from './dist/straightest-core.mjs';
+import { StraightestError } from './straightest-error.js';
+import { checkWasm, readWasm, wasmLocation } from './load-wasm.js';
 
-const isNode = typeof process !== 'undefined' && !!process.versions?.node && typeof window === 'undefined';
+export { StraightestError };
 
-/** An error from the core: `message` says what was found and where; `category` is machine-readable. */
-export class StraightestError extends Error {
-  constructor(message, category) {
-    super(message);
-    this.name = 'StraightestError';
-    this.category = category;
-  }
-}
+// `using mesh = ...` calls Symbol.dispose; runtimes without it get the key TypeScript's downlevel
+// `using` looks for.
+const disposeSymbol = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
-function unwrap(result) {
-  if (result.error !== undefined) throw new StraightestError(result.error, result.category);
+/** The result, or its {error, category} thrown as a StraightestError (hint(category) may add a sentence). */
+function unwrap(result, hint = undefined) {
+  if (result.error !== undefined) throw new StraightestError(result.error + (hint?.(result.category) ?? ''), result.category);
   return result;
 }
 
@@ -28,30 +28,66 @@ function toBytes(data) {
 }
 
 /**
- * onProgress(stage, fraction) is called from inside the WASM work (synchronously, ~100 times per stage
- * at most); returning false cancels and the call throws a StraightestError with category 'cancelled'.
+ * Runs call(progress) and unwraps its result. onProgress(stage, fraction) is called from inside the
+ * WASM work (synchronously, ~100 times per stage at most); returning false cancels and the call
+ * throws a StraightestError with category 'cancelled'. An exception thrown by onProgress never crosses
+ * the WASM frames (unwinding them from JS would skip the core's destructors and leak): it is caught,
+ * the work is cancelled like a `false`, and the same exception is rethrown here once the core has
+ * returned cleanly.
  */
-function progressCallback(onProgress) {
-  if (onProgress === undefined || onProgress === null) return null;
+function withProgress(onProgress, call, hint = undefined) {
+  if (onProgress === undefined || onProgress === null) return unwrap(call(null), hint);
   if (typeof onProgress !== 'function') throw new TypeError('onProgress must be a function (stage, fraction) => boolean | void');
-  return (stage, fraction) => onProgress(stage, fraction) !== false;
+  let thrown = null;
+  const result = call((stage, fraction) => {
+    if (thrown) return false;
+    try {
+      return onProgress(stage, fraction) !== false;
+    } catch (error) {
+      thrown = { error };
+      return false;
+    }
+  });
+  if (thrown) throw thrown.error;
+  return unwrap(result, hint);
 }
 
 const finalizer = typeof FinalizationRegistry === 'function'
   ? new FinalizationRegistry((handle) => { try { handle.delete(); } catch { /* already gone */ } })
   : null;
 
-/** A validated triangle mesh living in WASM memory. Call delete() when done. */
+// Only the library makes meshes and modules: their constructors take this token.
+const internal = Symbol('straightest internal');
+
+/**
+ * A validated triangle mesh living in WASM memory. Free it with delete(), or declare it with `using`
+ * (Symbol.dispose). A mesh that becomes unreachable without either is freed by a FinalizationRegistry
+ * at some later garbage collection — a safety net with no timing guarantee, not a way to manage memory.
+ */
 export class Mesh {
   #handle;
 
-  constructor(handle) {
+  constructor(token, handle) {
+    if (token !== internal) throw new TypeError('Mesh has no public constructor: use st.loadMesh, st.meshFromArrays or st.sample');
     this.#handle = handle;
     finalizer?.register(this, handle, this);
   }
 
+  /**
+   * A topology error's extra sentence when the surface is a triangle soup (more components than half its
+   * faces): its triangles share no vertices, which is what a non-indexed geometry gives.
+   */
+  #hint = (category) => {
+    if (category !== 'topology' || !this.#handle) return '';
+    const { faces, components } = this.#handle.info();
+    if (faces < 2 || components <= faces / 2) return '';
+    return ` (${components} components for ${faces} triangles: the triangles share no vertices, as in a non-indexed `
+      + "geometry such as STLLoader's; weld coincident vertices first, e.g. meshFromBufferGeometry(st, geometry, "
+      + "{ weld: true }) from 'straightest/three')";
+  };
+
   #live() {
-    if (!this.#handle) throw new Error('straightest: this mesh has been deleted');
+    if (!this.#handle) throw new StraightestError('this mesh has been deleted (delete() or the end of its `using` scope)', 'invalid_argument');
     return this.#handle;
   }
 
@@ -68,13 +104,13 @@ export class Mesh {
   boundaryLoops() { return this.#live().boundaryLoops(); }
 
   /** Area-weighted unit vertex normals, 3 floats per vertex (zero for unreferenced vertices). */
-  vertexNormals() { return unwrap(this.#live().vertexNormals()).normals; }
+  vertexNormals() { return unwrap(this.#live().vertexNormals(), this.#hint).normals; }
 
   /** The default source: the interior vertex farthest from the boundary ("center of the mesh"). */
-  defaultSource() { return unwrap(this.#live().defaultSource()).vertex; }
+  defaultSource() { return unwrap(this.#live().defaultSource(), this.#hint).vertex; }
 
   /** The base plane at a source: { source, origin, normal, fallback, note }. */
-  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(source)); }
+  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(source), this.#hint); }
 
   /**
    * Straightest paths from one source to many targets (shared setup). targets: 'boundary' (every
@@ -83,12 +119,13 @@ export class Mesh {
    * Float32Array of points with offsets (path i is points offsets[i]..offsets[i+1], 3 floats each).
    */
   straightestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
-    return unwrap(this.#live().straightestPaths(source, targets, !!points, progressCallback(onProgress)));
+    const handle = this.#live();
+    return withProgress(onProgress, (progress) => handle.straightestPaths(source, targets, !!points, progress), this.#hint);
   }
 
   /** Shortest distances from a source to every vertex: 'heat' (factored once per mesh) or 'dijkstra'. */
   geodesicDistances(source = 'auto', method = 'heat') {
-    return unwrap(this.#live().geodesicDistances(source, String(method))).distances;
+    return unwrap(this.#live().geodesicDistances(source, String(method)), this.#hint).distances;
   }
 
   /**
@@ -102,8 +139,9 @@ export class Mesh {
     source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid',
     maxIterations, timeBudgetMs, onProgress,
   } = {}) {
-    return unwrap(this.#live().parameterize(source, String(boundary), String(weights), String(solver),
-      { maxIterations, timeBudgetMs }, progressCallback(onProgress)));
+    const handle = this.#live();
+    return withProgress(onProgress, (progress) => handle.parameterize(source, String(boundary), String(weights),
+      String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
   }
 
   /**
@@ -113,7 +151,8 @@ export class Mesh {
    * whose boundary exists only after its refinement; asking for 'free' throws 'invalid_argument'.
    */
   boundaryPolygons({ source = 'auto', kinds, onProgress } = {}) {
-    return unwrap(this.#live().boundaryPolygons(source, kinds, progressCallback(onProgress))).polygons;
+    const handle = this.#live();
+    return withProgress(onProgress, (progress) => handle.boundaryPolygons(source, kinds, progress), this.#hint).polygons;
   }
 
   /**
@@ -125,8 +164,9 @@ export class Mesh {
   compareParameterizations({
     source = 'auto', boundaries, weights, solver = 'multigrid', maxIterations, timeBudgetMs, onProgress,
   } = {}) {
-    return unwrap(this.#live().compareParameterizations(source, boundaries, weights, String(solver),
-      { maxIterations, timeBudgetMs }, progressCallback(onProgress)));
+    const handle = this.#live();
+    return withProgress(onProgress, (progress) => handle.compareParameterizations(source, boundaries, weights,
+      String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
   }
 
   /** The mesh as OBJ text (input vertex order); with uv (2 per vertex) also `vt` lines. */
@@ -141,14 +181,21 @@ export class Mesh {
     this.#handle.delete();
     this.#handle = null;
   }
+
+  /** The same as delete(): `using mesh = st.sample('cap')` frees the mesh at the end of the scope. */
+  [disposeSymbol]() { this.delete(); }
 }
 
-/** The loaded library. Create with `await createStraightest()`. */
+/**
+ * The loaded library. Create with `await createStraightest()`. Its WASM memory lives as long as the
+ * object is reachable (there is nothing to dispose: meshes are what hold memory inside it).
+ */
 export class Straightest {
   #module;
   #names;
 
-  constructor(module) {
+  constructor(token, module) {
+    if (token !== internal) throw new TypeError('Straightest has no public constructor: use await createStraightest()');
     this.#module = module;
     this.#names = module.nameLists();
   }
@@ -185,19 +232,19 @@ export class Straightest {
 
   /** Parses an OBJ or OFF file given as bytes (Uint8Array/ArrayBuffer) or text. */
   loadMesh(data, format = 'auto', limits = {}) {
-    return new Mesh(unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), limits)).mesh);
+    return new Mesh(internal, unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), limits)).mesh);
   }
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
   meshFromArrays(positions, indices, limits = {}) {
-    return new Mesh(unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh);
+    return new Mesh(internal, unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh);
   }
 
   /** Names of the built-in sample meshes. */
   sampleNames() { return this.#module.sampleNames(); }
 
   /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face'). */
-  sample(name) { return new Mesh(unwrap(this.#module.sample(String(name))).mesh); }
+  sample(name) { return new Mesh(internal, unwrap(this.#module.sample(String(name))).mesh); }
 
   /** Bytes of WASM memory currently reserved (grows, never shrinks). */
   get memoryBytes() { return this.#module.HEAPU8.length; }
@@ -208,20 +255,19 @@ export class Straightest {
 
 /**
  * Loads the WebAssembly module. Options: `wasmUrl` (where the .wasm is served, for bundlers and
- * CDNs), `locateFile(name)` (Emscripten's hook), or `wasmBinary` (the bytes themselves).
+ * CDNs), `locateFile(name, scriptDirectory)` (Emscripten's hook), or `wasmBinary` (the bytes
+ * themselves). By default the .wasm next to this file (wasm/dist/), read from disk for a file: URL in
+ * Node (also under jsdom) and fetched otherwise. A module that cannot be loaded — not found, not
+ * WebAssembly, or refused by the runtime — rejects with StraightestError 'io' naming the URL and what
+ * came back.
  */
 export async function createStraightest(options = {}) {
-  const args = {};
-  if (options.wasmBinary) {
-    args.wasmBinary = options.wasmBinary;
-  } else if (options.wasmUrl) {
-    args.locateFile = () => String(options.wasmUrl);
-  } else if (options.locateFile) {
-    args.locateFile = options.locateFile;
-  } else if (isNode) {
-    // The loader is built for web and workers; in Node hand it the bytes next to this file.
-    const { readFile } = await import('node:fs/promises');
-    args.wasmBinary = await readFile(new URL('./dist/straightest-core.wasm', import.meta.url));
+  const url = options.wasmBinary ? null : wasmLocation(options, new URL('./dist/straightest-core.wasm', import.meta.url));
+  const wasmBinary = options.wasmBinary ? checkWasm(new Uint8Array(options.wasmBinary), 'wasmBinary') : await readWasm(url);
+  try {
+    return new Straightest(internal, await createStraightestModule({ wasmBinary, printErr: () => {} }));
+  } catch (error) {
+    const from = url ? `from ${url}` : 'given as wasmBinary';
+    throw new StraightestError(`the WebAssembly module ${from} could not be started: ${error?.message ?? error}`, 'io', { cause: error });
   }
-  return new Straightest(await createStraightestModule(args));
 }

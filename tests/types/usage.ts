@@ -6,6 +6,7 @@ import {
   createStraightest,
   Mesh,
   StraightestError,
+  type Straightest,
   type BasePlane,
   type ErrorCategory,
   type MeshInfo,
@@ -15,6 +16,8 @@ import {
   type TraceStatus,
 } from 'straightest';
 import { applyUV, meshFromBufferGeometry, toBufferGeometry } from 'straightest/three';
+import * as inline from 'straightest/inline';
+import { createStraightestWorker, type WorkerMesh } from 'straightest/worker';
 import { BufferGeometry } from 'three';
 
 /** Compiles only when A and B are the same type (not merely assignable). */
@@ -43,6 +46,21 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   await createStraightest({ wasmUrl: new URL('https://example.org/straightest-core.wasm') });
   await createStraightest({ wasmUrl: '/assets/straightest-core.wasm', wasmBinary: new ArrayBuffer(8) });
   await createStraightest({ locateFile: (name, dir) => dir + name });
+  const embedded: Straightest = await inline.createStraightest();
+  void embedded;
+  // straightest/worker: the same calls as promises; a signal cancels.
+  const inWorker = await createStraightestWorker({ wasmUrl: '/straightest-core.wasm' });
+  const remote: WorkerMesh = await inWorker.sample('cap');
+  const controller = new AbortController();
+  const remoteUv: Float32Array = (await remote.parameterize({ boundary: 'free', signal: controller.signal, onProgress: () => {} })).uv;
+  const remoteInfo: MeshInfo = await remote.info();
+  void [remoteUv, remoteInfo];
+  // @ts-expect-error the worker's results are promises
+  const notAwaited: MeshInfo = remote.info();
+  void notAwaited;
+  await remote.delete();
+  inWorker.cancel();
+  inWorker.terminate();
   // @ts-expect-error the options are an object, not a URL string
   await createStraightest('/straightest-core.wasm');
 
@@ -223,6 +241,10 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
 
   // three.js helpers.
   const fromThree: Mesh = meshFromBufferGeometry(st, geometry);
+  meshFromBufferGeometry(st, geometry, { weld: true }).delete();
+  meshFromBufferGeometry(st, geometry, { weld: 1e-6 }).delete();
+  // @ts-expect-error weld is true/false or a distance
+  meshFromBufferGeometry(st, geometry, { weld: 'yes' });
   const toThree: BufferGeometry = toBufferGeometry(fromThree);
   const textured: BufferGeometry = applyUV(toThree, p.uv);
   applyUV(geometry, [0, 0, 1, 0, 0, 1]);
@@ -231,6 +253,26 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   // @ts-expect-error the straightest instance comes first
   meshFromBufferGeometry(geometry);
   void textured;
+
+  // Lifetime: `using` frees a mesh at the end of its scope; constructors are the library's own.
+  {
+    using scoped = st.sample('cap');
+    const faces: number = scoped.info().faces;
+    void faces;
+  }
+  // @ts-expect-error meshes come from st.loadMesh, st.meshFromArrays or st.sample
+  new Mesh();
+  // Results give surface points in object form, never a bare index.
+  const resolved = paths.targets[0];
+  if ('vertex' in resolved) void resolved.vertex;
+  // @ts-expect-error a result's source is an object
+  const bareSource: number = paths.source;
+  void bareSource;
+  // Progress stages are named; unknown future stages still type-check.
+  mesh.parameterize({ onProgress: (stage) => stage === 'refine' || stage === 'some-later-stage' });
+  st.sample('face');
+  const error = new StraightestError('message', 'io', { cause: new Error('inner') });
+  void error;
 
   // Meshes hold WASM memory until deleted.
   const deleted: boolean = mesh.deleted;

@@ -1,0 +1,81 @@
+// The module worker behind straightest/worker (wasm/worker.js is its client): it owns a Straightest
+// instance and the meshes made in it, runs each request through the same API a caller imports, and
+// posts results back with their typed arrays' buffers transferred (not copied).
+//
+// Protocol (every request has an `id`; exactly one final reply echoes it; 'progress' may come before):
+//   → { id, type: 'init', options }                      ← { id, type: 'result', value: null }
+//        options: createStraightest's (wasmUrl, wasmBinary); the worker's own default otherwise
+//   → { id, type: 'create', mesh, method, args }         ← { id, type: 'result', value: MeshInfo }
+//        method: 'loadMesh' | 'meshFromArrays' | 'sample'; mesh: the client's number for it
+//   → { id, type: 'call', mesh, method, args, progress }  ← { id, type: 'result', value }
+//        a Mesh method; with progress true, its last argument's onProgress posts
+//        { id, type: 'progress', stage, fraction }
+//   → { id, type: 'delete', mesh }                       ← { id, type: 'result', value: null }
+//   any failure                                          ← { id, type: 'error', message, category }
+// Cancelling: the work runs inside synchronous WASM calls, so the client terminates the worker.
+import { createStraightest } from './index.js';
+
+let straightest = null;
+const meshes = new Map();
+
+const CREATORS = new Set(['loadMesh', 'meshFromArrays', 'sample']);
+const METHODS = new Set(['info', 'positions', 'indices', 'boundaryLoops', 'vertexNormals', 'defaultSource', 'basePlane',
+  'straightestPaths', 'geodesicDistances', 'parameterize', 'boundaryPolygons', 'compareParameterizations', 'toOBJ']);
+
+/**
+ * Every ArrayBuffer under `value` that a typed array owns whole (results are copies out of WASM memory;
+ * a view into a larger buffer, such as that memory, is never transferred), to transfer, not copy.
+ */
+function buffers(value, found = new Set()) {
+  if (ArrayBuffer.isView(value)) {
+    if (value.byteOffset === 0 && value.byteLength === value.buffer.byteLength) found.add(value.buffer);
+  }
+  else if (Array.isArray(value)) for (const v of value) buffers(v, found);
+  else if (value && typeof value === 'object') for (const v of Object.values(value)) buffers(v, found);
+  return found;
+}
+
+async function handle(request) {
+  const { id, type } = request;
+  switch (type) {
+    case 'init':
+      straightest = await createStraightest(request.options ?? {});
+      return null;
+    case 'create': {
+      if (!CREATORS.has(request.method)) throw new TypeError(`unknown mesh source '${request.method}'`);
+      const mesh = straightest[request.method](...request.args);
+      meshes.set(request.mesh, mesh);
+      return mesh.info();
+    }
+    case 'call': {
+      const mesh = meshes.get(request.mesh);
+      if (!mesh) throw Object.assign(new Error('this mesh has been deleted'), { category: 'invalid_argument' });
+      if (!METHODS.has(request.method)) throw new TypeError(`unknown mesh method '${request.method}'`);
+      const args = [...request.args];
+      if (request.progress) {
+        const onProgress = (stage, fraction) => { postMessage({ id, type: 'progress', stage, fraction }); };
+        args[args.length - 1] = { ...args[args.length - 1], onProgress };
+      }
+      return mesh[request.method](...args);
+    }
+    case 'delete':
+      meshes.get(request.mesh)?.delete();
+      meshes.delete(request.mesh);
+      return null;
+    default:
+      throw new TypeError(`unknown request '${type}'`);
+  }
+}
+
+// Requests run one at a time, in order (each is one synchronous WASM call, 'init' aside).
+let queue = Promise.resolve();
+addEventListener('message', ({ data }) => {
+  queue = queue.then(async () => {
+    try {
+      const value = await handle(data);
+      postMessage({ id: data.id, type: 'result', value }, [...buffers(value)]);
+    } catch (error) {
+      postMessage({ id: data.id, type: 'error', message: String(error?.message ?? error), category: error?.category ?? 'internal' });
+    }
+  });
+});

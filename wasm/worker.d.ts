@@ -1,0 +1,67 @@
+// Types of straightest/worker: the package's API in a module worker, as promises.
+import type {
+  BasePlane, BoundaryPolygon, BoundaryPolygonsOptions, BuildLimits, CompareOptions, Comparison, CreateOptions, MeshFormat,
+  MeshInfo, Parameterization, ParameterizeOptions, SampleName, StraightestPaths, StraightestPathsOptions, SurfacePoint,
+  DistanceMethod,
+} from './index.js';
+
+/** What the long calls take in the worker: Mesh's options plus an AbortSignal that cancels the work. */
+export type WorkerOptions<T> = T & { signal?: AbortSignal };
+
+/** A mesh living in the worker: Mesh's methods, each returning a promise. */
+export class WorkerMesh {
+  private constructor();
+  /** Whether delete() has been called. */
+  readonly deleted: boolean;
+  /** Sizes, topology and what validation repaired. */
+  info(): Promise<MeshInfo>;
+  /** x, y, z per vertex (transferred). */
+  positions(): Promise<Float64Array>;
+  /** 3 vertex indices per triangle (transferred). */
+  indices(): Promise<Uint32Array>;
+  /** Every boundary loop's vertices in order, longest first. */
+  boundaryLoops(): Promise<Int32Array[]>;
+  /** Area-weighted unit vertex normals. */
+  vertexNormals(): Promise<Float32Array>;
+  /** The interior vertex farthest from the boundary. */
+  defaultSource(): Promise<number>;
+  /** The base plane at a source. */
+  basePlane(source?: SurfacePoint | 'auto'): Promise<BasePlane>;
+  /** Distances from the source to every vertex. */
+  geodesicDistances(source?: SurfacePoint | 'auto', method?: DistanceMethod): Promise<Float64Array>;
+  /** OBJ text, with uv as `vt` lines when given. */
+  toOBJ(uv?: ArrayLike<number>): Promise<string>;
+  /** Straightest paths (see Mesh.straightestPaths); `signal` cancels. */
+  straightestPaths(options?: WorkerOptions<StraightestPathsOptions>): Promise<StraightestPaths>;
+  /** A parameterization (see Mesh.parameterize); `signal` cancels. */
+  parameterize(options?: WorkerOptions<ParameterizeOptions>): Promise<Parameterization>;
+  /** Every boundary kind's polygon without a solve; `signal` cancels. */
+  boundaryPolygons(options?: WorkerOptions<BoundaryPolygonsOptions>): Promise<BoundaryPolygon[]>;
+  /** Every boundary × weights; `signal` cancels. */
+  compareParameterizations(options?: WorkerOptions<CompareOptions>): Promise<Comparison>;
+  /** Frees the mesh in the worker. */
+  delete(): Promise<void>;
+}
+
+/** The library in a worker, from `await createStraightestWorker()`. */
+export interface StraightestWorker {
+  /** Parses an OBJ or OFF file (bytes or text) in the worker. */
+  loadMesh(data: Uint8Array | ArrayBuffer | ArrayBufferView | string, format?: MeshFormat, limits?: BuildLimits): Promise<WorkerMesh>;
+  /** A mesh from flat arrays, built in the worker. */
+  meshFromArrays(positions: ArrayLike<number>, indices: ArrayLike<number>, limits?: BuildLimits): Promise<WorkerMesh>;
+  /** A built-in sample mesh. */
+  sample(name: SampleName): Promise<WorkerMesh>;
+  /** Stops the running work: pending calls reject with 'cancelled'; meshes are rebuilt when next used. */
+  cancel(): void;
+  /** Ends the worker for good. */
+  terminate(): void;
+}
+
+/** createStraightestWorker's options: where the worker and the WebAssembly module come from. */
+export interface WorkerCreateOptions extends Pick<CreateOptions, 'wasmUrl' | 'wasmBinary'> {
+  /** Makes the module worker (running the package's wasm/worker-entry.js); called again after each cancel. */
+  createWorker?: () => Worker;
+}
+
+/** Starts the worker and loads the module in it. */
+export function createStraightestWorker(options?: WorkerCreateOptions): Promise<StraightestWorker>;

@@ -1,0 +1,165 @@
+// straightest/worker — the package's API in a module worker (wasm/worker-entry.js), as promises: the
+// main thread stays free while the core works. Results arrive with their typed arrays transferred;
+// onProgress is called as the worker reports; an AbortSignal (or worker.cancel()) cancels. Because the
+// work runs inside synchronous WASM calls, cancelling terminates the worker and starts a new one: every
+// pending call rejects with StraightestError 'cancelled', and meshes are rebuilt in the new worker from
+// what made them the next time they are used.
+import { StraightestError } from './straightest-error.js';
+
+/** A mesh living in the worker; every method returns a promise of what Mesh's returns. */
+class WorkerMesh {
+  #client;
+  #id;
+
+  constructor(client, id) {
+    this.#client = client;
+    this.#id = id;
+  }
+
+  /** Whether delete() has been called. */
+  get deleted() { return this.#client.isDeleted(this.#id); }
+
+  info() { return this.#client.call(this.#id, 'info', []); }
+  positions() { return this.#client.call(this.#id, 'positions', []); }
+  indices() { return this.#client.call(this.#id, 'indices', []); }
+  boundaryLoops() { return this.#client.call(this.#id, 'boundaryLoops', []); }
+  vertexNormals() { return this.#client.call(this.#id, 'vertexNormals', []); }
+  defaultSource() { return this.#client.call(this.#id, 'defaultSource', []); }
+  basePlane(source = 'auto') { return this.#client.call(this.#id, 'basePlane', [source]); }
+  geodesicDistances(source = 'auto', method = 'heat') { return this.#client.call(this.#id, 'geodesicDistances', [source, method]); }
+  toOBJ(uv) { return this.#client.call(this.#id, 'toOBJ', [uv]); }
+  // The long calls: options as Mesh's, plus `signal` (an AbortSignal that cancels).
+  straightestPaths(options = {}) { return this.#client.callWithOptions(this.#id, 'straightestPaths', options); }
+  parameterize(options = {}) { return this.#client.callWithOptions(this.#id, 'parameterize', options); }
+  boundaryPolygons(options = {}) { return this.#client.callWithOptions(this.#id, 'boundaryPolygons', options); }
+  compareParameterizations(options = {}) { return this.#client.callWithOptions(this.#id, 'compareParameterizations', options); }
+
+  /** Frees the mesh in the worker; later calls reject with StraightestError 'invalid_argument'. */
+  delete() { return this.#client.deleteMesh(this.#id); }
+}
+
+function defaultWorker() {
+  return new Worker(new URL('./worker-entry.js', import.meta.url), { type: 'module' });
+}
+
+/**
+ * Starts the worker. options: `createWorker` (() => a module Worker running the package's
+ * wasm/worker-entry.js, for bundlers that do not bundle `new Worker(new URL(…))` themselves; called
+ * again after each cancel), plus createStraightest's `wasmUrl` / `wasmBinary`, handed to the worker.
+ */
+export async function createStraightestWorker(options = {}) {
+  const { createWorker = defaultWorker, ...loadOptions } = options;
+  let current = null; // { worker, pending: Map(id → { resolve, reject, onProgress }), meshes: Set(ids built there) }
+  let nextId = 1;
+  let nextMesh = 1;
+  const recipes = new Map(); // mesh id → { method, args } that made it
+
+  function start(worker) {
+    const instance = { worker, pending: new Map(), meshes: new Set(), ready: null };
+    worker.addEventListener('message', ({ data }) => {
+      const entry = instance.pending.get(data.id);
+      if (!entry) return;
+      if (data.type === 'progress') { entry.onProgress?.(data.stage, data.fraction); return; }
+      instance.pending.delete(data.id);
+      if (data.type === 'error') entry.reject(new StraightestError(data.message, data.category));
+      else entry.resolve(data.value);
+    });
+    worker.addEventListener('error', (event) => {
+      event.preventDefault?.();
+      fail(instance, `the straightest worker failed: ${event.message || 'script error'}`, 'internal');
+    });
+    current = instance;
+    instance.ready = send(instance, { type: 'init', options: loadOptions });
+    return instance;
+  }
+
+  function fail(instance, message, category) {
+    for (const entry of instance.pending.values()) entry.reject(new StraightestError(message, category));
+    instance.pending.clear();
+  }
+
+  function send(instance, message, transfer = [], onProgress = null) {
+    const id = nextId++;
+    return new Promise((resolve, reject) => {
+      instance.pending.set(id, { resolve, reject, onProgress });
+      instance.worker.postMessage({ id, ...message }, transfer);
+    });
+  }
+
+  /** Terminates the worker: pending calls reject as 'cancelled'; a new worker takes over. */
+  function cancel() {
+    const old = current;
+    old.worker.terminate();
+    start(createWorker());
+    fail(old, 'cancelled', 'cancelled');
+  }
+
+  async function ensureMesh(instance, id) {
+    if (!recipes.has(id)) throw new StraightestError('this mesh has been deleted', 'invalid_argument');
+    if (instance.meshes.has(id)) return;
+    const { method, args } = recipes.get(id);
+    await send(instance, { type: 'create', mesh: id, method, args });
+    instance.meshes.add(id);
+  }
+
+  async function create(method, args) {
+    const id = nextMesh++;
+    recipes.set(id, { method, args });
+    const instance = current;
+    await instance.ready;
+    try {
+      await ensureMesh(instance, id);
+    } catch (error) {
+      recipes.delete(id);
+      throw error;
+    }
+    return new WorkerMesh(client, id);
+  }
+
+  async function run(id, method, args, onProgress, signal) {
+    if (signal?.aborted) throw new StraightestError('cancelled', 'cancelled');
+    const instance = current;
+    const onAbort = () => { if (current === instance) cancel(); };
+    signal?.addEventListener('abort', onAbort, { once: true });
+    try {
+      await instance.ready;
+      await ensureMesh(instance, id);
+      return await send(instance, { type: 'call', mesh: id, method, args, progress: !!onProgress }, [], onProgress);
+    } finally {
+      signal?.removeEventListener('abort', onAbort);
+    }
+  }
+
+  const client = {
+    isDeleted: (id) => !recipes.has(id),
+    call: (id, method, args) => run(id, method, args, null, null),
+    callWithOptions(id, method, { onProgress, signal, ...options }) {
+      if (onProgress !== undefined && typeof onProgress !== 'function') throw new TypeError('onProgress must be a function');
+      return run(id, method, [options], onProgress ?? null, signal ?? null);
+    },
+    async deleteMesh(id) {
+      if (!recipes.delete(id)) return;
+      const instance = current;
+      if (instance.meshes.delete(id)) await send(instance, { type: 'delete', mesh: id });
+    },
+  };
+
+  start(createWorker());
+  await current.ready;
+
+  return {
+    /** Parses an OBJ or OFF file (bytes or text) in the worker. */
+    loadMesh: (data, format = 'auto', limits = {}) => create('loadMesh', [data, format, limits]),
+    /** A mesh from flat arrays, built in the worker. */
+    meshFromArrays: (positions, indices, limits = {}) => create('meshFromArrays', [positions, indices, limits]),
+    /** A built-in sample mesh, built in the worker. */
+    sample: (name) => create('sample', [name]),
+    /** Stops the running work: pending calls reject with 'cancelled'; meshes stay usable. */
+    cancel,
+    /** Ends the worker for good. */
+    terminate() {
+      current.worker.terminate();
+      fail(current, 'the straightest worker was terminated', 'cancelled');
+    },
+  };
+}
