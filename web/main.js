@@ -38,7 +38,8 @@ const paths = createPathView(view, { onClear: () => picking?.hide() });
 picking = createPicking({
   view, surface, paths, tooltip: $('path-tooltip'),
   onPick: (picked, add) => {
-    if (add) pathRequest.added.push(picked);
+    // A closed surface has no boundary destinations: its first click picks a destination.
+    if (add || (closedMesh() && pathRequest.added.length === 0)) pathRequest.added.push(picked);
     else pathRequest.source = picked.point;
     tracePaths();
   },
@@ -122,6 +123,10 @@ async function tracePaths() {
       source: reply.source,
       traceMs: reply.timings.trace,
       plain,
+      otherArcs: paths.shown.otherArcs,
+      arcs: reply.count <= 16 ? Array.from(reply.lengths, (length, i) => ({
+        status: reply.statuses[i], length, other: reply.otherArcLengths[i], backward: reply.backward[i] === 1,
+      })) : null,
     };
     stage = 'compute the heat distances';
     if ($('heat-toggle').checked) await heat.show();

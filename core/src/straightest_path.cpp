@@ -496,6 +496,7 @@ PathSummary summarize(const PathBatch& batch) {
     ++s.byStatus[static_cast<size_t>(batch.status[i])];
     s.facesCrossed += batch.facesCrossed[i];
     s.maxFacesCrossed = std::max(s.maxFacesCrossed, batch.facesCrossed[i]);
+    if (!std::isnan(batch.otherArcLength[i])) ++s.otherArcs;
     if (batch.status[i] != TraceStatus::Reached) continue;
     ++s.reached;
     sum += batch.length[i];

@@ -136,6 +136,7 @@ struct PathSummary {
   double maxLength = 0;           // over reached paths
   int64_t facesCrossed = 0;       // over all paths
   int64_t maxFacesCrossed = 0;    // the longest walk, in faces (any status)
+  int64_t otherArcs = 0;          // paths that also reached D the other way round (closed meshes)
 };
 PathSummary summarize(const PathBatch& batch);
 
