@@ -280,7 +280,7 @@ describe('straightest paths', () => {
     assert(arc.length > 0 && arc.length <= arc.other, `shorter ${arc.length}, other ${arc.other}`);
     assert(arc.length + arc.other < 2 * Math.PI, 'both arcs make up a section inscribed in the unit sphere');
     const note = await page.textContent('#stats-note');
-    const shown = /Path 1: ([\d.]+) (forward|backward), the other way round ([\d.]+)/.exec(note);
+    const shown = /Path 1: ([\d.]*\d) (forward|backward), the other way round ([\d.]*\d)/.exec(note);
     assert(shown, `the panel does not show both lengths and the direction: '${note}'`);
     assert(Math.abs(Number(shown[1]) - arc.length) < 0.01 * arc.length && Math.abs(Number(shown[3]) - arc.other) < 0.01 * arc.other,
       `the panel shows ${shown[1]} and ${shown[3]}, the paths are ${arc.length} and ${arc.other}`);
