@@ -13,7 +13,8 @@
 //
 // After a mesh loads, the page asks the worker for the straightest paths from the default source to
 // every boundary vertex and draws them (the paper's Figure 1 view); clicking the mesh moves the
-// source, shift-clicking adds a destination. Once the paths are drawn, the parameterization view
+// source, shift-clicking adds a destination. A closed surface has no boundary: nothing is traced
+// until its first click, which picks a destination; both ways round each section are drawn. Once the paths are drawn, the parameterization view
 // flattens the mesh.
 
 import { createHeatDistance } from './heat-distance.js';
