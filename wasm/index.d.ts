@@ -102,6 +102,8 @@ export interface PathSummary {
   /** Faces crossed by all paths, and by the longest walk (any status). */
   facesCrossed: number;
   maxFacesCrossed: number;
+  /** Paths that also reached their target the other way round the section (closed meshes). */
+  otherArcs: number;
 }
 
 /** straightestPaths' result: one entry per target in every per-path array. */
@@ -127,10 +129,17 @@ export interface StraightestPaths {
   summary: PathSummary;
   /** Each path's status. */
   statuses: TraceStatus[];
-  /** Straightest distances (of the partial path when not reached). */
+  /**
+   * Straightest distances (of the partial path when not reached). On a closed mesh the section through
+   * the source is a closed curve walked both ways: this is the shorter arc to the target.
+   */
   lengths: Float64Array;
   /** Faces each path crossed. */
   facesCrossed: Uint32Array;
+  /** 1 where the path leaves the source away from its target (−directions[i]): 'backward'; 0 'forward'. */
+  backward: Uint8Array;
+  /** The other arc's length where both ways reach the target (closed meshes), NaN elsewhere. */
+  otherArcLengths: Float64Array;
   /**
    * Per target, the unit direction t from the source toward it within the base plane (D − S without
    * its base-normal component): the cutting plane is spanned by t and `normal` through
@@ -141,19 +150,26 @@ export interface StraightestPaths {
   points: Float32Array;
   /** count + 1 offsets into points (in points, not floats); empty when points: false. */
   offsets: Uint32Array;
+  /** The other arcs, packed like points (empty where otherArcLengths is NaN, or when points: false). */
+  otherPoints: Float32Array;
+  /** count + 1 offsets into otherPoints (in points, not floats). */
+  otherOffsets: Uint32Array;
   /** Milliseconds spent setting up and tracing. */
   timings: { prepare: number; trace: number };
 }
+
+/** Boundary vertices as targets: the longest loop's, or every loop's. */
+export type TargetName = 'boundary' | 'all-boundaries';
 
 export interface StraightestPathsOptions {
   /** Default 'auto': the interior vertex farthest from the boundary. */
   source?: SurfacePoint | 'auto';
   /**
-   * Default 'boundary': every vertex of the longest boundary loop (in order). An array may mix surface
-   * points and 'boundary' entries (each expanded in place). 'boundary' on a closed mesh throws
-   * category 'topology'.
+   * Default 'boundary': every vertex of the longest boundary loop (in order); 'all-boundaries': every
+   * loop's, longest loop first. An array may mix surface points and those names (each expanded in
+   * place). Either name on a closed mesh throws category 'topology' ("name the targets").
    */
-  targets?: 'boundary' | (SurfacePoint | 'boundary')[];
+  targets?: TargetName | (SurfacePoint | TargetName)[];
   /** Return the points of each path (default true). */
   points?: boolean;
   /** Called with ('trace', fraction) while tracing; return false to cancel (throws 'cancelled'). */

@@ -114,9 +114,11 @@ export class Mesh {
 
   /**
    * Straightest paths from one source to many targets (shared setup). targets: 'boundary' (every
-   * vertex of the longest boundary loop) or an array of surface points and 'boundary' entries.
-   * Returns per-path lengths, statuses, faces crossed, in-plane directions, and one packed
-   * Float32Array of points with offsets (path i is points offsets[i]..offsets[i+1], 3 floats each).
+   * vertex of the longest boundary loop), 'all-boundaries' (every loop's) or an array of surface
+   * points and such entries. Returns per-path lengths, statuses, faces crossed, in-plane directions,
+   * and one packed Float32Array of points with offsets (path i is points offsets[i]..offsets[i+1], 3
+   * floats each). On a closed mesh both ways round the section are walked: the shorter arc is the
+   * path, `backward` says which way it leaves, otherArcLengths/otherPoints/otherOffsets the other arc.
    */
   straightestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
     const handle = this.#live();

@@ -59,18 +59,25 @@ Expected<std::optional<SurfacePoint>> sourceFrom(const val& p, const std::string
 }
 
 Expected<std::vector<TargetSpec>> targetsFrom(const val& targets) {
-  const auto isBoundary = [](const val& v) { return v.isString() && v.as<std::string>() == "boundary"; };
-  if (isBoundary(targets)) return std::vector<TargetSpec>{BoundaryVertices{}};
+  // 'boundary' (the longest loop's vertices) or 'all-boundaries' (every loop's), else nullopt.
+  const auto named = [](const val& v) -> std::optional<TargetSpec> {
+    if (!v.isString()) return std::nullopt;
+    const std::string name = v.as<std::string>();
+    if (name == "boundary") return TargetSpec{BoundaryVertices{}};
+    if (name == "all-boundaries") return TargetSpec{AllBoundaryVertices{}};
+    return std::nullopt;
+  };
+  if (auto spec = named(targets)) return std::vector<TargetSpec>{*spec};
   if (!targets.isArray())
     return Error{ErrorCode::InvalidArgument,
-                 "targets must be 'boundary' or an array of surface points (and 'boundary' entries)"};
+                 "targets must be 'boundary', 'all-boundaries' or an array of surface points (and such entries)"};
   std::vector<TargetSpec> specs;
   const auto n = targets["length"].as<unsigned>();
   specs.reserve(n);
   for (unsigned i = 0; i < n; ++i) {
     const val t = targets[i];
-    if (isBoundary(t)) {
-      specs.emplace_back(BoundaryVertices{});
+    if (auto spec = named(t)) {
+      specs.push_back(*spec);
       continue;
     }
     auto point = pointFrom(t);

@@ -95,6 +95,7 @@ class JsWriter {
       case Bulk::Float64: out_.set(name, typedArray<double>("Float64Array", data, n)); break;
       case Bulk::Int32: out_.set(name, typedArray<int32_t>("Int32Array", data, n)); break;
       case Bulk::Uint32: out_.set(name, typedArray<uint32_t>("Uint32Array", data, n)); break;
+      case Bulk::Uint8: out_.set(name, typedArray<uint8_t>("Uint8Array", data, n)); break;
     }
   }
   const val& result() const { return out_; }

@@ -13,7 +13,8 @@
 //
 // After a mesh loads, the page asks the worker for the straightest paths from the default source to
 // every boundary vertex and draws them (the paper's Figure 1 view); clicking the mesh moves the
-// source, shift-clicking adds a destination. Once the paths are drawn, the parameterization view
+// source, shift-clicking adds a destination. A closed surface has no boundary: nothing is traced
+// until its first click, which picks a destination; both ways round each section are drawn. Once the paths are drawn, the parameterization view
 // flattens the mesh.
 
 import { createHeatDistance } from './heat-distance.js';
@@ -38,7 +39,8 @@ const paths = createPathView(view, { onClear: () => picking?.hide() });
 picking = createPicking({
   view, surface, paths, tooltip: $('path-tooltip'),
   onPick: (picked, add) => {
-    if (add) pathRequest.added.push(picked);
+    // A closed surface has no boundary destinations: its first click picks a destination.
+    if (add || (closedMesh() && pathRequest.added.length === 0)) pathRequest.added.push(picked);
     else pathRequest.source = picked.point;
     tracePaths();
   },
@@ -122,6 +124,10 @@ async function tracePaths() {
       source: reply.source,
       traceMs: reply.timings.trace,
       plain,
+      otherArcs: paths.shown.otherArcs,
+      arcs: reply.count <= 16 ? Array.from(reply.lengths, (length, i) => ({
+        status: reply.statuses[i], length, other: reply.otherArcLengths[i], backward: reply.backward[i] === 1,
+      })) : null,
     };
     stage = 'compute the heat distances';
     if ($('heat-toggle').checked) await heat.show();

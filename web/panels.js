@@ -106,8 +106,18 @@ export function showPathStats(reply, request, drawn) {
   $('stats-traces').textContent = String(hooks.traces);
 
   const notes = [];
-  if (request.closed) {
-    notes.push('Closed mesh: no boundary, so no paths by default. Shift+click the mesh to add destinations.');
+  if (request.closed && count === 0) {
+    notes.push('Closed surface: click a destination.');
+  } else if (request.closed) {
+    // Each section through the source is a closed curve: the shorter arc is the path, the other dimmed.
+    notes.push('Closed surface: each path is the shorter way round its section through the source; ' +
+      'the other way is dimmed. Click to move the source, shift+click to add destinations.');
+    for (let i = 0; i < Math.min(count, 3); i++) {
+      const other = reply.otherArcLengths[i];
+      notes.push(reply.statuses[i] !== 'reached' ? `Path ${i + 1}: ${reply.statuses[i]}.`
+        : `Path ${i + 1}: ${formatNumber(reply.lengths[i])} ${reply.backward[i] ? 'backward' : 'forward'}` +
+          (Number.isFinite(other) ? `, the other way round ${formatNumber(other)}.` : '.'));
+    }
   } else if (count === 0) {
     notes.push('No destinations: tick “Boundary destinations” or shift+click the mesh to add some.');
   }

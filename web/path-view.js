@@ -1,6 +1,7 @@
 // The straightest paths in the 3D view: the path lines (fat and pickable, or plain for many paths),
-// the source and added-destination markers, the base plane disc at the source, and the hovered
-// path's highlight with its cutting plane. It draws the worker's 'paths' reply as it is.
+// on a closed surface the other arc of each section (dimmed), the source and added-destination
+// markers, the base plane disc at the source, and the hovered path's highlight with its cutting
+// plane. It draws the worker's 'paths' reply as it is.
 
 import * as THREE from 'three';
 import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
@@ -10,6 +11,7 @@ import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 
 const PATH_COLOR = 0x1f4fb8; // reached paths
+const OTHER_ARC_COLOR = 0x7f9bd6; // closed surfaces: the other, longer way round the section (dimmed)
 const FAILED_COLOR = 0xe5484d; // partial paths of failed traces (dashed)
 const HIGHLIGHT_COLOR = 0x19d3f0; // the hovered path and its cutting plane
 const FAILED_HIGHLIGHT_COLOR = 0xff9a8f; // the hovered path when its trace failed
@@ -31,6 +33,9 @@ const reachedMaterial = new LineMaterial({
   color: PATH_COLOR, linewidth: 1, transparent: true, opacity: 0.75,
 });
 const failedMaterial = new LineMaterial({ color: FAILED_COLOR, linewidth: 1.8, dashed: true });
+const otherArcMaterial = new LineMaterial({
+  color: OTHER_ARC_COLOR, linewidth: 1.5, transparent: true, opacity: 0.55, dashed: true,
+});
 const highlightMaterial = new LineMaterial({ color: HIGHLIGHT_COLOR, linewidth: 4.5 });
 const sourceMaterial = new THREE.MeshStandardMaterial({
   color: SOURCE_COLOR, emissive: 0x555555, roughness: 0.4,
@@ -225,8 +230,8 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     const failed = [];
     reply.statuses.forEach((status, i) => (status === 'reached' ? reached : failed).push(i));
 
-    failedMaterial.dashSize = 0.012 * scale;
-    failedMaterial.gapSize = 0.008 * scale;
+    failedMaterial.dashSize = otherArcMaterial.dashSize = 0.012 * scale;
+    failedMaterial.gapSize = otherArcMaterial.gapSize = 0.008 * scale;
     let lines;
     let stride = 1;
     const plain = segmentCount(reply, reply.statuses.keys()) > FAT_LINE_SEGMENTS;
@@ -236,6 +241,13 @@ export function createPathView(view, { onClear = () => {} } = {}) {
       lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)]
         .filter(Boolean);
     }
+    // Closed surfaces: the other arc of every section that closes through its destination (not with
+    // plain lines: so many paths come only from boundaries, which a closed surface has none of).
+    const withOtherArc = [];
+    reply.otherArcLengths?.forEach((length, i) => Number.isFinite(length) && withOtherArc.push(i));
+    const otherArcs = plain || !withOtherArc.length ? null
+      : pathLines({ points: reply.otherPoints, offsets: reply.otherOffsets }, withOtherArc, otherArcMaterial);
+    if (otherArcs) group.add(otherArcs);
     const basePlane = basePlaneDisc(source, normal, 0.42 * scale);
     basePlane.visible = baseVisible;
     const highlight = new Line2(new LineGeometry(), highlightMaterial);
@@ -247,7 +259,10 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     // Plain lines have no picking data; so many paths lie on a large mesh whose surface would be
     // ray cast on every pointer move.
     const pickable = plain ? [] : lines;
-    shown = { reply, source, normal, lines: pickable, plain, stride, basePlane, highlight, cutPlane, hovered: -1 };
+    shown = {
+      reply, source, normal, lines: pickable, plain, stride, basePlane, highlight, cutPlane, hovered: -1,
+      otherArcs: otherArcs ? withOtherArc.length : 0,
+    };
   }
 
   /**
@@ -286,6 +301,10 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     if (Number.isFinite(target[0])) extend(new THREE.Vector3(...target));
     const p = new THREE.Vector3();
     for (let j = 0; j < path.length; j += 3) extend(p.set(path[j], path[j + 1], path[j + 2]));
+    if (reply.otherOffsets) { // the quad covers the whole section on a closed surface
+      const other = reply.otherPoints.subarray(3 * reply.otherOffsets[i], 3 * reply.otherOffsets[i + 1]);
+      for (let j = 0; j < other.length; j += 3) extend(p.set(other[j], other[j + 1], other[j + 2]));
+    }
     const margin = 0.04 * view.scale;
     uRange[0] -= margin; uRange[1] += margin;
     vRange[0] -= margin; vRange[1] += margin;
@@ -296,7 +315,10 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     show,
     clear,
     highlight,
-    /** The reply on display and what was drawn for it: { reply, lines (pickable), plain, stride, … }, or null. */
+    /**
+     * The reply on display and what was drawn for it: { reply, lines (pickable), plain, stride,
+     * otherArcs (the number of other arcs drawn), … }, or null.
+     */
     get shown() {
       return shown;
     },

@@ -5,6 +5,12 @@
 import * as THREE from 'three';
 import { describePoint, formatNumber } from './panels.js';
 
+// How the tooltip names a trace status (the core's names, st.traceStatuses); any other: "(partial path)".
+const STATUS_TEXT = {
+  reached: 'reached',
+  other_component: 'other_component: the section through the source misses it (drawn: the loop back)',
+};
+
 /** view: scene.js; surface: surface-view.js; paths: path-view.js; tooltip: the tooltip element. */
 export function createPicking({ view, surface, paths, tooltip, onPick }) {
   const { canvas, viewport, camera } = view;
@@ -67,10 +73,14 @@ export function createPicking({ view, surface, paths, tooltip, onPick }) {
     title.textContent = `Path ${i + 1} of ${reply.count} → ${describePoint(reply.targets[i])}`;
     const state = document.createElement('span');
     state.className = status === 'reached' ? 'reached' : 'failed';
-    state.textContent = status === 'reached' ? 'reached' : `${status} (partial path)`;
+    state.textContent = STATUS_TEXT[status] ?? `${status} (partial path)`;
     const details = document.createElement('span');
-    details.textContent =
-      `length ${formatNumber(reply.lengths[i])} · ${reply.facesCrossed[i]} faces crossed`;
+    // Closed surfaces: which way round the section the path leaves, and the other way's length.
+    const other = reply.otherArcLengths?.[i];
+    const arcs = Number.isFinite(other)
+      ? ` · ${reply.backward[i] ? 'backward' : 'forward'}, the other way round ${formatNumber(other)}`
+      : '';
+    details.textContent = `length ${formatNumber(reply.lengths[i])}${arcs} · ${reply.facesCrossed[i]} faces crossed`;
     tooltip.append(title, state, details);
     const rect = viewport.getBoundingClientRect();
     const x = event.clientX - rect.left;

@@ -12,7 +12,9 @@ export const hooks = {
   renders: 0, // frames rendered
   background: null, // the 3D view's clear colour as [r, g, b] bytes
   traces: 0, // completed path traces
-  paths: null, // { count, reached, source, traceMs, plain } of the paths on display
+  // { count, reached, source, traceMs, plain, otherArcs (other arcs drawn: closed surfaces), arcs: up
+  // to 16 paths' { status, length, other (NaN when none), backward } } of the paths on display
+  paths: null,
   cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
   // The parameterization view: { boundary, weights, l2, linf, bijective, flipped, overlaps, init,
   // iterations } after each parameterization (init and iterations: null unless the boundary is free) (null before and after a failure), { message, category } of the last failure,

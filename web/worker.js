@@ -26,8 +26,13 @@
 //                           count, reached, statuses, lengths: Float64Array,
 //                           facesCrossed: Uint32Array, points: Float32Array, offsets: Uint32Array,
 //                           directions: Float64Array (per path the unit in-plane direction of its
-//                           cutting plane, NaN × 3 where there is none), summary (the core's:
-//                           { paths, reached, failures, meanLength, maxLength, facesCrossed }),
+//                           cutting plane, NaN × 3 where there is none), backward: Uint8Array (1
+//                           where the path leaves the source away from its destination),
+//                           otherArcLengths: Float64Array (closed surfaces: the other way round the
+//                           section, NaN where there is none), otherPoints: Float32Array and
+//                           otherOffsets: Uint32Array (those arcs, packed like points), summary (the
+//                           core's: { paths, reached, failures, meanLength, maxLength, facesCrossed,
+//                           otherArcs }),
 //                           timings: { prepare, trace }, timeMs }  (buffers transferred)
 //   → { id, type: 'distances', source }                      ← { id, type: 'distances', source,
 //        distances: Float32Array (heat method, one per vertex), max, timeMs }
@@ -293,11 +298,16 @@ const handlers = {
       points: owned(result.points),
       offsets: owned(result.offsets),
       directions: owned(result.directions),
+      backward: owned(result.backward),
+      otherArcLengths: owned(result.otherArcLengths),
+      otherPoints: owned(result.otherPoints),
+      otherOffsets: owned(result.otherOffsets),
       summary: result.summary,
       timings: result.timings,
       timeMs: performance.now() - start,
     };
-    const transfer = [reply.targetPositions, reply.lengths, reply.facesCrossed, reply.points, reply.offsets, reply.directions];
+    const transfer = [reply.targetPositions, reply.lengths, reply.facesCrossed, reply.points, reply.offsets, reply.directions,
+      reply.backward, reply.otherArcLengths, reply.otherPoints, reply.otherOffsets];
     return { reply, transfer: transfer.map((a) => a.buffer) };
   },
 

@@ -41,9 +41,13 @@ std::string usage() {
          "                   characteristic, components, degenerate and reoriented faces, bbox, problems)\n"
          "  paths MESH       straightest paths by cutting planes from a source to destinations\n"
          "      --source auto|N        source vertex (default auto: the interior vertex farthest from the boundary)\n"
-         "      --to boundary|N,N,...  destinations (default boundary: every vertex of the longest boundary loop;\n"
-         "                             'boundary' may also be one item of the list)\n"
-         "      --points               include each path's points\n"
+         "      --to boundary|all-boundaries|N,N,...\n"
+         "                             destinations (default boundary: every vertex of the longest boundary loop;\n"
+         "                             all-boundaries: every loop's, longest first; either may be one item of the\n"
+         "                             list; a closed mesh needs vertices: both ways round the section are walked\n"
+         "                             and the shorter arc returned, with direction and other_arc_length)\n"
+         "      --points               include each path's points (and other_points, the other arc, where there is "
+         "one)\n"
          "  param MESH       flatten a disk: boundary map + convex-combination interior, with texture stretch\n"
          "      --source auto|N        center for the measured boundary (default auto)\n"
          "      --boundary " +
@@ -207,7 +211,7 @@ Expected<std::optional<SurfacePoint>> sourceArgument(const TriMesh& mesh, const 
   return std::optional<SurfacePoint>(SurfacePoint::vertex(v.value()));
 }
 
-/// --to: comma-separated vertices and "boundary" items.
+/// --to: comma-separated vertices, "boundary" and "all-boundaries" items.
 Expected<std::vector<TargetSpec>> targetArguments(const TriMesh& mesh, const std::string& spec) {
   std::vector<TargetSpec> targets;
   std::stringstream list(spec);
@@ -217,11 +221,16 @@ Expected<std::vector<TargetSpec>> targetArguments(const TriMesh& mesh, const std
       targets.emplace_back(BoundaryVertices{});
       continue;
     }
+    if (item == "all-boundaries") {
+      targets.emplace_back(AllBoundaryVertices{});
+      continue;
+    }
     auto v = parseVertex(mesh, item, "--to");
     if (!v) return v.error();
     targets.emplace_back(SurfacePoint::vertex(v.value()));
   }
-  if (targets.empty()) return Error{ErrorCode::InvalidArgument, "--to needs 'boundary' or a list of vertices"};
+  if (targets.empty())
+    return Error{ErrorCode::InvalidArgument, "--to needs 'boundary', 'all-boundaries' or a list of vertices"};
   return targets;
 }
 
@@ -246,11 +255,18 @@ int runPaths(const Options& o, const TriMesh& mesh, double loadMs) {
     json p{{"target", cli::pointJson(batch.targets[i])},
            {"status", traceStatusName(batch.status[i])},
            {"length", batch.length[i]},
-           {"faces_crossed", batch.facesCrossed[i]}};
+           {"faces_crossed", batch.facesCrossed[i]},
+           {"direction", batch.reversed[i] ? "backward" : "forward"},
+           {"other_arc_length", batch.otherArcLength[i]}};  // NaN (no other arc) is written as null
     if (o.points) {
-      json pts = json::array();
-      for (int64_t k = batch.offsets[i]; k < batch.offsets[i + 1]; ++k) pts.push_back(cli::vec3Json(batch.points[k]));
-      p["points"] = std::move(pts);
+      auto polyline = [&](const std::vector<Vec3>& points, int64_t begin, int64_t end) {
+        json pts = json::array();
+        for (int64_t k = begin; k < end; ++k) pts.push_back(cli::vec3Json(points[k]));
+        return pts;
+      };
+      p["points"] = polyline(batch.points, batch.offsets[i], batch.offsets[i + 1]);
+      if (batch.otherOffsets[i + 1] > batch.otherOffsets[i])
+        p["other_points"] = polyline(batch.otherPoints, batch.otherOffsets[i], batch.otherOffsets[i + 1]);
     }
     paths.push_back(std::move(p));
   }

@@ -29,7 +29,7 @@ BasePlane basePlane(const TriMesh& mesh, const SurfacePoint& source) {
   if (mesh.boundaryLoops().empty()) {
     base.normal = areaWeightedNormal(mesh, source);
     base.fallback = true;
-    base.note = "closed mesh: area-weighted normal at the source";
+    base.note = "closed mesh (no boundary loop for the virtual faces): area-weighted normal at the source used";
     return base;
   }
   const auto& loop = mesh.boundaryLoops()[0];

@@ -54,6 +54,7 @@ struct StraightestPathTracer::Impl {
   struct Walk;
   void walk(const SurfacePoint& destination, const Vec3& direction, bool forwardSide, StraightestPath& out);
   double signedDistance(int32_t v) const;
+  void keepAsOtherArc(const StraightestPath& other);  // result_'s other arc: `other`, which also reached D
 
   /// A few faces (those around a point), tested per step without touching per-face memory: most
   /// faces fail the index-range check; the rest are compared one by one (or by binary search).
@@ -78,6 +79,7 @@ struct StraightestPathTracer::Impl {
   double onPlaneTolerance_ = 0;
   double meanEdge_ = 1;
   int64_t maxSteps_ = 0;
+  bool closed_ = false;  // no boundary loop: both directions are walked and the shorter arc returned
   std::vector<int32_t> sourceFaces_;
   std::vector<int32_t> targetFaces_;
   FaceSet sourceSet_, targetSet_;
@@ -117,7 +119,7 @@ struct StraightestPathTracer::Impl::Walk {
   }
 
   /// Accounts for the segment P→Q in face f1 (and f2 along an edge). Returns true when the walk ends
-  /// inside it: at D (reached) or back at S (returned to source).
+  /// inside it: at D (reached) or back at S (D is on another component of the section).
   STRAIGHTEST_INLINE bool segment(const Vec3& P, const Vec3& Q, int32_t f1, int32_t f2, bool first) {
     ++out.facesCrossed;
     if ((tr.isTargetFace(f1) || tr.isTargetFace(f2)) && onSegment(D, P, Q)) {
@@ -343,6 +345,7 @@ StraightestPathTracer::Impl::Impl(const TriMesh& mesh, const SurfacePoint& sourc
   base_ = basePlane(mesh, source_);
   meanEdge_ = mesh.meanEdgeLength();
   onPlaneTolerance_ = kOnPlaneRel * meanEdge_;
+  closed_ = mesh.boundaryLoops().empty();
   maxSteps_ = options.maxSteps > 0 ? options.maxSteps
                                    : 2 * static_cast<int64_t>(mesh.numFaces()) + mesh.numVertices() + 16;
   incidentFaces(mesh, source_, sourceFaces_);
@@ -367,8 +370,10 @@ void StraightestPathTracer::Impl::walk(const SurfacePoint& destination, const Ve
   out.length = 0;
   out.facesCrossed = 0;
   out.reversed = !forwardSide;
+  out.otherArcLength = std::numeric_limits<double>::quiet_NaN();
   out.points.clear();
   out.positions.clear();
+  out.otherPositions.clear();
   if (++epoch_ == 0) {  // wrapped around: clear the stamps once every 2^32 walks
     std::fill(vertexStamp_.begin(), vertexStamp_.end(), 0);
     epoch_ = 1;
@@ -390,8 +395,10 @@ const StraightestPath& StraightestPathTracer::Impl::trace(const SurfacePoint& de
     r.length = 0;
     r.facesCrossed = 0;
     r.reversed = false;
+    r.otherArcLength = std::numeric_limits<double>::quiet_NaN();
     r.points.clear();
     r.positions.clear();
+    r.otherPositions.clear();
     if (options_.keepPoints) {
       r.points.push_back(source_);
       r.positions.push_back(sourcePosition_);
@@ -402,6 +409,7 @@ const StraightestPath& StraightestPathTracer::Impl::trace(const SurfacePoint& de
   // Source and destination in one face: the section of that face runs straight from S to D. (Also the
   // robust answer when D is so close to S that the direction D − S is dominated by rounding.)
   incidentFaces(mesh_, destination, targetFaces_);
+  const auto plane = cuttingPlane(base_, D);
   for (int32_t f : targetFaces_)
     if (isSourceFace(f)) {
       singlePoint(TraceStatus::Reached);
@@ -411,19 +419,43 @@ const StraightestPath& StraightestPathTracer::Impl::trace(const SurfacePoint& de
         r.points.push_back(destination);
         r.positions.push_back(D);
       }
+      // On a closed surface the section also closes the long way round: walk it from S away from D.
+      if (closed_ && plane) {
+        plane_ = *plane;
+        targetSet_.assign(targetFaces_);
+        walk(destination, -*inPlaneDirection(base_, D), false, second_);
+        if (second_.status == TraceStatus::Reached) keepAsOtherArc(second_);
+      }
       return r;
     }
-  const auto plane = cuttingPlane(base_, D);
   if (!plane) return singlePoint(TraceStatus::DegeneratePlane);
   plane_ = *plane;
   targetSet_.assign(targetFaces_);
   const Vec3 t = *inPlaneDirection(base_, D);
   walk(destination, t, true, r);
+  if (closed_) {
+    walk(destination, -t, false, second_);
+    const bool forward = r.status == TraceStatus::Reached, backward = second_.status == TraceStatus::Reached;
+    if (forward && backward) {
+      if (second_.length < result_.length) std::swap(result_, second_);
+      keepAsOtherArc(second_);
+    } else if (backward ||
+               (!forward && r.status != TraceStatus::OtherComponent && second_.status == TraceStatus::OtherComponent)) {
+      // The walk that came back to S is the more precise diagnosis than a loop or a step limit.
+      std::swap(result_, second_);
+    }
+    return result_;
+  }
   if (r.status != TraceStatus::Reached) {
     walk(destination, -t, false, second_);
     if (second_.status == TraceStatus::Reached) std::swap(result_, second_);
   }
   return result_;
+}
+
+void StraightestPathTracer::Impl::keepAsOtherArc(const StraightestPath& other) {
+  result_.otherArcLength = other.length;
+  result_.otherPositions.assign(other.positions.begin(), other.positions.end());  // empty unless keepPoints
 }
 
 std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
@@ -436,11 +468,16 @@ std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
 Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::vector<TargetSpec>& specs) {
   std::vector<SurfacePoint> targets;
   for (size_t i = 0; i < specs.size(); ++i) {
-    if (std::holds_alternative<BoundaryVertices>(specs[i])) {
-      const std::vector<SurfacePoint> boundary = boundaryTargets(mesh);
-      if (boundary.empty())
-        return Error{ErrorCode::Topology, "targets 'boundary': the mesh is closed (no boundary loop)"};
-      targets.insert(targets.end(), boundary.begin(), boundary.end());
+    const bool one = std::holds_alternative<BoundaryVertices>(specs[i]);
+    if (one || std::holds_alternative<AllBoundaryVertices>(specs[i])) {
+      const char* name = one ? "boundary" : "all-boundaries";
+      if (mesh.boundaryLoops().empty())
+        return Error{ErrorCode::Topology,
+                     std::string("targets '") + name + "': the mesh is closed (no boundary loop): name the targets"};
+      for (const auto& loop : mesh.boundaryLoops()) {  // longest first
+        for (int32_t v : loop) targets.push_back(SurfacePoint::vertex(v));
+        if (one) break;
+      }
       continue;
     }
     auto p = validateSurfacePoint(mesh, std::get<SurfacePoint>(specs[i]));
@@ -459,6 +496,7 @@ PathSummary summarize(const PathBatch& batch) {
     ++s.byStatus[static_cast<size_t>(batch.status[i])];
     s.facesCrossed += batch.facesCrossed[i];
     s.maxFacesCrossed = std::max(s.maxFacesCrossed, batch.facesCrossed[i]);
+    if (!std::isnan(batch.otherArcLength[i])) ++s.otherArcs;
     if (batch.status[i] != TraceStatus::Reached) continue;
     ++s.reached;
     sum += batch.length[i];
@@ -483,9 +521,12 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
   batch.length.reserve(n);
   batch.facesCrossed.reserve(n);
   batch.reversed.reserve(n);
+  batch.otherArcLength.reserve(n);
   batch.directions.reserve(n);
   batch.offsets.reserve(n + 1);
   batch.offsets.push_back(0);
+  batch.otherOffsets.reserve(n + 1);
+  batch.otherOffsets.push_back(0);
   record(options.timings, "prepare", time.lap());
   const size_t step = std::max<size_t>(1, n / 100);
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -497,12 +538,15 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
     batch.length.push_back(path.length);
     batch.facesCrossed.push_back(path.facesCrossed);
     batch.reversed.push_back(path.reversed);
+    batch.otherArcLength.push_back(path.otherArcLength);
     const Vec3 D = position(mesh, batch.targets[i]);
     batch.targetPositions.push_back(D);
     const auto direction = inPlaneDirection(batch.base, D);
     batch.directions.push_back(direction ? *direction : Vec3{nan, nan, nan});
     batch.points.insert(batch.points.end(), path.positions.begin(), path.positions.end());
     batch.offsets.push_back(static_cast<int64_t>(batch.points.size()));
+    batch.otherPoints.insert(batch.otherPoints.end(), path.otherPositions.begin(), path.otherPositions.end());
+    batch.otherOffsets.push_back(static_cast<int64_t>(batch.otherPoints.size()));
   }
   record(options.timings, "trace", time.lap());
   report(progress, "trace", 1.0);

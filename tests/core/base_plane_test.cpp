@@ -90,6 +90,7 @@ TEST(BasePlane, ClosedMeshUsesTheAreaWeightedNormalAndReportsTheFallback) {
   const BasePlane base = basePlane(mesh, SurfacePoint::vertex(3));
   EXPECT_TRUE(base.fallback);
   EXPECT_NE(base.note.find("closed"), std::string::npos) << base.note;
+  EXPECT_NE(base.note.find("area-weighted normal"), std::string::npos) << base.note;  // says what was used
   EXPECT_NEAR(dot(base.normal, mesh.position(3)), 1.0, 1e-2);
 }
 

@@ -1,6 +1,8 @@
 // Batch targets and what a batch reports: 'boundary' expanded in the core, each path's in-plane
 // direction (the cutting plane the page draws), the summary, and cancellation as an error.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -28,10 +30,45 @@ TEST(ResolveTargets, ExpandsBoundaryEntriesInPlaceAndNamesTheBadTarget) {
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().message.rfind("target 1: ", 0), 0u) << bad.error().message;
 
-  const auto closed = resolveTargets(testing::icosphere(1), {BoundaryVertices{}});
-  ASSERT_FALSE(closed.ok());
-  EXPECT_EQ(closed.error().code, ErrorCode::Topology);
-  EXPECT_NE(closed.error().message.find("closed"), std::string::npos);
+  for (const TargetSpec& spec : {TargetSpec{BoundaryVertices{}}, TargetSpec{AllBoundaryVertices{}}}) {
+    const auto closed = resolveTargets(testing::icosphere(1), {SurfacePoint::vertex(2), spec});
+    ASSERT_FALSE(closed.ok());
+    EXPECT_EQ(closed.error().code, ErrorCode::Topology);
+    EXPECT_NE(closed.error().message.find("closed"), std::string::npos) << closed.error().message;
+    EXPECT_NE(closed.error().message.find("name the targets"), std::string::npos) << closed.error().message;
+  }
+}
+
+TEST(ResolveTargets, AllBoundariesGivesEveryLoopsVerticesInOrderLongestLoopFirst) {
+  // An 8 × 8-cell grid with a 1-cell hole (4 boundary vertices) and a 2-cell hole (6): three loops.
+  const TriMesh mesh = testing::gridWithout({{2, 2}, {5, 4}, {5, 5}});
+  ASSERT_EQ(mesh.boundaryLoops().size(), 3u);
+  const auto targets = resolveTargets(mesh, {AllBoundaryVertices{}, SurfacePoint::vertex(40)}).value();
+  std::vector<int32_t> expected;
+  size_t previous = std::numeric_limits<size_t>::max();
+  for (const auto& loop : mesh.boundaryLoops()) {
+    EXPECT_LE(loop.size(), previous);  // longest first
+    previous = loop.size();
+    expected.insert(expected.end(), loop.begin(), loop.end());
+  }
+  EXPECT_EQ(mesh.boundaryLoops()[0].size(), 32u);  // the outer square
+  EXPECT_EQ(mesh.boundaryLoops()[1].size(), 6u);
+  EXPECT_EQ(mesh.boundaryLoops()[2].size(), 4u);
+  ASSERT_EQ(targets.size(), expected.size() + 1);
+  std::vector<int32_t> boundaryVertices;
+  for (int32_t v = 0; v < mesh.numVertices(); ++v)
+    if (mesh.isBoundaryVertex(v)) boundaryVertices.push_back(v);
+  std::vector<int32_t> got;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(targets[i].kind, SurfacePoint::Kind::Vertex);
+    EXPECT_EQ(targets[i].index, expected[i]);
+    got.push_back(targets[i].index);
+  }
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, boundaryVertices);  // every boundary vertex exactly once
+  EXPECT_EQ(targets.back().index, 40);
+  // 'boundary' is the first loop alone.
+  EXPECT_EQ(resolveTargets(mesh, {BoundaryVertices{}}).value().size(), 32u);
 }
 
 TEST(TraceStraightestPaths, AClosedMeshWithExplicitTargetsReportsItsBaseNormalFallback) {
@@ -42,6 +79,7 @@ TEST(TraceStraightestPaths, AClosedMeshWithExplicitTargetsReportsItsBaseNormalFa
                               .value();
   EXPECT_TRUE(batch.base.fallback);
   EXPECT_NE(batch.base.note.find("closed"), std::string::npos) << batch.base.note;
+  EXPECT_NE(batch.base.note.find("area-weighted normal"), std::string::npos) << batch.base.note;
   EXPECT_EQ(batch.status.size(), 2u);
 }
 

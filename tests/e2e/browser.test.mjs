@@ -9,6 +9,7 @@
 // build (wasm/dist/) and `npm install` (three, playwright-core).
 
 import assert from 'node:assert/strict';
+import { readFile } from 'node:fs/promises';
 import { describe } from 'node:test';
 import {
   BIG_TEST_TIMEOUT_MS, BIG_WAIT_TIMEOUT_MS, counted, expectReady, pageTest, rawGet, settled, streamText, useBrowser,
@@ -252,6 +253,38 @@ describe('straightest paths', () => {
     assert((await page.textContent('#stats-paths')).trim() === '0', 'stats panel does not show 0 paths');
     assert(await page.isVisible('#stats-note'), 'no note for the closed mesh');
     assert(/closed/i.test(await page.textContent('#stats-note')), 'the note does not say the mesh is closed');
+  });
+
+  pageTest('on a closed sphere two clicks give a path and the other way round, both lengths shown', {
+    ready: 'window.__straightest.paths',
+  }, async ({ page }) => {
+    const icosphere = await readFile(new URL('../data/good/icosphere.obj', import.meta.url));
+    await page.setInputFiles('#file-input', { name: 'icosphere.obj', mimeType: 'text/plain', buffer: icosphere });
+    await expectReady(page, 'window.__straightest.lastInfo.vertices === 42 && window.__straightest.paths.count === 0 ' +
+      '&& !window.__straightest.progress.busy');
+    assert(/closed surface: click a destination/i.test(await page.textContent('#stats-note')),
+      `the note does not ask for a destination: '${await page.textContent('#stats-note')}'`);
+    assert(await page.isHidden('#error-panel'), 'a closed mesh shows an error for paths');
+    const box = await page.locator('#view-canvas').boundingBox();
+    // The first click picks the destination (from the default source), the second moves the source.
+    for (const [fx, fy] of [[0.5, 0.5], [0.56, 0.42]]) {
+      const traces = await page.evaluate(() => window.__straightest.traces);
+      await page.mouse.click(box.x + box.width * fx, box.y + box.height * fy);
+      await expectReady(page, `window.__straightest.traces > ${traces} && !window.__straightest.progress.busy`);
+    }
+    const paths = await page.evaluate(() => window.__straightest.paths);
+    assert(paths.count === 1 && typeof paths.source?.face === 'number', `paths after two clicks: ${JSON.stringify(paths)}`);
+    const [arc] = paths.arcs;
+    assert(arc.status === 'reached', `the path is ${arc.status}`);
+    assert(paths.otherArcs === 1, `${paths.otherArcs} other arcs drawn, expected 1`);
+    assert(arc.length > 0 && arc.length <= arc.other, `shorter ${arc.length}, other ${arc.other}`);
+    assert(arc.length + arc.other < 2 * Math.PI, 'both arcs make up a section inscribed in the unit sphere');
+    const note = await page.textContent('#stats-note');
+    const shown = /Path 1: ([\d.]*\d) (forward|backward), the other way round ([\d.]*\d)/.exec(note);
+    assert(shown, `the panel does not show both lengths and the direction: '${note}'`);
+    assert(Math.abs(Number(shown[1]) - arc.length) < 0.01 * arc.length && Math.abs(Number(shown[3]) - arc.other) < 0.01 * arc.other,
+      `the panel shows ${shown[1]} and ${shown[3]}, the paths are ${arc.length} and ${arc.other}`);
+    assert(shown[2] === (arc.backward ? 'backward' : 'forward'), `direction shown ${shown[2]}`);
   });
 });
 

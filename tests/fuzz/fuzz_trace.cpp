@@ -130,6 +130,22 @@ void checkPath(const TriMesh& m, const StraightestPathTracer& tracer, const Surf
       FUZZ_CHECK(p.length >= chord * (1 - 1e-12) - 1e-12 * diag, "reached with length %.17g below the chord %.17g",
                  p.length, chord);
   }
+  // The other arc (closed meshes only): both ways reached D, the returned one is the shorter, and the
+  // other's points run from S to D with the reported length.
+  if (!std::isnan(p.otherArcLength)) {
+    FUZZ_CHECK(m.boundaryLoops().empty(), "%s: an other arc on a mesh with a boundary", name);
+    FUZZ_CHECK(p.status == TraceStatus::Reached && p.otherArcLength >= p.length, "%s: other arc %.17g, returned %.17g",
+               name, p.otherArcLength, p.length);
+    const auto& o = p.otherPositions;
+    FUZZ_CHECK(o.size() >= 2 && norm(o.front() - S) <= 1e-12 * diag && norm(o.back() - D) <= 1e-9 * diag,
+               "%s: the other arc's %zu points do not run from S to D", name, o.size());
+    double other = 0;
+    for (size_t i = 1; i < o.size(); ++i) other += norm(o[i] - o[i - 1]);
+    FUZZ_CHECK(std::abs(other - p.otherArcLength) <= 1e-9 * (other + diag), "%s: other arc %.17g, segments %.17g", name,
+               p.otherArcLength, other);
+  } else {
+    FUZZ_CHECK(p.otherPositions.empty(), "%s: other points without an other arc", name);
+  }
   if (flatConvex && !samePoint) {
     FUZZ_CHECK(p.status == TraceStatus::Reached, "flat convex %s mesh: target not reached (%s)", meshKind, name);
     const double chord = norm(D - S);
@@ -202,7 +218,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     paths.push_back(copyOf(p));
     const StraightestPath& q = leanTracer.trace(t);
     FUZZ_CHECK(q.status == p.status && q.length == p.length && q.facesCrossed == p.facesCrossed &&
-                   q.reversed == p.reversed && q.points.empty(),
+                   q.reversed == p.reversed && q.points.empty() && q.otherPositions.empty() &&
+                   (q.otherArcLength == p.otherArcLength ||
+                    (std::isnan(q.otherArcLength) && std::isnan(p.otherArcLength))),
                "keepPoints=false changed the result (%s vs %s)", traceStatusName(q.status), traceStatusName(p.status));
     const StraightestPath& b = boundedTracer.trace(t);
     FUZZ_CHECK(static_cast<int>(b.status) < kTraceStatusCount && b.facesCrossed <= bounded.maxSteps + 1,

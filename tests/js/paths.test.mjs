@@ -6,6 +6,8 @@ import { createStraightest } from '../../wasm/index.js';
 
 const st = await createStraightest();
 const quadGrid = await readFile(new URL('../data/good/quad_grid.obj', import.meta.url));
+const icosphere = await readFile(new URL('../data/good/icosphere.obj', import.meta.url));
+const annulus = await readFile(new URL('../data/good/annulus.off', import.meta.url));
 
 test('on a flat grid every boundary path is reached at its Euclidean length', () => {
   const mesh = st.loadMesh(quadGrid, 'obj');
@@ -73,5 +75,47 @@ test('bad sources and targets are Errors with messages', () => {
   mesh.delete();
   const closed = st.loadMesh('OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n');
   assert.throws(() => closed.straightestPaths(), (e) => e.category === 'topology' && /closed/.test(e.message));
+  assert.throws(() => closed.straightestPaths({ targets: 'all-boundaries' }), /name the targets/);
   closed.delete();
+});
+
+test('on a closed sphere both arcs come back: the shorter as the path, the other with its length and points', () => {
+  const mesh = st.loadMesh(icosphere, 'obj');  // unit icosphere, 42 vertices; vertex 3 is antipodal to 0
+  const r = mesh.straightestPaths({ source: 0, targets: [30, 41, 9, 3] });
+  assert.equal(r.baseFallback, true);
+  assert.match(r.baseNote, /area-weighted normal/);
+  assert.ok(r.backward instanceof Uint8Array && r.otherArcLengths instanceof Float64Array);
+  assert.ok(r.otherPoints instanceof Float32Array && r.otherOffsets instanceof Uint32Array);
+  assert.equal(r.otherOffsets.length, r.count + 1);
+  assert.equal(r.otherPoints.length, 3 * r.otherOffsets[r.count]);
+  for (let i = 0; i < 3; ++i) {
+    assert.equal(r.statuses[i], 'reached');
+    // The section through S is a plane's, inscribed in the unit sphere: both arcs make up less than 2π.
+    assert.ok(r.lengths[i] <= r.otherArcLengths[i], `path ${i}: ${r.lengths[i]} vs ${r.otherArcLengths[i]}`);
+    assert.ok(r.lengths[i] + r.otherArcLengths[i] < 2 * Math.PI);
+    assert.ok(r.lengths[i] + r.otherArcLengths[i] > 0.9 * 2 * Math.PI);
+    assert.equal(r.backward[i], 0);  // on a sphere the shorter arc leaves toward the target
+    let polyline = 0;
+    for (let k = r.otherOffsets[i] + 1; k < r.otherOffsets[i + 1]; ++k)
+      polyline += Math.hypot(...[0, 1, 2].map((c) => r.otherPoints[3 * k + c] - r.otherPoints[3 * (k - 1) + c]));
+    assert.ok(Math.abs(polyline - r.otherArcLengths[i]) < 1e-5, 'the other points trace the other arc');
+  }
+  assert.equal(r.statuses[3], 'degenerate_plane');
+  assert.ok(Number.isNaN(r.otherArcLengths[3]));
+  assert.equal(r.otherOffsets[4], r.otherOffsets[3]);
+  assert.equal(r.summary.otherArcs, 3);
+  assert.ok(st.traceStatuses.includes('other_component'));
+  mesh.delete();
+});
+
+test("'all-boundaries' targets every loop's vertices, longest first; a disk has no other arcs", () => {
+  const mesh = st.loadMesh(annulus, 'off');
+  const loops = mesh.boundaryLoops();
+  assert.equal(loops.length, 2);
+  const r = mesh.straightestPaths({ source: 0, targets: 'all-boundaries' });
+  assert.deepEqual(r.targets.map((t) => t.vertex), [...loops[0], ...loops[1]]);
+  assert.ok(r.otherArcLengths.every(Number.isNaN));
+  assert.equal(r.otherPoints.length, 0);
+  assert.equal(r.summary.otherArcs, 0);
+  mesh.delete();
 });

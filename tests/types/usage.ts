@@ -124,10 +124,25 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const reachedAll: boolean = paths.reached === paths.count;
   const trace: number = paths.timings.prepare + paths.timings.trace;
   void [lengths, packed, offsets, facesCrossed, reachedAll, trace, paths.targetPositions, paths.sourcePosition];
+  // Closed meshes: the other arc round the section, and which way the returned one leaves the source.
+  const backward: Uint8Array = paths.backward;
+  const otherLengths: Float64Array = paths.otherArcLengths;
+  const otherPoints: Float32Array = paths.otherPoints;
+  const otherOffsets: Uint32Array = paths.otherOffsets;
+  const otherArcs: number = paths.summary.otherArcs;
+  const elsewhere: TraceStatus = 'other_component';
+  void [backward, otherLengths, otherPoints, otherOffsets, otherArcs, elsewhere];
+  mesh.straightestPaths({ targets: 'all-boundaries' });
+  mesh.straightestPaths({ targets: [0, 'all-boundaries', 'boundary'] });
+  // @ts-expect-error the other lengths are a Float64Array (NaN where there is none), not numbers or null
+  const otherList: (number | null)[] = paths.otherArcLengths;
+  // @ts-expect-error 'returned_to_source' was renamed 'other_component'
+  const returned: TraceStatus = 'returned_to_source';
+  void [otherList, returned];
   for (const status of paths.statuses) describe(status);
   // @ts-expect-error lengths are a Float64Array, not an array
   const lengthList: number[] = paths.lengths;
-  // @ts-expect-error targets are 'boundary' or a list of surface points
+  // @ts-expect-error targets are 'boundary', 'all-boundaries' or a list of surface points
   mesh.straightestPaths({ targets: 'all' });
   // @ts-expect-error a progress callback answers with a boolean (or nothing), not a string
   mesh.straightestPaths({ onProgress: () => 'stop' });

@@ -27,7 +27,7 @@
 namespace straightest {
 
 /// The element type a bulk array is handed over as.
-enum class Bulk { Float32, Float64, Int32, Uint32 };
+enum class Bulk { Float32, Float64, Int32, Uint32, Uint8 };
 
 static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Vec3) == 3 * sizeof(double),
               "bulk arrays read Vec2 and Vec3 as packed doubles");
@@ -87,9 +87,11 @@ void visitFields(const PathSummary& s, V& v) {
   v.number("maxLength", s.maxLength);
   v.count("facesCrossed", s.facesCrossed);
   v.count("maxFacesCrossed", s.maxFacesCrossed);
+  v.count("otherArcs", s.otherArcs);
 }
 
-/// A batch column by column (path i's points are points[offsets[i] .. offsets[i+1])).
+/// A batch column by column (path i's points are points[offsets[i] .. offsets[i+1]), its other arc
+/// otherPoints[otherOffsets[i] .. otherOffsets[i+1]); backward[i] = 1 when it leaves S away from D).
 template <class V>
 void visitFields(const PathBatch& b, V& v) {
   v.point("source", b.source);
@@ -105,9 +107,13 @@ void visitFields(const PathBatch& b, V& v) {
   v.textColumn("statuses", statuses);
   v.bulk("lengths", b.length.data(), n, Bulk::Float64);
   v.bulk("facesCrossed", b.facesCrossed.data(), n, Bulk::Uint32);
+  v.bulk("backward", b.reversed.data(), n, Bulk::Uint8);
+  v.bulk("otherArcLengths", b.otherArcLength.data(), n, Bulk::Float64);
   v.bulk("directions", packed(b.directions), 3 * b.directions.size(), Bulk::Float64);
   v.bulk("points", packed(b.points), 3 * b.points.size(), Bulk::Float32);
   v.bulk("offsets", b.offsets.data(), b.offsets.size(), Bulk::Uint32);
+  v.bulk("otherPoints", packed(b.otherPoints), 3 * b.otherPoints.size(), Bulk::Float32);
+  v.bulk("otherOffsets", b.otherOffsets.data(), b.otherOffsets.size(), Bulk::Uint32);
 }
 
 template <class V>

@@ -17,8 +17,10 @@
 // arc is returned (`reversed` says which way it leaves S: forward = toward t), the longer one's length
 // as `otherArcLength`. When the walk comes back to S without meeting D, D lies on another component
 // of the section (the plane cuts the surface in several closed curves): status OtherComponent, on any
-// mesh. Meshes with a boundary keep the paper's rule above (the first walk that reaches D), and report
-// otherArcLength only if the second walk ran and reached D too.
+// mesh (when neither walk reaches D on a closed mesh, a walk that came back to S is reported before a
+// loop or step limit). S and D in one face: the straight segment, and on a closed mesh the other arc
+// too. Meshes with a boundary keep the paper's rule above (the first walk that reaches D; the second
+// runs only when the first fails), so they never report an other arc and cost nothing extra.
 // Cost is output-sensitive: O(faces crossed) per destination, and the tracer's setup is O(faces around
 // S) (plus one O(V) stamp array, allocated at the first walk through a vertex); no allocation per step
 // (the point buffers are reused). Loops need no per-edge stamps: between two vertex passings the
@@ -134,6 +136,7 @@ struct PathSummary {
   double maxLength = 0;           // over reached paths
   int64_t facesCrossed = 0;       // over all paths
   int64_t maxFacesCrossed = 0;    // the longest walk, in faces (any status)
+  int64_t otherArcs = 0;          // paths that also reached D the other way round (closed meshes)
 };
 PathSummary summarize(const PathBatch& batch);
 
