@@ -34,8 +34,8 @@ struct Comparison {
 
 /// The source is resolved once (nullopt: the default source) and shared by every cell. A mesh that is
 /// not a disk is cut (or filled) by each cell's parameterize the same way (cutToDisk is deterministic),
-/// with the disk's default source; a cell that cannot be parameterized keeps its error. Progress stage "compare": the fraction of
-/// cells done; cancelling (at any point, also inside a cell) returns a Cancelled error. `free`: the
+/// with the disk's default source; a cell that cannot be parameterized keeps its error. Progress stage "compare": the
+/// fraction of cells done; cancelling (at any point, also inside a cell) returns a Cancelled error. `free`: the
 /// refinement's options for free rows.
 Expected<Comparison> compareParameterizations(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
                                               const std::vector<BoundaryKind>& boundaries,

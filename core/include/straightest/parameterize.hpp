@@ -16,10 +16,10 @@
 // that is a filled hole's centre, the real vertex farthest inside the disk. The stretch is measured on
 // the real faces only; the free boundary refines the real faces from the filled solve's map, holes free
 // (free_boundary.hpp says why that stays bijective). boundaryPolygons and compareParameterizations cut
-// the same way. Progress stage "cut" comes first (and the timing "cut", 0 for a disk). UVs are scaled into [0, 1]² by their bounding box (aspect kept); unreferenced vertices get
-// (0, 0). With convex-combination weights (all but cotan) and a fixed boundary the interior lies
-// inside the convex boundary polygon, so that box is the polygon's (unitSquareFrame):
-// boundary_polygons.hpp gives every fixed polygon in this frame without a solve. The free boundary's
+// the same way. Progress stage "cut" comes first (and the timing "cut", 0 for a disk). UVs are scaled into [0, 1]² by
+// their bounding box (aspect kept); unreferenced vertices get (0, 0). With convex-combination weights (all but cotan)
+// and a fixed boundary the interior lies inside the convex boundary polygon, so that box is the polygon's
+// (unitSquareFrame): boundary_polygons.hpp gives every fixed polygon in this frame without a solve. The free boundary's
 // polygon is the refined loop's uv (not convex), known only after the refinement.
 #pragma once
 #include <optional>
