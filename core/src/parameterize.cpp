@@ -133,7 +133,7 @@ void takeMap(Parameterization& result, SolvedMap map) {
 Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options, const Progress& progress) {
   record(options.timings, "cut", 0);  // every stage listed, in this order, whether it runs or not
   if (!requireDisk(mesh)) return parameterizeByCut(mesh, options, progress);
-  auto result = parameterizeDisk(mesh, mesh, options, progress);
+  auto result = parameterizeDisk(mesh, mesh, {}, options, progress);
   if (!result) return result;
   Parameterization& p = result.value();
   p.cornerUv.reserve(3 * static_cast<size_t>(mesh.numFaces()));
@@ -142,7 +142,14 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
   return result;
 }
 
-Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& real, const ParamOptions& options,
+std::vector<Vec2> onRealVertices(std::vector<Vec2> uv, const std::vector<int32_t>& extraOrigin) {
+  const size_t n = uv.size();
+  for (int32_t v : extraOrigin) uv.push_back(uv[v < static_cast<int32_t>(n) ? v : 0]);
+  return uv;
+}
+
+Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& real,
+                                            const std::vector<int32_t>& extraOrigin, const ParamOptions& options,
                                             const Progress& progress) {
   const Error cancelled = cancelledError("parameterization");
   Timings* timings = options.timings;
@@ -199,7 +206,7 @@ Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& 
     map.residual = solved.value();
     record(timings, "solve", stage.lap());
     if (!report(progress, "metrics", 0)) return cancelled;
-    map.metrics = textureStretch(real, map.uv);
+    map.metrics = textureStretch(real, extraOrigin.empty() ? map.uv : onRealVertices(map.uv, extraOrigin));
     record(timings, "metrics", stage.lap());
     map.kind = boundary.kind;
     map.polygon = std::move(boundary.polygon);
@@ -229,6 +236,7 @@ Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& 
     // Refined from the start in [0, 1]², exactly as refineParameterization of parameterize's own
     // result would be (the comparison refines that way): the same map either way.
     normalizeIntoUnitSquare(mesh, from.uv, from.boundaryPolygon);
+    if (!extraOrigin.empty()) from.uv = onRealVertices(std::move(from.uv), extraOrigin);
     auto refined = refineOnDisk(real, from, options.free, progress, timings);
     if (!refined) return refined.error();
     Parameterization& r = refined.value();

@@ -23,6 +23,49 @@ int cornerShift(const TriMesh& mesh, const CutDisk& c, int32_t f, int32_t d) {
   return 0;
 }
 
+/// Union–find over face corners.
+int32_t findRoot(std::vector<int32_t>& parent, int32_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+/// The real faces' corners at one disk vertex form one fan unless virtual faces separate them (a seam
+/// vertex on a filled hole's rim): every further fan gets a new vertex (numbered after the disk's,
+/// extraOrigin its disk vertex), so the real faces are a manifold.
+void splitPinchedVertices(const TriMesh& disk, const std::vector<int32_t>& realOfDisk, std::vector<Triangle>& realFaces,
+                          std::vector<int32_t>& extraOrigin) {
+  const int32_t n = static_cast<int32_t>(realFaces.size());
+  std::vector<int32_t> parent(3 * static_cast<size_t>(n));
+  for (int32_t i = 0; i < 3 * n; ++i) parent[i] = i;
+  // Corners at the same vertex of two real faces that share an edge belong to one fan.
+  for (int32_t h = 0; h < 3 * disk.numFaces(); ++h) {
+    const int32_t g = disk.twin(h);
+    if (g < h) continue;
+    const int32_t a = realOfDisk[TriMesh::face(h)], b = realOfDisk[TriMesh::face(g)];
+    if (a < 0 || b < 0) continue;
+    // h goes tail → head in face a; g goes head → tail in face b.
+    const int32_t tailA = 3 * a + h % 3, headA = 3 * a + TriMesh::next(h) % 3;
+    const int32_t headB = 3 * b + g % 3, tailB = 3 * b + TriMesh::next(g) % 3;
+    parent[findRoot(parent, tailA)] = findRoot(parent, tailB);
+    parent[findRoot(parent, headA)] = findRoot(parent, headB);
+  }
+  std::vector<int32_t> fanOf(disk.numVertices(), -1);             // the root of the fan that keeps the vertex's number
+  std::vector<int32_t> renumber(3 * static_cast<size_t>(n), -1);  // per root: its vertex
+  for (int32_t c = 0; c < 3 * n; ++c) {
+    const int32_t v = realFaces[c / 3][c % 3], root = findRoot(parent, c);
+    if (renumber[root] < 0) {
+      if (fanOf[v] < 0) {
+        fanOf[v] = root;
+        renumber[root] = v;
+      } else {
+        renumber[root] = disk.numVertices() + static_cast<int32_t>(extraOrigin.size());
+        extraOrigin.push_back(v);
+      }
+    }
+    realFaces[c / 3][c % 3] = renumber[root];
+  }
+}
+
 Error notOnDisk(const std::string& what) {
   return Error{ErrorCode::InvalidArgument,
                "the source must be a point of the parameterized surface, not on its seam: " + what};
@@ -40,10 +83,12 @@ Expected<CutDisk> makeCutDisk(const TriMesh& mesh, const Progress& progress) {
   c.copyOf.assign(mesh.numVertices(), -1);
   std::vector<Triangle> realFaces;
   realFaces.reserve(disk.numFaces());
+  std::vector<int32_t> realOfDisk(disk.numFaces(), -1);
   for (int32_t d = 0; d < disk.numFaces(); ++d) {
     const int32_t f = c.cut.faceOrigin[d];
     if (f < 0) continue;
     c.diskFaceOf[f] = d;
+    realOfDisk[d] = static_cast<int32_t>(c.realFaceDisk.size());
     c.realFaceDisk.push_back(d);
     realFaces.push_back(disk.triangle(d));
   }
@@ -56,7 +101,10 @@ Expected<CutDisk> makeCutDisk(const TriMesh& mesh, const Progress& progress) {
     }
   }
   if (realFaces.size() == static_cast<size_t>(disk.numFaces())) return c;  // nothing filled: real = disk
-  auto real = TriMesh::build(disk.positions(), std::move(realFaces));
+  splitPinchedVertices(disk, realOfDisk, realFaces, c.realExtraOrigin);
+  std::vector<Vec3> positions = disk.positions();
+  for (int32_t v : c.realExtraOrigin) positions.push_back(disk.position(v));
+  auto real = TriMesh::build(std::move(positions), std::move(realFaces));
   if (!real) return Error{ErrorCode::Internal, "the disk's real faces are not a mesh: " + real.error().message};
   c.realFaces = std::move(real).value();
   return c;
@@ -149,18 +197,20 @@ Expected<SurfacePoint> diskDefaultSource(const CutDisk& c) {
 }
 
 Parameterization mapBack(const TriMesh& mesh, const CutDisk& c, Parameterization p) {
-  const TriMesh& disk = c.cut.disk;
+  const TriMesh& real = c.real();
   p.source = pointOnMesh(mesh, c, p.source);
-  const std::vector<Vec2> diskUv = std::move(p.uv);
+  // uv per disk vertex (a fixed boundary) or per real vertex (the free one): the corners read it
+  // through the real faces, whose extra vertices (split fans) have their own uv only in the latter.
+  const bool perDiskVertex = p.uv.size() < static_cast<size_t>(real.numVertices());
+  const std::vector<Vec2> realUv = perDiskVertex ? onRealVertices(std::move(p.uv), c.realExtraOrigin) : std::move(p.uv);
   p.uv.assign(mesh.numVertices(), Vec2{0, 0});
   for (int32_t o = 0; o < mesh.numVertices(); ++o)
-    if (c.copyOf[o] >= 0) p.uv[o] = diskUv[c.copyOf[o]];
+    if (c.copyOf[o] >= 0) p.uv[o] = realUv[c.copyOf[o]];
   p.cornerUv.assign(3 * static_cast<size_t>(mesh.numFaces()), Vec2{kNaN, kNaN});
-  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
-    const int32_t d = c.diskFaceOf[f];
-    if (d < 0) continue;
+  for (size_t i = 0; i < c.realFaceDisk.size(); ++i) {
+    const int32_t d = c.realFaceDisk[i], f = c.cut.faceOrigin[d];
     const int r = cornerShift(mesh, c, f, d);
-    for (int k = 0; k < 3; ++k) p.cornerUv[3 * f + k] = diskUv[disk.triangle(d)[(k + r) % 3]];
+    for (int k = 0; k < 3; ++k) p.cornerUv[3 * f + k] = realUv[real.triangle(static_cast<int32_t>(i))[(k + r) % 3]];
   }
   for (int32_t& v : p.boundaryLoop) v = c.cut.vertexOrigin[v];
   std::vector<float> realStretch = std::move(p.metrics.faceStretch);
@@ -202,7 +252,7 @@ Expected<Parameterization> parameterizeByCut(const TriMesh& mesh, const ParamOpt
     if (!s) return s.error();
     o.source = s.value();
   }
-  auto solved = parameterizeDisk(c.cut.disk, c.real(), o, progress);
+  auto solved = parameterizeDisk(c.cut.disk, c.real(), c.realExtraOrigin, o, progress);
   if (!solved) return solved.error();
   record(options.timings, "cut", cutMs);
   record(options.timings, "total", cutMs);
@@ -219,13 +269,14 @@ Expected<Parameterization> refineByCut(const TriMesh& mesh, const Parameterizati
   if (!made) return made.error().code == ErrorCode::Cancelled ? cancelledError("parameterization") : made.error();
   const CutDisk& c = made.value();
   const TriMesh& disk = c.cut.disk;
+  const TriMesh& real = c.real();
   Parameterization onDisk = start;
-  onDisk.uv.assign(disk.numVertices(), Vec2{0, 0});
-  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
-    const int32_t d = c.diskFaceOf[f];
-    if (d < 0) continue;
+  onDisk.uv.assign(real.numVertices(), Vec2{0, 0});  // per real vertex: the start's corners
+  for (size_t i = 0; i < c.realFaceDisk.size(); ++i) {
+    const int32_t d = c.realFaceDisk[i], f = c.cut.faceOrigin[d];
     const int r = cornerShift(mesh, c, f, d);
-    for (int k = 0; k < 3; ++k) onDisk.uv[disk.triangle(d)[(k + r) % 3]] = start.cornerUv[3 * f + k];
+    for (int k = 0; k < 3; ++k)
+      onDisk.uv[real.triangle(static_cast<int32_t>(i))[(k + r) % 3]] = start.cornerUv[3 * f + k];
   }
   onDisk.boundaryLoop = disk.boundaryLoops().at(0);
   auto refined = refineOnDisk(c.real(), onDisk, options, progress, timings);

@@ -2,10 +2,13 @@
 // (disk_cut.hpp), parameterize the disk, and map the result back onto the mesh's own vertices, faces
 // and corners. Private to the core: parameterize.hpp is the public face of all of it.
 //
-// Two meshes share the disk's vertex numbers: `disk` (real and virtual faces: what the boundary maps,
-// the weights and the linear solve see, so a convex-combination map stays a disk map) and `real` (the
-// real faces only: what the stretch is measured on and what the free boundary refines, its filled
-// holes left free). For a cut without filling both are the same faces.
+// Two meshes: `disk` (real and virtual faces: what the boundary maps, the weights and the linear solve
+// see, so a convex-combination map stays a disk map) and `real` (the real faces only: what the stretch
+// is measured on and what the free boundary refines, its filled holes left free). For a cut without
+// filling both are the same mesh. `real` numbers its vertices as the disk does, plus one extra vertex
+// per further fan of real faces around a disk vertex whose real faces only meet at it (a seam vertex on
+// a filled hole's rim can have real faces on both sides of the filling): the real faces stay a manifold,
+// and the extra copy takes the uv of its disk vertex (realExtraOrigin) until the free boundary moves it.
 #pragma once
 #include <optional>
 #include <utility>
@@ -20,11 +23,12 @@ namespace straightest {
 struct CutDisk {
   explicit CutDisk(DiskCut c) : cut(std::move(c)) {}
   DiskCut cut;
-  std::optional<TriMesh> realFaces;   // the disk's real faces when some are virtual (same vertices)
-  std::vector<int32_t> realFaceDisk;  // per face of real(): its disk face
-  std::vector<int32_t> diskFaceOf;    // per mesh face: its disk face, −1 outside the parameterized component
-  std::vector<int32_t> copies;        // per mesh vertex: how many disk vertices copy it (2+ on the seam)
-  std::vector<int32_t> copyOf;        // per mesh vertex: its first disk copy, −1 outside the component
+  std::optional<TriMesh> realFaces;      // the disk's real faces when some are virtual (same vertices)
+  std::vector<int32_t> realFaceDisk;     // per face of real(): its disk face
+  std::vector<int32_t> realExtraOrigin;  // per vertex of real() past the disk's: the disk vertex it copies
+  std::vector<int32_t> diskFaceOf;       // per mesh face: its disk face, −1 outside the parameterized component
+  std::vector<int32_t> copies;           // per mesh vertex: how many disk vertices copy it (2+ on the seam)
+  std::vector<int32_t> copyOf;           // per mesh vertex: its first disk copy, −1 outside the component
   int64_t virtualVertices = 0;
   /// The real faces as a mesh: the disk itself when nothing was filled.
   const TriMesh& real() const { return realFaces ? *realFaces : cut.disk; }
@@ -43,10 +47,15 @@ Expected<SurfacePoint> pointOnDisk(const TriMesh& mesh, const CutDisk& c, const 
 Expected<SurfacePoint> diskDefaultSource(const CutDisk& c);
 
 /// parameterize's work on a disk mesh, with the stretch measured and the free boundary refined on
-/// `real` (the same vertices, a subset of the faces: the disk's real faces). parameterize calls it with
-/// real = disk for a disk.
-Expected<Parameterization> parameterizeDisk(const TriMesh& disk, const TriMesh& real, const ParamOptions& options,
+/// `real` (the disk's real faces; its vertices the disk's, then extra copies: extraOrigin). parameterize
+/// calls it with real = disk for a disk. The result's uv is per disk vertex for a fixed boundary, per
+/// real vertex for the free one.
+Expected<Parameterization> parameterizeDisk(const TriMesh& disk, const TriMesh& real,
+                                            const std::vector<int32_t>& extraOrigin, const ParamOptions& options,
                                             const Progress& progress);
+
+/// uv per disk vertex extended to real's vertices (each extra copy takes its disk vertex's uv).
+std::vector<Vec2> onRealVertices(std::vector<Vec2> uv, const std::vector<int32_t>& extraOrigin);
 
 /// refineParameterization without the disk check: `mesh` may have holes (real faces of a filled disk).
 Expected<Parameterization> refineOnDisk(const TriMesh& mesh, const Parameterization& start,

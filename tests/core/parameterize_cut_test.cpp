@@ -216,6 +216,35 @@ TEST(ParameterizeClosed, SphereTorusCubeAndGenusTwoAreCutAndBijectiveWithConvexW
   }
 }
 
+/// The mesh without the faces `drop` says to remove (vertices kept: unreferenced ones are allowed).
+template <class Drop>
+TriMesh without(const TriMesh& mesh, Drop drop) {
+  std::vector<Triangle> kept;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f)
+    if (!drop(f)) kept.push_back(mesh.triangle(f));
+  return testing::buildOrFail(mesh.positions(), std::move(kept));
+}
+
+TEST(ParameterizeClosed, AGenusOneMeshWithManyHolesIsFilledAndCutAndStaysBijective) {
+  // Small holes all over a torus: every loop is filled and the cut graph runs between them, through
+  // the holes' rims (where the real faces can meet at a single seam vertex: split for the stretch).
+  const TriMesh torus = makeTorus(1.0, 0.4, 32, 16);
+  const TriMesh holed = without(torus, [](int32_t f) { return f % 46 == 7; });
+  ASSERT_EQ(holed.summary().components, 1);
+  const int64_t holes = static_cast<int64_t>(holed.boundaryLoops().size());
+  ASSERT_GT(holes, 10);
+  for (BoundaryKind b : {BoundaryKind::Circle, BoundaryKind::Free}) {
+    const std::string what = std::string("holed torus ") + boundaryKindName(b);
+    const Parameterization p = param(holed, b, WeightKind::MeanValue);
+    EXPECT_EQ(p.cut, CutMethod::CutGraph) << what;
+    EXPECT_EQ(p.genus, 1) << what;
+    EXPECT_EQ(static_cast<int64_t>(p.filledLoops.size()), holes) << what;
+    EXPECT_EQ(p.virtualVertices, holes) << what;
+    expectConsistentCut(holed, p, what);
+    expectBijective(p, what);
+  }
+}
+
 TEST(ParameterizeClosed, TheSourceMustNotLieOnTheSeamAndComesBackInMeshNumbers) {
   const TriMesh mesh = makeSample("sphere").value();
   const Parameterization circle = param(mesh, BoundaryKind::Circle);
