@@ -6,7 +6,9 @@
 
 namespace straightest::detail {
 
-CutOpen cutOpen(const TriMesh& surface, const std::vector<std::array<int32_t, 2>>& seam) {
+std::optional<CutOpen> cutOpen(const TriMesh& surface, const std::vector<std::array<int32_t, 2>>& seam,
+                               const Progress& progress, const char* stage) {
+  ThrottledProgress tick(progress, stage);
   const int32_t n = surface.numVertices();
   auto key = [n](int32_t a, int32_t b) { return int64_t(std::min(a, b)) * n + std::max(a, b); };
   std::unordered_set<int64_t> seamEdges;
@@ -26,6 +28,7 @@ CutOpen cutOpen(const TriMesh& surface, const std::vector<std::array<int32_t, 2>
     return int32_t(out.copyOf.size() - 1);
   };
   for (int32_t v = 0; v < n; ++v) {
+    if ((v & 4095) == 0 && !tick(double(v) / n)) return std::nullopt;
     if (surface.vertexHalfedge(v) < 0) continue;
     if (seamDegree[v] < 2) {
       const int32_t copy = newCopy(v);

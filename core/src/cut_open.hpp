@@ -4,8 +4,10 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "straightest/progress.hpp"
 #include "straightest/trimesh.hpp"
 
 namespace straightest::detail {
@@ -17,7 +19,9 @@ struct CutOpen {
 };
 
 /// Copies are numbered in the order of the vertices they copy (so with no seam nothing moves), a vertex's
-/// copies counter-clockwise around it from a seam edge. Unreferenced vertices are dropped.
-CutOpen cutOpen(const TriMesh& surface, const std::vector<std::array<int32_t, 2>>& seam);
+/// copies counter-clockwise around it from a seam edge. Unreferenced vertices are dropped. Progress in
+/// `stage`'s 0..1; nothing (nullopt) when cancelled.
+std::optional<CutOpen> cutOpen(const TriMesh& surface, const std::vector<std::array<int32_t, 2>>& seam,
+                               const Progress& progress, const char* stage);
 
 }  // namespace straightest::detail

@@ -3,6 +3,7 @@
 #include "straightest/disk_cut.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -174,16 +175,24 @@ Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
   if (!report(progress, kStage, 0.1)) return cancelledError("cutting to a disk");
 
   Surface surface = componentSurface(mesh, components.ofFace, cut.component, cut.filledLoops);
-  auto filled = TriMesh::build(surface.positions, surface.triangles);
-  if (!filled) return filled.error();
-  if (filled.value().summary().reorientedFaces != 0) return internal("the filled surface is not oriented");
+  const bool cutting = cut.method == CutMethod::Path || cut.method == CutMethod::CutGraph;
+  // A closed mesh of one piece is its own surface to find the seam on: no need to build it again. (The
+  // disk itself is always built, so that its summary is its own.)
+  const bool meshIsSurface = cutting && cut.components == 1 && cut.filledLoops.empty() &&
+                             surface.positions.size() == size_t(mesh.numVertices());
+  std::optional<Expected<TriMesh>> built;
+  if (!meshIsSurface) {
+    built = TriMesh::build(surface.positions, surface.triangles);
+    if (!*built) return built->error();
+    if (built->value().summary().reorientedFaces != 0) return internal("the filled surface is not oriented");
+  }
+  const TriMesh& filled = meshIsSurface ? mesh : built->value();
 
   detail::Seam seam;
-  if (cut.method == CutMethod::Path || cut.method == CutMethod::CutGraph) {
-    const Progress part = progress.range(0.1, 0.8);
-    auto found = cut.method == CutMethod::Path
-                     ? detail::pathSeam(filled.value(), part, kStage)
-                     : detail::treeCotreeSeam(filled.value(), surface.firstVirtual, part, kStage);
+  if (cutting) {
+    const Progress part = progress.range(0.1, 0.7);
+    auto found = cut.method == CutMethod::Path ? detail::pathSeam(filled, part, kStage)
+                                               : detail::treeCotreeSeam(filled, surface.firstVirtual, part, kStage);
     if (!found) return found.error();
     seam = std::move(found).value();
   }
@@ -195,20 +204,25 @@ Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
   }
   if (cut.method == CutMethod::Path)
     cut.seamEnds = {surface.meshVertex[seam.ends[0]], surface.meshVertex[seam.ends[1]]};
-  if (!report(progress, kStage, 0.85)) return cancelledError("cutting to a disk");
 
-  detail::CutOpen open = detail::cutOpen(filled.value(), seam.edges);
-  for (int32_t v : open.copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
   cut.faceOrigin = std::move(surface.meshFace);
-  auto disk = TriMesh::build(std::move(open.positions), std::move(open.triangles));
-  if (!disk) return internal("the cut surface is not a mesh: " + disk.error().message);
-  const MeshSummary& summary = disk.value().summary();
+  if (!cutting) {  // without a seam (Disk, Fill) the filled surface is the disk
+    cut.vertexOrigin = std::move(surface.meshVertex);
+  } else {
+    auto open = detail::cutOpen(filled, seam.edges, progress.range(0.75, 0.9), kStage);
+    if (!open) return cancelledError("cutting to a disk");
+    for (int32_t v : open->copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
+    built = TriMesh::build(std::move(open->positions), std::move(open->triangles));
+    if (!*built) return internal("the cut surface is not a mesh: " + built->error().message);
+  }
+  TriMesh& disk = built->value();
+  const MeshSummary& summary = disk.summary();
   if (summary.boundaryLoopSizes.size() != 1 || summary.eulerCharacteristic != 1 || summary.components != 1 ||
       summary.reorientedFaces != 0)
     return internal("the cut surface is not a disk (" + std::to_string(summary.boundaryLoopSizes.size()) +
                     " boundary loops, Euler characteristic " + std::to_string(summary.eulerCharacteristic) + ")");
   if (!report(progress, kStage, 1)) return cancelledError("cutting to a disk");
-  return DiskCut{std::move(disk).value(),
+  return DiskCut{std::move(disk),
                  std::move(cut.vertexOrigin),
                  std::move(cut.faceOrigin),
                  std::move(cut.seam),

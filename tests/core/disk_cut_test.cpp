@@ -70,8 +70,16 @@ void expectDisk(const TriMesh& mesh, const DiskCut& cut) {
   std::sort(real.begin(), real.end());
   EXPECT_EQ(real, expected);
 
-  // One virtual vertex per filled loop, never on the boundary.
+  // One virtual vertex per filled loop, never on the boundary, fanned to the loop: one face per loop edge.
   EXPECT_EQ(std::count(cut.vertexOrigin.begin(), cut.vertexOrigin.end(), -1), int64_t(cut.filledLoops.size()));
+  size_t fanFaces = 0;
+  for (int32_t loop : cut.filledLoops) fanFaces += mesh.boundaryLoops()[loop].size();
+  EXPECT_EQ(std::count(cut.faceOrigin.begin(), cut.faceOrigin.end(), -1), int64_t(fanFaces));
+  for (int32_t f = 0; f < cut.disk.numFaces(); ++f) {
+    if (cut.faceOrigin[f] >= 0) continue;  // a fan face: its centre and two consecutive loop vertices
+    const Triangle& corners = cut.disk.triangle(f);
+    EXPECT_EQ(std::count_if(corners.begin(), corners.end(), [&](int32_t v) { return cut.vertexOrigin[v] < 0; }), 1);
+  }
 
   // The boundary: each seam edge twice; the rest is the loop left open (edges of the mesh's boundary).
   std::map<Edge, int> boundary;
@@ -137,6 +145,20 @@ TEST(DiskCut, ADiskIsLeftAsItIs) {
   for (int32_t f = 0; f < mesh.numFaces(); ++f) EXPECT_EQ(cut.faceOrigin[f], f);
 }
 
+TEST(DiskCut, UnreferencedVerticesAreLeftOut) {
+  const TriMesh grid = testing::flatGrid(4, testing::GridPattern::Regular);
+  std::vector<Vec3> p{{-5, -5, 0}};  // vertex 0 belongs to no face
+  for (const Vec3& x : grid.positions()) p.push_back(x);
+  std::vector<Triangle> t;
+  for (Triangle f : grid.triangles()) t.push_back({f[0] + 1, f[1] + 1, f[2] + 1});
+  const TriMesh mesh = buildOrFail(p, t);
+  const DiskCut cut = cutOrFail(mesh);
+  expectDisk(mesh, cut);
+  EXPECT_EQ(cut.method, CutMethod::Disk);
+  ASSERT_EQ(cut.disk.numVertices(), 16);
+  for (int32_t v = 0; v < 16; ++v) EXPECT_EQ(cut.vertexOrigin[v], v + 1);
+}
+
 TEST(DiskCut, TheLargestComponentIsCut) {
   const TriMesh mesh = twoComponents();  // 8 faces, then 32
   const DiskCut cut = cutOrFail(mesh);
@@ -147,6 +169,41 @@ TEST(DiskCut, TheLargestComponentIsCut) {
   EXPECT_EQ(cut.disk.numVertices(), 25);
   for (int32_t v : cut.vertexOrigin) EXPECT_GE(v, 9);
   EXPECT_EQ(cut.method, CutMethod::Disk);
+}
+
+/// The two meshes side by side (b's vertices after a's, moved by `offset`).
+TriMesh sideBySide(const TriMesh& a, const TriMesh& b, Vec3 offset) {
+  std::vector<Vec3> p = a.positions();
+  std::vector<Triangle> t = a.triangles();
+  const int32_t n = a.numVertices();
+  for (const Vec3& x : b.positions()) p.push_back(x + offset);
+  for (Triangle f : b.triangles()) t.push_back({f[0] + n, f[1] + n, f[2] + n});
+  return buildOrFail(p, t);
+}
+
+TEST(DiskCut, OnlyTheChosenComponentsLoopsAreFilled) {
+  // A small annulus first (its two loops come first), then a larger grid with two holes.
+  const TriMesh annulus = testing::gridOfCells(4, [](int i, int j) { return !(i == 1 && j == 1); });
+  const TriMesh mesh = sideBySide(annulus, testing::gridWithout({{2, 2}, {5, 5}}), {20, 0, 0});
+  ASSERT_EQ(mesh.boundaryLoops().size(), 5u);
+  const DiskCut cut = cutOrFail(mesh);
+  expectDisk(mesh, cut);
+  EXPECT_EQ(cut.component, 1);
+  EXPECT_EQ(cut.method, CutMethod::Fill);
+  ASSERT_EQ(cut.filledLoops.size(), 2u);
+  for (int32_t loop : cut.filledLoops) {
+    EXPECT_EQ(mesh.boundaryLoops()[loop].size(), 4u);
+    EXPECT_GE(mesh.boundaryLoops()[loop][0], annulus.numVertices());
+  }
+  // A torus beside the annulus: closed, so nothing is filled though the mesh has loops.
+  const TriMesh withTorus = sideBySide(annulus, makeTorus(3, 1, 16, 8), {20, 0, 0});
+  const DiskCut torus = cutOrFail(withTorus);
+  expectDisk(withTorus, torus);
+  EXPECT_EQ(torus.method, CutMethod::CutGraph);
+  EXPECT_TRUE(torus.filledLoops.empty());
+  // Two equal components: the first.
+  const TriMesh grid = testing::flatGrid(4, testing::GridPattern::Regular);
+  EXPECT_EQ(cutOrFail(sideBySide(grid, grid, {10, 0, 0})).component, 0);
 }
 
 TEST(DiskCut, HolesAreFilledAndTheLongestLoopStaysTheBoundary) {
@@ -228,8 +285,12 @@ TEST(DiskCut, ATorusIsCutAlongTwoLoops) {
   EXPECT_EQ(cut.genus, 1);
   EXPECT_EQ(seamEuler(cut), -1);
   EXPECT_EQ(cut.seamEnds[0], -1);
-  // Short loops: around the tube (2π·1) and around the hole (at least 2π·2, the inner equator).
-  EXPECT_LT(cut.seamLength, 2 * testing::kPi * (1 + 4) * 1.1);
+  // One loop winds around the hole, so the seam is at least as long as the inner equator (a 24-gon of
+  // radius R − r = 2); the shortest pair of loops is that equator and a tube circle (a 12-gon of radius 1):
+  // loops through a shortest-path tree are short, within a quarter of it here.
+  const double equator = 24 * 2 * 2 * std::sin(testing::kPi / 24), tube = 12 * 2 * std::sin(testing::kPi / 12);
+  EXPECT_GT(cut.seamLength, equator * std::cos(testing::kPi / 24));
+  EXPECT_LT(cut.seamLength, 1.25 * (equator + tube));
 }
 
 TEST(DiskCut, ClosedSurfacesOfGenusTwoAndThree) {
@@ -268,6 +329,10 @@ TEST(DiskCut, CancellingReturnsCancelled) {
     ASSERT_FALSE(cut.ok());
     EXPECT_EQ(cut.error().code, ErrorCode::Cancelled);
   }
+  // Cancelled while the surface is being cut open (after the seam was found).
+  auto opening = cutToDisk(testing::icosphere(2), [](const char*, double f) { return !(f >= 0.75 && f < 0.9); });
+  ASSERT_FALSE(opening.ok());
+  EXPECT_EQ(opening.error().code, ErrorCode::Cancelled);
   int calls = 0;
   auto late = cutToDisk(makeTorus(3, 1, 12, 6), [&](const char*, double f) { return ++calls < 3 || f < 0; });
   ASSERT_FALSE(late.ok());
