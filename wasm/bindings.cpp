@@ -178,7 +178,9 @@ class MeshHandle {
     });
   }
 
-  /// OBJ text of the mesh; with uv (2 floats per vertex) also vt lines and v/vt faces.
+  /// OBJ text of the mesh; with uv also vt lines and v/vt faces. uv is 2 numbers per vertex (a vt per
+  /// vertex) or, when it has 6 per face instead (a cut mesh's cornerUv), one per face corner (a vt per
+  /// distinct uv: seams split; NaN corners: the face without vt). Per vertex wins if both lengths fit.
   val toObj(const val& uv) const {
     return respond([&]() -> Expected<val> {
       val o = val::object();
@@ -187,13 +189,15 @@ class MeshHandle {
         return o;
       }
       const auto flat = emscripten::convertJSArrayToNumberVector<double>(uv);
-      if (flat.size() != 2 * static_cast<size_t>(mesh_->numVertices()))
+      const size_t perVertex = 2 * static_cast<size_t>(mesh_->numVertices());
+      const size_t perCorner = 6 * static_cast<size_t>(mesh_->numFaces());
+      if (flat.size() != perVertex && flat.size() != perCorner)
         return Error{ErrorCode::InvalidArgument, "uv has " + std::to_string(flat.size()) +
-                                                     " numbers, expected 2 per vertex (" +
-                                                     std::to_string(2 * mesh_->numVertices()) + ")"};
-      std::vector<Vec2> coords(mesh_->numVertices());
+                                                     " numbers, expected 2 per vertex (" + std::to_string(perVertex) +
+                                                     ") or 2 per face corner (" + std::to_string(perCorner) + ")"};
+      std::vector<Vec2> coords(flat.size() / 2);
       for (size_t i = 0; i < coords.size(); ++i) coords[i] = {flat[2 * i], flat[2 * i + 1]};
-      o.set("text", writeObj(*mesh_, &coords));
+      o.set("text", flat.size() == perVertex ? writeObj(*mesh_, &coords) : writeObjWithCornerUv(*mesh_, coords));
       return o;
     });
   }

@@ -206,7 +206,7 @@ export type LinearSolver = 'multigrid' | 'lu' | 'bicgstab';
 /** Geodesic distances by the heat method (factored once per mesh) or along edges (Dijkstra). */
 export type DistanceMethod = 'heat' | 'dijkstra';
 /** The built-in sample meshes (st.sampleNames() lists them). */
-export type SampleName = 'mountain' | 'cap' | 'saddle' | 'face' | (string & {});
+export type SampleName = 'mountain' | 'cap' | 'saddle' | 'face' | 'holes' | 'sphere' | 'torus' | (string & {});
 
 export interface ParameterizeOptions {
   /** Center of the measured boundary (default 'auto'); must be interior (also for 'free' and 'auto'). */
@@ -313,12 +313,42 @@ export interface Parameterization {
   untangled: boolean | null;
   /** Every map solved: 'auto' lists all four kinds; 'free' its start(s) and itself last. */
   candidates: BoundaryCandidate[];
+  /**
+   * How the mesh was made a disk: 'disk' (it was one), 'fill' (holes filled virtually, the longest loop
+   * outside), 'path' (a closed genus-0 surface cut between two far-apart vertices) or 'cut-graph'
+   * (genus ≥ 1: a tree–cotree cut graph, holes filled too).
+   */
+  cut: CutMethod;
+  /**
+   * u, v per face corner (6 numbers per face), in uv's frame: the map to texture with. Equal to uv at
+   * the corner's vertex except at a seam vertex, which has one uv per side; NaN on faces outside the
+   * parameterized component.
+   */
+  cornerUv: Float32Array;
+  /** The mesh edges cut open, 2 vertex numbers each (empty for 'disk' and 'fill'). */
+  seam: Int32Array;
+  /** seam.length / 2. */
+  seamEdges: number;
+  /** 3D length of the seam. */
+  seamLength: number;
+  /** Indices into mesh.boundaryLoops() of the holes filled virtually (their filling is not in the output). */
+  filledLoops: number[];
+  /** Genus of the parameterized component. */
+  genus: number;
+  /** Which connected component was parameterized (the largest by faces), of `components`. */
+  component: number;
+  components: number;
+  /** Vertices the filling added to the solve (never in uv or cornerUv). */
+  virtualVertices: number;
   /** Milliseconds per stage; every stage is listed (0 when it did not run). */
   timings: {
-    source: number; trace: number; boundary: number; weights: number; solve: number; refine: number;
+    cut: number; source: number; trace: number; boundary: number; weights: number; solve: number; refine: number;
     metrics: number; total: number;
   };
 }
+
+/** How parameterize made the mesh a disk. */
+export type CutMethod = 'disk' | 'fill' | 'path' | 'cut-graph';
 
 export interface BoundaryPolygonsOptions {
   /** Center of the measured boundary (default 'auto'); must be interior. */
@@ -438,7 +468,10 @@ export class Mesh {
   geodesicDistances(source?: SurfacePoint | 'auto', method?: DistanceMethod): Float64Array;
   /** Flattens a disk into [0, 1]² (see ParameterizeOptions). Throws 'topology' unless a disk. */
   parameterize(options?: ParameterizeOptions): Parameterization;
-  /** OBJ text in the input's vertex order; with uv also `vt` lines (faces as v/vt). */
+  /**
+   * OBJ text in the input's vertex order; with uv also `vt` lines (faces as v/vt): uv is 2 numbers per
+   * vertex, or 2 per face corner (Parameterization.cornerUv: one vt per distinct uv, the seam split).
+   */
   toOBJ(uv?: ArrayLike<number>): string;
   /** x, y, z per vertex (a copy). */
   positions(): Float64Array;

@@ -131,11 +131,14 @@ export class Mesh {
   }
 
   /**
-   * Flattens a disk: boundary 'measured' (default), 'circle', 'square', 'free' (the measured map — or
+   * Flattens any manifold mesh (a disk as it is; otherwise its largest component cut or filled into a
+   * disk first: `cut`, `seam`, `cornerUv`, `filledLoops`, `genus` say how): boundary 'measured'
+   * (default), 'circle', 'square', 'free' (the measured map — or
    * the circle's when the measured one is not bijective — refined with its boundary free to move,
    * never folding) or 'auto' (the preferred map of the four); weights 'shape-preserving' (default),
    * 'mean-value', 'cotan' or 'uniform'. maxIterations and timeBudgetMs cap the free refinement.
-   * Returns uv (2 floats per vertex, in [0, 1]²), per-face stretch and the metrics.
+   * Returns uv (2 floats per vertex, in [0, 1]²; one copy's for a seam vertex), cornerUv (2 floats per
+   * face corner: the map to texture with, split along the seam), per-face stretch and the metrics.
    */
   parameterize({
     source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid',
@@ -171,7 +174,10 @@ export class Mesh {
       String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
   }
 
-  /** The mesh as OBJ text (input vertex order); with uv (2 per vertex) also `vt` lines. */
+  /**
+   * The mesh as OBJ text (input vertex order); with uv also `vt` lines: 2 numbers per vertex (a vt per
+   * vertex), or 2 per face corner (a parameterization's cornerUv: a vt per distinct uv, so seams split).
+   */
   toOBJ(uv) { return unwrap(this.#live().toObj(uv ?? null)).text; }
 
   get deleted() { return !this.#handle; }
@@ -245,7 +251,7 @@ export class Straightest {
   /** Names of the built-in sample meshes. */
   sampleNames() { return this.#module.sampleNames(); }
 
-  /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face'). */
+  /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face': disks; 'holes', 'sphere', 'torus'). */
   sample(name) { return new Mesh(internal, unwrap(this.#module.sample(String(name))).mesh); }
 
   /** Bytes of WASM memory currently reserved (grows, never shrinks). */

@@ -1,7 +1,7 @@
 // Types of straightest/three. They import three's types: install `@types/three` next to `three`
 // (three ships no declarations), or this file fails to type-check without skipLibCheck.
 import type { BufferGeometry } from 'three';
-import type { Mesh, Straightest } from './index.js';
+import type { Mesh, Parameterization, Straightest } from './index.js';
 
 /** meshFromBufferGeometry's options. */
 export interface MeshFromBufferGeometryOptions {
@@ -19,3 +19,9 @@ export function meshFromBufferGeometry(st: Straightest, geometry: BufferGeometry
 export function toBufferGeometry(mesh: Mesh): BufferGeometry;
 /** Sets geometry's 'uv' attribute from straightest's uv (2 floats per vertex); returns the geometry. */
 export function applyUV(geometry: BufferGeometry, uv: ArrayLike<number>): BufferGeometry;
+/**
+ * A BufferGeometry textured by a parameterization and split along its seam (one vertex per distinct mesh
+ * vertex and corner uv), so the texture does not smear across a cut mesh's seam. Needs cornerUv (every
+ * parameterize result has it); userData.vertexOrigin maps each geometry vertex to its mesh vertex.
+ */
+export function toSeamSplitGeometry(mesh: Mesh, parameterization: Pick<Parameterization, 'cornerUv'>): BufferGeometry;

@@ -85,3 +85,55 @@ export function applyUV(geometry, uv) {
   geometry.setAttribute('uv', new BufferAttribute(uv instanceof Float32Array ? uv : new Float32Array(uv), 2));
   return geometry;
 }
+
+/**
+ * A BufferGeometry textured by a parameterization, split along its seam: one geometry vertex per
+ * distinct (mesh vertex, corner uv) pair, so a cut mesh's two sides of the seam get their own uv and no
+ * triangle smears the texture across it (for a disk this is the mesh's own vertices). Faces outside the
+ * parameterized component (NaN corner uv) get uv (0, 0). Attributes: position, normal (the core's
+ * vertex normals), uv; index: Uint32. `vertexOrigin` (userData) gives each geometry vertex's mesh vertex.
+ */
+export function toSeamSplitGeometry(mesh, parameterization) {
+  const positions = mesh.positions();
+  const normals = mesh.vertexNormals();
+  const indices = mesh.indices();
+  const corner = parameterization.cornerUv;
+  if (!corner || corner.length !== 2 * indices.length) {
+    throw new RangeError(`toSeamSplitGeometry: cornerUv has ${corner?.length} numbers for ${indices.length / 3} ` +
+      `faces (expected ${2 * indices.length})`);
+  }
+  const copies = new Map();  // mesh vertex → [[u, v, geometry vertex], ...]: a seam vertex has a few
+  const origin = [];
+  const uvs = [];
+  const index = new Uint32Array(indices.length);
+  for (let c = 0; c < indices.length; ++c) {
+    const v = indices[c];
+    let u = corner[2 * c], w = corner[2 * c + 1];
+    if (!Number.isFinite(u) || !Number.isFinite(w)) u = w = 0;
+    let list = copies.get(v);
+    if (!list) copies.set(v, (list = []));
+    let found = list.find((e) => e[0] === u && e[1] === w);
+    if (!found) {
+      found = [u, w, origin.length];
+      list.push(found);
+      origin.push(v);
+      uvs.push(u, w);
+    }
+    index[c] = found[2];
+  }
+  const position = new Float32Array(3 * origin.length);
+  const normal = new Float32Array(3 * origin.length);
+  origin.forEach((v, i) => {
+    for (let k = 0; k < 3; ++k) {
+      position[3 * i + k] = positions[3 * v + k];
+      normal[3 * i + k] = normals[3 * v + k];
+    }
+  });
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(position, 3));
+  geometry.setAttribute('normal', new BufferAttribute(normal, 3));
+  geometry.setAttribute('uv', new BufferAttribute(new Float32Array(uvs), 2));
+  geometry.setIndex(new BufferAttribute(index, 1));
+  geometry.userData.vertexOrigin = Uint32Array.from(origin);
+  return geometry;
+}

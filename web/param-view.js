@@ -8,16 +8,20 @@
 // 'meshready' (the automatic parameterization; large meshes only get a note, the button runs it)
 // and 'cancel' (the worker was restarted: a run in flight will not come).
 //
+// A mesh that is not a disk comes back cut or filled (the core's `cut`): a closed or higher-genus mesh
+// has its seam drawn on the surface and, as the disk's boundary, in the layout; its texture goes on a
+// seam-split twin of the surface (surface-view.js); filled holes get a note.
+//
 // Test hooks: param, paramError, parameterizations (see test-hooks.js).
 
 import * as THREE from 'three';
-import { applyUV } from 'straightest/three';
+import { applyUV, toSeamSplitGeometry } from 'straightest/three';
 import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { createCompareView } from './compare-view.js';
 import { createStretchView } from './stretch-view.js';
 import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
-import { checkerboardCanvas, drawLayout } from './uv-layout.js';
+import { SEAM_COLOR, checkerboardCanvas, drawLayout } from './uv-layout.js';
 import { isCancelled } from './worker-client.js';
 
 const $ = (id) => document.getElementById(id);
@@ -86,7 +90,73 @@ export function createParamView({ session, view, surface, pathSource }) {
   }
 
   function updateTexture() {
-    surface.setTexture(texture());
+    surface.setTexture(texture(), shown?.split ?? null);
+  }
+
+  // ---------------------------------------------------------------- the seam on the surface
+
+  const seamMaterial = new THREE.LineBasicMaterial({ color: SEAM_COLOR, depthTest: true });
+  let seamLines = null; // THREE.LineSegments of the seam on display
+
+  function showSeam(seam) {
+    hideSeam();
+    const geometry = surface.mesh?.geometry;
+    if (!geometry || !seam?.length) return;
+    const position = geometry.getAttribute('position');
+    const points = new Float32Array(3 * seam.length);
+    seam.forEach((v, i) => {
+      points[3 * i] = position.getX(v);
+      points[3 * i + 1] = position.getY(v);
+      points[3 * i + 2] = position.getZ(v);
+    });
+    const lines = new THREE.BufferGeometry();
+    lines.setAttribute('position', new THREE.BufferAttribute(points, 3));
+    seamLines = new THREE.LineSegments(lines, seamMaterial);
+    seamLines.renderOrder = 2; // over the surface, whose polygon offset pushes it back
+    view.scene.add(seamLines);
+    view.requestRender();
+  }
+
+  function hideSeam() {
+    if (!seamLines) return;
+    view.scene.remove(seamLines);
+    seamLines.geometry.dispose();
+    seamLines = null;
+    view.requestRender();
+  }
+
+  /**
+   * A cut mesh's texture geometry: its surface split along the seam, one vertex per mesh vertex and
+   * corner uv (the arrays the page already holds stand in for the core's mesh).
+   */
+  function splitGeometry(reply) {
+    const geometry = surface.mesh.geometry;
+    return toSeamSplitGeometry({
+      positions: () => geometry.getAttribute('position').array,
+      vertexNormals: () => geometry.getAttribute('normal').array,
+      indices: () => geometry.index.array,
+    }, reply);
+  }
+
+  /** What the core did to make the mesh a disk, in words (empty for a disk). */
+  function cutNote(reply) {
+    const loops = session.info?.boundaryLoops ?? [];
+    const parts = [];
+    if (reply.components > 1) {
+      parts.push(`Component ${reply.component} of ${reply.components} (the largest) is parameterized; ` +
+        'the others have no uv.');
+    }
+    if (reply.cut === 'fill' || reply.filledLoops.length > 0) {
+      const outer = loops.findIndex((_, i) => !reply.filledLoops.includes(i));
+      const n = reply.filledLoops.length;
+      parts.push(`${n} hole${n === 1 ? '' : 's'} filled virtually` +
+        `${reply.cut === 'fill' ? `; outer boundary = loop ${outer}` : ''}.`);
+    }
+    if (reply.cut === 'path' || reply.cut === 'cut-graph') {
+      parts.push(`${reply.cut === 'path' ? 'Closed surface' : `Genus ${reply.genus}`}: cut to a disk along a seam ` +
+        `of ${reply.seamEdges} edges (length ${formatMetric(reply.seamLength)}), drawn in magenta.`);
+    }
+    return parts.join(' ');
   }
 
   async function loadImage(file) {
@@ -206,11 +276,9 @@ export function createParamView({ session, view, surface, pathSource }) {
       return;
     }
     const { reply } = shown;
-    const indices = surface.mesh?.geometry.index.array;
-    if (!indices) return;
     drawLayout(uvCanvas, {
-      uv: reply.uv,
-      indices,
+      cornerUv: reply.cornerUv,
+      seam: reply.cut === 'path' || reply.cut === 'cut-graph',
       faceStretch: reply.faceStretch,
       overlays: reply.overlays,
       boundary: reply.boundary,
@@ -273,8 +341,11 @@ export function createParamView({ session, view, surface, pathSource }) {
   }
 
   function show(reply, requested) {
-    applyUV(surface.mesh.geometry, reply.uv);
-    shown = { reply };
+    const cut = reply.cut !== 'disk';
+    if (cut) surface.mesh.geometry.deleteAttribute('uv');
+    else applyUV(surface.mesh.geometry, reply.uv);
+    shown = { reply, split: cut ? splitGeometry(reply) : null };
+    showSeam(reply.seam);
     stretch.setStretch(reply.faceStretch);
     hooks.param = {
       boundary: reply.boundary,
@@ -286,12 +357,18 @@ export function createParamView({ session, view, surface, pathSource }) {
       overlaps: reply.overlaps,
       init: reply.init,
       iterations: reply.iterations,
+      cut: reply.cut,
+      seamEdges: reply.seamEdges,
+      genus: reply.genus,
+      filledLoops: [...reply.filledLoops],
+      components: reply.components,
     };
     hooks.paramError = null;
     hooks.parameterizations += 1;
     showStats(reply, requested);
     const failed = reply.overlays.filter((o) => o.error);
-    showNote(failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`).join(' '));
+    showNote([cutNote(reply), ...failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`)]
+      .filter(Boolean).join(' '));
     $('param-panel').dataset.state = 'done';
     updateTexture();
     showStretch();
@@ -309,7 +386,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     showNote(`Cannot parameterize: ${err.message}`, 'error');
     $('param-panel').dataset.state = 'error';
     layoutMessage = err.category === 'topology'
-      ? 'The parameterization needs a disk (one boundary loop).'
+      ? 'This mesh could not be made a disk (see above).'
       : 'The parameterization failed (see above).';
     updateTexture();
     showStretch();
@@ -320,6 +397,7 @@ export function createParamView({ session, view, surface, pathSource }) {
   /** Drops the parameterization on display (the uv attribute, the heat map, the hook). */
   function forget() {
     shown = null;
+    hideSeam();
     hooks.param = null;
     stretch.setStretch(null);
     surface.mesh?.geometry.deleteAttribute('uv');
@@ -335,7 +413,8 @@ export function createParamView({ session, view, surface, pathSource }) {
     if (!shown) return;
     const { reply } = shown;
     try {
-      const { text } = await session.request('exportObj', { uv: reply.uv });
+      // A cut or filled mesh: a vt per corner uv, so the seam splits in the file too.
+      const { text } = await session.request('exportObj', { uv: reply.cut === 'disk' ? reply.uv : reply.cornerUv });
       download(new Blob([text], { type: 'text/plain' }), `${baseName()}-${reply.boundary}-uv.obj`);
     } catch (err) {
       if (!isCancelled(err)) showNote(`Could not export the OBJ: ${err.message}`, 'error');

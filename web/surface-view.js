@@ -1,6 +1,11 @@
 // The mesh on display: its surface and wireframe overlay (one shared geometry) and what colours the
 // surface — the heat-distance vertex colours, else the parameterization's texture, else the plain
 // mesh colour. Other views set those through setColors() and setTexture().
+//
+// A cut mesh's texture (its uv differ on the two sides of the seam) is drawn on a seam-split twin of
+// the surface (one vertex per mesh vertex and corner uv, from the parameterization view): a child of
+// the surface, so whatever hides the surface hides it too, while the surface itself keeps its indexed
+// geometry (picking, vertex colours, the wireframe) and draws nothing meanwhile.
 
 import * as THREE from 'three';
 
@@ -28,6 +33,8 @@ export function createSurfaceView(view) {
   let wireframe = null; // overlay sharing the same geometry
   let wireframeVisible = false;
   let texture = null; // the map the parameterization view asks for (used without vertex colours)
+  let twin = null; // the seam-split textured twin of a cut mesh (a child of the surface), or null
+  const nothing = new THREE.MeshBasicMaterial({ visible: false }); // the surface's while the twin draws
 
   /** Sets the material from what colours the surface (see the opening comment). */
   function updateMaterial() {
@@ -37,10 +44,21 @@ export function createSurfaceView(view) {
       material.needsUpdate = true;
     }
     material.color.set(material.vertexColors || map ? 0xffffff : MESH_COLOR);
+    const twinDraws = twin !== null && map !== null;
+    if (twin) twin.visible = twinDraws;
+    if (surface) surface.material = twinDraws ? nothing : material; // ray casts still hit the surface
     view.requestRender();
   }
 
+  function removeTwin() {
+    if (!twin) return;
+    twin.removeFromParent();
+    twin.geometry.dispose();
+    twin = null;
+  }
+
   function remove() {
+    removeTwin();
     if (!surface) return;
     view.scene.remove(surface, wireframe);
     surface.geometry.dispose();
@@ -93,9 +111,20 @@ export function createSurfaceView(view) {
 
     setColors,
 
-    /** The parameterization's map (null for none); shown unless vertex colours are set. */
-    setTexture(map) {
+    /**
+     * The parameterization's map (null for none); shown unless vertex colours are set. splitGeometry:
+     * a cut mesh's seam-split geometry carrying the uv (null: the surface's own uv attribute).
+     */
+    setTexture(map, splitGeometry = null) {
       texture = map;
+      if (splitGeometry !== twin?.geometry) {
+        removeTwin();
+        if (splitGeometry && surface) {
+          twin = new THREE.Mesh(splitGeometry, material);
+          twin.raycast = () => {}; // picking reads the surface's own faces
+          surface.add(twin);
+        }
+      }
       updateMaterial();
     },
 

@@ -17,7 +17,9 @@ export const hooks = {
   paths: null,
   cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
   // The parameterization view: { boundary, weights, l2, linf, bijective, flipped, overlaps, init,
-  // iterations } after each parameterization (init and iterations: null unless the boundary is free) (null before and after a failure), { message, category } of the last failure,
+  // iterations, cut, seamEdges, genus, filledLoops, components } after each parameterization (init
+  // and iterations: null unless the boundary is free; cut: how the mesh was made a disk) (null before
+  // and after a failure), { message, category } of the last failure,
   // the number of parameterizations shown, and the rows of the last comparison.
   param: null,
   paramError: null,

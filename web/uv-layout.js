@@ -5,6 +5,8 @@
 import { BOUNDARY_COLORS, STRETCH_INFINITE, stretchIndex, stretchRgb, stretchTable } from './colormap.js';
 
 const LAYOUT_BACKGROUND = '#101318';
+/** The seam of a cut mesh, in the layout and on the surface (param-view.js). */
+export const SEAM_COLOR = '#ff4fd8';
 
 /**
  * The checkerboard of the texture: `cells` × `cells` squares, light and dark, with a thin darker
@@ -59,11 +61,13 @@ function fitCanvas(canvas) {
 
 /**
  * Draws a parameterization's layout:
- *   layout = { uv, indices, faceStretch, overlays: [{ boundary, polygon, error }], boundary,
- *              heat: boolean, caption: string }
+ *   layout = { cornerUv, faceStretch, overlays: [{ boundary, polygon, error }], boundary,
+ *              heat: boolean, caption: string, seam: boolean }
  * — the triangles' uv edges thinly (filled with their stretch colour when `heat`), the polygons of
- * the other boundaries dashed, the chosen boundary's polygon bold, and a legend. With `layout` null,
- * draws the empty frame and `message`.
+ * the other boundaries dashed, the chosen boundary's polygon bold, and a legend. cornerUv has u, v
+ * per face corner (a cut mesh's seam vertices have one per side; NaN: a face left out). `seam`: the
+ * mesh was cut open, so the chosen polygon (the disk's boundary) is the seam: drawn in the seam's
+ * colour and named so. With `layout` null, draws the empty frame and `message`.
  */
 export function drawLayout(canvas, layout, message = '') {
   const { ctx, width, height } = fitCanvas(canvas);
@@ -101,8 +105,8 @@ export function drawLayout(canvas, layout, message = '') {
     return;
   }
 
-  const { indices, overlays, boundary } = layout;
-  const faces = indices.length / 3;
+  const { cornerUv, overlays, boundary, seam } = layout;
+  const faces = cornerUv.length / 6;
   if (faces > RASTER_FACES) {
     rasterize(ctx, layout, x0, y0, side);
   } else {
@@ -131,7 +135,7 @@ export function drawLayout(canvas, layout, message = '') {
     ctx.lineWidth = 5;
     polygonPath(chosen.polygon);
     ctx.stroke();
-    ctx.strokeStyle = BOUNDARY_COLORS[boundary];
+    ctx.strokeStyle = seam ? SEAM_COLOR : BOUNDARY_COLORS[boundary];
     ctx.lineWidth = 3;
     ctx.stroke();
   }
@@ -140,9 +144,10 @@ export function drawLayout(canvas, layout, message = '') {
 }
 
 /** The triangles as canvas paths: filled with their stretch colour when `heat`, then their edges. */
-function drawTriangles(ctx, { uv, indices, faceStretch, heat }, px, py) {
-  const faces = indices.length / 3;
-  const corner = (f, k) => indices[3 * f + k];
+function drawTriangles(ctx, { cornerUv, faceStretch, heat }, px, py) {
+  const faces = cornerUv.length / 6;
+  const u = (f, k) => cornerUv[6 * f + 2 * k];
+  const v = (f, k) => cornerUv[6 * f + 2 * k + 1];
   if (heat) {
     // One fill per face in its stretch colour, stroked with the same colour so no seams show.
     ctx.lineWidth = 0.6;
@@ -150,10 +155,7 @@ function drawTriangles(ctx, { uv, indices, faceStretch, heat }, px, py) {
       const color = `rgb(${stretchRgb(faceStretch[f]).join(',')})`;
       ctx.fillStyle = ctx.strokeStyle = color;
       ctx.beginPath();
-      for (let k = 0; k < 3; k++) {
-        const v = corner(f, k);
-        ctx[k ? 'lineTo' : 'moveTo'](px(uv[2 * v]), py(uv[2 * v + 1]));
-      }
+      for (let k = 0; k < 3; k++) ctx[k ? 'lineTo' : 'moveTo'](px(u(f, k)), py(v(f, k)));
       ctx.closePath();
       ctx.fill();
       ctx.stroke();
@@ -165,10 +167,8 @@ function drawTriangles(ctx, { uv, indices, faceStretch, heat }, px, py) {
   ctx.lineWidth = 0.5;
   ctx.beginPath();
   for (let f = 0; f < faces; f++) {
-    for (let k = 0; k < 3; k++) {
-      const v = corner(f, k);
-      ctx[k ? 'lineTo' : 'moveTo'](px(uv[2 * v]), py(uv[2 * v + 1]));
-    }
+    if (!Number.isFinite(u(f, 0))) continue; // a face left out of the parameterization
+    for (let k = 0; k < 3; k++) ctx[k ? 'lineTo' : 'moveTo'](px(u(f, k)), py(v(f, k)));
     ctx.closePath();
   }
   ctx.stroke();
@@ -180,7 +180,7 @@ function drawTriangles(ctx, { uv, indices, faceStretch, heat }, px, py) {
  * belongs to the triangles that contain its center, so a tiling leaves no holes however small its
  * triangles are.
  */
-function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
+function rasterize(ctx, { cornerUv: uv, faceStretch, heat }, x0, y0, side) {
   const scale = ctx.getTransform().a; // device pixels per CSS pixel (fitCanvas)
   const left = Math.floor(x0 * scale);
   const top = Math.floor(y0 * scale);
@@ -192,11 +192,11 @@ function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
   const ox = x0 * scale - left;
   const oy = y0 * scale - top;
   const lut = heat ? stretchTable('srgb') : null;
-  const faces = indices.length / 3;
+  const faces = uv.length / 6;
   for (let f = 0; f < faces; f++) {
-    const a = indices[3 * f];
-    const b = indices[3 * f + 1];
-    const c = indices[3 * f + 2];
+    const a = 3 * f; // corners: uv per face corner
+    const b = 3 * f + 1;
+    const c = 3 * f + 2;
     const ax = ox + uv[2 * a] * sx;
     const ay = oy + (1 - uv[2 * a + 1]) * sx;
     const bx = ox + uv[2 * b] * sx;
@@ -204,7 +204,7 @@ function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
     const cx = ox + uv[2 * c] * sx;
     const cy = oy + (1 - uv[2 * c + 1]) * sx;
     const area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-    if (!(area !== 0)) continue; // degenerate (or NaN) in uv
+    if (!(Math.abs(area) > 0)) continue; // degenerate in uv, or NaN (a face left out)
     const sign = area > 0 ? 1 : -1;
     const eps = -1e-7 * Math.abs(area);
     const x1 = Math.max(0, Math.floor(Math.min(ax, bx, cx)));
@@ -241,13 +241,13 @@ function rasterize(ctx, { uv, indices, faceStretch, heat }, x0, y0, side) {
  * Below the frame, three lines: a swatch per boundary polygon (the chosen one bold), the caption,
  * and the key of the fill (the stretch scale) or of the lines.
  */
-function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces }, x, y, width) {
+function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces, seam }, x, y, width) {
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'left';
   let cx = x;
   for (const { boundary: kind, polygon } of overlays) {
     const isChosen = kind === boundary;
-    ctx.strokeStyle = BOUNDARY_COLORS[kind];
+    ctx.strokeStyle = isChosen && seam ? SEAM_COLOR : BOUNDARY_COLORS[kind];
     ctx.globalAlpha = polygon ? 1 : 0.4;
     ctx.lineWidth = isChosen ? 3 : 1.4;
     ctx.setLineDash(isChosen ? [] : [5, 3]);
@@ -257,7 +257,7 @@ function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces }, x
     ctx.setLineDash([]);
     ctx.font = `${isChosen ? 600 : 400} 11.5px system-ui, sans-serif`;
     ctx.fillStyle = isChosen ? '#e4e7ec' : '#a3abb8';
-    const label = polygon ? kind : `${kind} (failed)`;
+    const label = polygon ? `${kind}${isChosen && seam ? ' = seam' : ''}` : `${kind} (failed)`;
     ctx.fillText(label, cx + 23, y + 6);
     ctx.globalAlpha = 1;
     cx += 23 + ctx.measureText(label).width + 14;

@@ -39,8 +39,9 @@
 //   → { id, type: 'parameterize', source, boundary, weights } ← { id, type: 'parameterization', ... }
 //        source: a SurfacePoint or 'auto'; boundary: one of boundaryKinds or 'auto';
 //        weights: 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform'.
-//        The reply holds every field of mesh.parameterize() (uv, faceStretch, boundaryPolygon and
-//        boundaryLoop transferred) plus timeMs and `overlays`: [{ boundary, polygon, error }], one per
+//        The reply holds every field of mesh.parameterize() (uv, cornerUv, seam, faceStretch,
+//        boundaryPolygon and boundaryLoop transferred; a mesh that is not a disk is cut or filled first:
+//        cut, seam, filledLoops, genus...) plus timeMs and `overlays`: [{ boundary, polygon, error }], one per
 //        boundary kind — each boundary's polygon in the same [0,1]² frame (or polygon null and the
 //        core's message when that boundary failed), for the layout overlay: the chosen one from the
 //        parameterization, the others from mesh.boundaryPolygons() (no solve; the free boundary has no
@@ -52,7 +53,8 @@
 //        (a cell that fails has error set and no numbers); best: the index of the preferred row (the
 //        rule of boundary 'auto'), -1 when every row failed
 //   → { id, type: 'exportObj', uv: Float32Array }            ← { id, type: 'obj', text }
-//        OBJ of the current mesh in its input vertex order, with the given uv as `vt` lines.
+//        OBJ of the current mesh in its input vertex order, with the given uv as `vt` lines (2 per
+//        vertex, or a cut mesh's cornerUv: 2 per face corner, the seam split).
 //   any failure                                              ← { id, type: 'error', message, category }
 // A request answers with exactly one final reply; only 'progress' messages may come before it.
 //
@@ -60,7 +62,8 @@
 // the first one with `stages`, the request's planned stages in order:
 //   sample, file: 'load' (parsing and checks: one call, so only 0 and 1), 'upload'
 //   paths: 'trace', 'upload'          distances: 'heat', 'upload'
-//   parameterize: 'source', 'trace' (measured, free and auto boundaries), 'weights', 'solve',
+//   parameterize: 'cut' (a mesh that is not a disk), 'source', 'trace' (measured, free and auto
+//                 boundaries), 'weights', 'solve',
 //                 'metrics', 'refine' (free and auto) (the core's stages), 'overlays' (the other
 //                 boundaries' polygons), 'upload'
 //   compare: 'compare'                exportObj: 'export'
@@ -75,6 +78,7 @@
 let modulePromise = null; // resolves to the object returned by createStraightest()
 let currentMesh = null; // the mesh later operations will work on; deleted when replaced
 let currentClosed = false; // the current mesh has no boundary (its 'boundary' targets are none)
+let currentDisk = true; // the current mesh is one disk (parameterize cuts or fills anything else first)
 let boundaryKinds = []; // the core's boundary and weight kinds (st.boundaryKinds, st.weightKinds),
 let weightKinds = []; // once initialized
 let polygonKinds = []; // the kinds with a polygon without a solve (st.polygonBoundaryKinds: all but free)
@@ -110,7 +114,7 @@ function plannedStages(request) {
     case 'distances':
       return ['heat', 'upload'];
     case 'parameterize': {
-      return [...parameterizeStages(request.boundary), 'overlays', 'upload'];
+      return [...(currentDisk ? [] : ['cut']), ...parameterizeStages(request.boundary), 'overlays', 'upload'];
     }
     case 'compare':
       return ['compare'];
@@ -198,6 +202,7 @@ function meshReply(mesh, label, startTime, progress, restore) {
   currentMesh?.delete();
   currentMesh = mesh;
   currentClosed = (info.boundaryLoops ?? []).length === 0;
+  currentDisk = info.boundaryLoops.length === 1 && info.eulerCharacteristic === 1 && info.components === 1;
   const reply = {
     type: 'mesh',
     label,
@@ -332,6 +337,8 @@ const handlers = {
       ...result,
       type: 'parameterization',
       uv: owned(result.uv),
+      cornerUv: owned(result.cornerUv),
+      seam: owned(result.seam),
       faceStretch: owned(result.faceStretch),
       boundaryPolygon: owned(result.boundaryPolygon),
       boundaryLoop: owned(result.boundaryLoop),
@@ -341,7 +348,7 @@ const handlers = {
       boundary: result.boundary, polygon: result.boundaryPolygon,
     }, progress);
     progress.update('upload', 0);
-    const buffers = [reply.uv, reply.faceStretch, reply.boundaryPolygon, reply.boundaryLoop,
+    const buffers = [reply.uv, reply.cornerUv, reply.seam, reply.faceStretch, reply.boundaryPolygon, reply.boundaryLoop,
       ...reply.overlays.map((o) => o.polygon).filter(Boolean)];
     return { reply, transfer: buffers.map((a) => a.buffer) };
   },

@@ -48,7 +48,11 @@ std::string usage() {
          "                             and the shorter arc returned, with direction and other_arc_length)\n"
          "      --points               include each path's points (and other_points, the other arc, where there is "
          "one)\n"
-         "  param MESH       flatten a disk: boundary map + convex-combination interior, with texture stretch\n"
+         "  param MESH       flatten a manifold mesh: boundary map + convex-combination interior, with texture\n"
+         "                   stretch. A disk is mapped as it is; otherwise the largest component is made a disk\n"
+         "                   first (cut: fill = holes filled virtually, the longest loop outside; path = a\n"
+         "                   closed genus-0 surface cut between two far-apart vertices; cut-graph = genus >= 1\n"
+         "                   cut by tree-cotree), reported with seam_edges, seam_length, genus, filled_loops\n"
          "      --source auto|N        center for the measured boundary (default auto)\n"
          "      --boundary " +
          alternatives(namesOf(kBoundaryKindNames, kAutoName)) +
@@ -66,7 +70,8 @@ std::string usage() {
          "      --time-budget-ms T     free boundary: stop refining after T ms (default " +
          std::to_string(static_cast<long long>(FreeBoundaryOptions{}.timeBudgetMs)) +
          "), converged false\n"
-         "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order\n"
+         "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order; a cut or\n"
+         "                             filled mesh gets a vt per distinct corner uv (f v/vt: the seam splits)\n"
          "\n"
          "MESH is an .obj or .off file, sample:NAME for a built-in sample (" +
          choiceList(sampleNames(), ", ", ", ") +
@@ -300,7 +305,8 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   const Parameterization& p = result.value();
   if (!o.output.empty()) {
     std::ofstream out(o.output, std::ios::binary);
-    out << writeObj(mesh, &p.uv);
+    // Cut or filled: a vt per face corner, so the seam splits (and other components get none).
+    out << (requireDisk(mesh) ? writeObj(mesh, &p.uv) : writeObjWithCornerUv(mesh, p.cornerUv));
     if (!out) return fail(o, Error{ErrorCode::Io, "cannot write '" + o.output + "'"});
   }
   json out = cli::toJson(p);

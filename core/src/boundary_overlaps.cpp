@@ -50,6 +50,8 @@ int64_t boundaryOverlaps(const TriMesh& mesh, const std::vector<Vec2>& uv) {
     for (size_t j = i + 1; j < segments.size() && segments[j].minX <= p.maxX; ++j) {
       const Segment& q = segments[j];
       if (p.va == q.va || p.va == q.vb || p.vb == q.va || p.vb == q.vb) continue;
+      // Two copies of one point (a pinch split into two vertices at the very same uv) are neighbours too.
+      if (p.a == q.a || p.a == q.b || p.b == q.a || p.b == q.b) continue;
       if (std::max(p.a.y, p.b.y) < std::min(q.a.y, q.b.y) || std::max(q.a.y, q.b.y) < std::min(p.a.y, p.b.y)) continue;
       if (intersect(p, q)) ++crossings;
     }

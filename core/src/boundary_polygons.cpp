@@ -1,9 +1,43 @@
 #include "straightest/boundary_polygons.hpp"
 
+#include "parameterize_cut.hpp"
 #include "straightest/enum_names.hpp"
 #include "straightest/parameterize.hpp"
 
 namespace straightest {
+namespace {
+
+/// Not a disk: the polygons of the disk parameterize cuts it into (the same cut, the same default
+/// source), with the loop in mesh vertex numbers. A source on the seam is the measured entry's error.
+Expected<std::vector<BoundaryPolygon>> cutBoundaryPolygons(const TriMesh& mesh,
+                                                           const std::optional<SurfacePoint>& source,
+                                                           const std::vector<BoundaryKind>& kinds,
+                                                           const Progress& progress) {
+  auto made = makeCutDisk(mesh, progress);
+  if (!made) return made.error();
+  const CutDisk& c = made.value();
+  Expected<SurfacePoint> onDisk = Error{ErrorCode::Internal, "no source"};
+  if (source) {
+    auto s = interiorSource(mesh, source);
+    onDisk = s ? pointOnDisk(mesh, c, canonical(mesh, s.value(), kSnapSource)) : Expected<SurfacePoint>(s.error());
+  } else {
+    onDisk = diskDefaultSource(c);
+  }
+  const bool measuredError = !onDisk;
+  auto polygons = boundaryPolygons(c.cut.disk, onDisk ? std::optional<SurfacePoint>(onDisk.value()) : std::nullopt,
+                                   kinds, progress);
+  if (!polygons) return polygons;
+  for (BoundaryPolygon& entry : polygons.value()) {
+    for (int32_t& v : entry.loop) v = c.cut.vertexOrigin[v];
+    if (entry.kind == BoundaryKind::Measured && measuredError) {
+      entry.polygon.clear();
+      entry.error = onDisk.error();
+    }
+  }
+  return polygons;
+}
+
+}  // namespace
 
 std::vector<BoundaryKind> polygonBoundaryKinds() {
   std::vector<BoundaryKind> kinds;
@@ -15,8 +49,6 @@ std::vector<BoundaryKind> polygonBoundaryKinds() {
 Expected<std::vector<BoundaryPolygon>> boundaryPolygons(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
                                                         const std::vector<BoundaryKind>& kinds,
                                                         const Progress& progress) {
-  auto disk = requireDisk(mesh);
-  if (!disk) return disk.error();
   for (BoundaryKind kind : kinds)
     if (kind == BoundaryKind::Free) {
       std::vector<std::string> names;
@@ -26,6 +58,7 @@ Expected<std::vector<BoundaryPolygon>> boundaryPolygons(const TriMesh& mesh, con
                    "'free' returns it as boundaryPolygon); polygons exist for " +
                        choiceList(names, ", ", " and ")};
     }
+  if (!requireDisk(mesh)) return cutBoundaryPolygons(mesh, source, kinds, progress);
   std::vector<BoundaryPolygon> out;
   for (BoundaryKind kind : kinds) {
     BoundaryPolygon entry;

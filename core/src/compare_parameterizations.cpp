@@ -33,11 +33,10 @@ Expected<Comparison> compareParameterizations(const TriMesh& mesh, const std::op
                                               const std::vector<BoundaryKind>& boundaries,
                                               const std::vector<WeightKind>& weights, LinearSolver solver,
                                               const Progress& progress, const FreeBoundaryOptions& free) {
-  auto disk = requireDisk(mesh);
-  if (!disk) return disk.error();
-  // One source for every cell; one the measured boundary cannot use fails those cells only.
+  // One source for every cell; one the measured boundary cannot use fails those cells only. A mesh that
+  // is not a disk is cut in every cell (the same cut each time): its default source is the disk's.
   std::optional<SurfacePoint> resolved = source;
-  if (!source) {
+  if (!source && requireDisk(mesh)) {
     auto s = resolveSource(mesh, std::nullopt);
     if (s) resolved = s.value();
   }

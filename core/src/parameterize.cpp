@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "parameterize_cut.hpp"
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/straightest_path.hpp"
 
@@ -130,13 +131,31 @@ void takeMap(Parameterization& result, SolvedMap map) {
 }  // namespace
 
 Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions& options, const Progress& progress) {
+  record(options.timings, "cut", 0);  // every stage listed, in this order, whether it runs or not
+  if (!requireDisk(mesh)) return parameterizeByCut(mesh, options, progress);
+  auto result = parameterizeDisk(mesh, mesh, {}, options, progress);
+  if (!result) return result;
+  Parameterization& p = result.value();
+  p.cornerUv.reserve(3 * static_cast<size_t>(mesh.numFaces()));
+  for (const Triangle& t : mesh.triangles())
+    for (int32_t v : t) p.cornerUv.push_back(p.uv[v]);
+  return result;
+}
+
+std::vector<Vec2> onRealVertices(std::vector<Vec2> uv, const std::vector<int32_t>& extraOrigin) {
+  const size_t n = uv.size();
+  for (int32_t v : extraOrigin) uv.push_back(uv[v < static_cast<int32_t>(n) ? v : 0]);
+  return uv;
+}
+
+Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& real,
+                                            const std::vector<int32_t>& extraOrigin, const ParamOptions& options,
+                                            const Progress& progress) {
   const Error cancelled = cancelledError("parameterization");
   Timings* timings = options.timings;
   for (const char* stage : {"source", "trace", "boundary", "weights", "solve", "refine", "metrics", "total"})
     record(timings, stage, 0);  // every stage listed, in this order, whether it runs or not
   const Stopwatch total;
-  auto disk = requireDisk(mesh);
-  if (!disk) return disk.error();
   Parameterization result;
   result.weights = options.weights;
   const bool chooses = !options.boundary;
@@ -187,7 +206,7 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
     map.residual = solved.value();
     record(timings, "solve", stage.lap());
     if (!report(progress, "metrics", 0)) return cancelled;
-    map.metrics = textureStretch(mesh, map.uv);
+    map.metrics = textureStretch(real, extraOrigin.empty() ? map.uv : onRealVertices(map.uv, extraOrigin));
     record(timings, "metrics", stage.lap());
     map.kind = boundary.kind;
     map.polygon = std::move(boundary.polygon);
@@ -217,7 +236,8 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
     // Refined from the start in [0, 1]², exactly as refineParameterization of parameterize's own
     // result would be (the comparison refines that way): the same map either way.
     normalizeIntoUnitSquare(mesh, from.uv, from.boundaryPolygon);
-    auto refined = refineParameterization(mesh, from, options.free, progress, timings);
+    if (!extraOrigin.empty()) from.uv = onRealVertices(std::move(from.uv), extraOrigin);
+    auto refined = refineOnDisk(real, from, options.free, progress, timings);
     if (!refined) return refined.error();
     Parameterization& r = refined.value();
     if (free || !haveBest ||
@@ -238,8 +258,21 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
 Expected<Parameterization> refineParameterization(const TriMesh& mesh, const Parameterization& start,
                                                   const FreeBoundaryOptions& options, const Progress& progress,
                                                   Timings* timings) {
+  if (start.cut != CutMethod::Disk) return refineByCut(mesh, start, options, progress, timings);
   auto disk = requireDisk(mesh);
   if (!disk) return disk.error();
+  auto refined = refineOnDisk(mesh, start, options, progress, timings);
+  if (!refined) return refined;
+  Parameterization& p = refined.value();
+  p.cornerUv.reserve(3 * static_cast<size_t>(mesh.numFaces()));
+  for (const Triangle& t : mesh.triangles())
+    for (int32_t v : t) p.cornerUv.push_back(p.uv[v]);
+  return refined;
+}
+
+Expected<Parameterization> refineOnDisk(const TriMesh& mesh, const Parameterization& start,
+                                        const FreeBoundaryOptions& options, const Progress& progress,
+                                        Timings* timings) {
   if (start.boundary == BoundaryKind::Free)
     return Error{ErrorCode::InvalidArgument,
                  "a free-boundary refinement starts from a fixed-boundary map (measured or circle), not a free one"};

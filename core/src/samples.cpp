@@ -73,9 +73,36 @@ double faceHeight(double x, double y) {
          + 0.015 * std::sin(9 * x) * std::cos(7 * y);                                       // skin bumps
 }
 
+/// The "holes" sample: a low dome over the unit disk with three round holes (faces whose centroid falls
+/// inside one of three circles removed; the vertices left without a face dropped).
+TriMesh domeWithThreeHoles() {
+  const TriMesh disk = diskMesh(24, [](double x, double y) { return Vec3{x, y, 0.3 * (1 - x * x - y * y)}; });
+  const double holes[3][3] = {{0.35, 0.2, 0.2}, {-0.4, 0.25, 0.15}, {0.0, -0.45, 0.18}};  // centre x, y, radius
+  std::vector<int32_t> renumber(disk.numVertices(), -1);
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  for (const Triangle& t : disk.triangles()) {
+    const Vec3 c = (disk.position(t[0]) + disk.position(t[1]) + disk.position(t[2])) / 3;
+    bool inHole = false;
+    for (const auto& h : holes)
+      inHole = inHole || (c.x - h[0]) * (c.x - h[0]) + (c.y - h[1]) * (c.y - h[1]) < h[2] * h[2];
+    if (inHole) continue;
+    Triangle kept;
+    for (int k = 0; k < 3; ++k) {
+      if (renumber[t[k]] < 0) {
+        renumber[t[k]] = static_cast<int32_t>(positions.size());
+        positions.push_back(disk.position(t[k]));
+      }
+      kept[k] = renumber[t[k]];
+    }
+    triangles.push_back(kept);
+  }
+  return buildOrDie(std::move(positions), std::move(triangles));
+}
+
 }  // namespace
 
-std::vector<std::string> sampleNames() { return {"mountain", "cap", "saddle", "face"}; }
+std::vector<std::string> sampleNames() { return {"mountain", "cap", "saddle", "face", "holes", "sphere", "torus"}; }
 
 TriMesh makeGrid(int n, const std::function<Vec3(int i, int j)>& vertex, GridDiagonals diagonals) {
   if (n < 2) n = 2;
@@ -178,6 +205,9 @@ Expected<TriMesh> makeSample(const std::string& name) {
   if (name == "cap") return makeSphericalCap(1.0, kPi / 3, 16);
   if (name == "saddle") return diskMesh(16, [](double x, double y) { return Vec3{x, y, x * x - y * y}; });
   if (name == "face") return diskMesh(20, [](double x, double y) { return Vec3{0.8 * x, y, faceHeight(0.8 * x, y)}; });
+  if (name == "holes") return domeWithThreeHoles();
+  if (name == "sphere") return makeIcosphere(1.0, 4);
+  if (name == "torus") return makeTorus(1.0, 0.4, 48, 24);
   std::string names;
   for (const auto& n : sampleNames()) names += (names.empty() ? "" : ", ") + n;
   return Error{ErrorCode::InvalidArgument, "unknown sample '" + name + "' (available: " + names + ")"};

@@ -104,9 +104,16 @@ TEST(CompareParameterizations, AFreeRowAloneOrListedFirstIsTheSameRefinement) {
   }
 }
 
-TEST(CompareParameterizations, NeedsADiskAndCancelsAsAnError) {
-  EXPECT_EQ(compareParameterizations(testing::icosphere(1), std::nullopt, kKinds, kWeights).error().code,
-            ErrorCode::Topology);
+TEST(CompareParameterizations, CutsWhatIsNotADiskAndCancelsAsAnError) {
+  // A closed mesh: every cell cuts it the same way, so each row is that cell's parameterization.
+  const TriMesh sphere = testing::icosphere(2);
+  const auto closed = compareParameterizations(sphere, std::nullopt, {BoundaryKind::Circle}, {WeightKind::Uniform});
+  ASSERT_TRUE(closed.ok()) << closed.error().message;
+  ParamOptions o;
+  o.boundary = BoundaryKind::Circle;
+  o.weights = WeightKind::Uniform;
+  EXPECT_EQ(closed.value().rows[0].l2, parameterize(sphere, o).value().metrics.l2);
+  EXPECT_TRUE(closed.value().rows[0].bijective);
   const TriMesh mesh = makeSample("mountain").value();
   int calls = 0;
   const auto stopped = compareParameterizations(mesh, std::nullopt, kKinds, kWeights, LinearSolver::Multigrid,

@@ -87,14 +87,34 @@ TEST(Parameterize, AutoKeepsTheLeastStretchedCandidate) {
   for (const BoundaryCandidate& c : p.candidates) EXPECT_LE(p.metrics.l2, c.l2);
 }
 
-TEST(Parameterize, RefusesWhatIsNotADiskWithAMessage) {
-  auto closed = parameterize(testing::loadGood("good/tetrahedron.off"), {});
+TEST(Parameterize, RequireDiskSaysWhatWasFoundAndParameterizeCutsOrFillsWhatIsNotADisk) {
+  const TriMesh tetrahedron = testing::loadGood("good/tetrahedron.off");
+  const TriMesh annulus = testing::loadGood("good/annulus.off");
+  auto closed = requireDisk(tetrahedron);
   ASSERT_FALSE(closed.ok());
   EXPECT_EQ(closed.error().code, ErrorCode::Topology);
   EXPECT_NE(closed.error().message.find("closed"), std::string::npos) << closed.error().message;
-  auto annulus = parameterize(testing::loadGood("good/annulus.off"), {});
-  ASSERT_FALSE(annulus.ok());
-  EXPECT_NE(annulus.error().message.find("2 boundary loops"), std::string::npos) << annulus.error().message;
+  auto holed = requireDisk(annulus);
+  ASSERT_FALSE(holed.ok());
+  EXPECT_NE(holed.error().message.find("2 boundary loops"), std::string::npos) << holed.error().message;
+  // parameterize makes them disks (parameterize_cut_test.cpp has the geometry) and says how.
+  const Parameterization cut = param(tetrahedron, BoundaryKind::Circle, WeightKind::ShapePreserving);
+  EXPECT_EQ(cut.cut, CutMethod::Path);
+  EXPECT_FALSE(cut.seam.empty());
+  EXPECT_TRUE(cut.metrics.bijective);
+  const Parameterization filled = param(annulus, BoundaryKind::Circle, WeightKind::ShapePreserving);
+  EXPECT_EQ(filled.cut, CutMethod::Fill);
+  EXPECT_EQ(filled.filledLoops.size(), 1u);
+  EXPECT_TRUE(filled.metrics.bijective);
+  // A disk says it is one, with its corners the vertex map.
+  const TriMesh disk = makeSample("cap").value();
+  const Parameterization p = param(disk, BoundaryKind::Circle, WeightKind::ShapePreserving);
+  EXPECT_EQ(p.cut, CutMethod::Disk);
+  EXPECT_TRUE(p.seam.empty() && p.filledLoops.empty());
+  EXPECT_EQ(p.virtualVertices, 0);
+  ASSERT_EQ(p.cornerUv.size(), 3 * static_cast<size_t>(disk.numFaces()));
+  for (int32_t f = 0; f < disk.numFaces(); ++f)
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(p.cornerUv[3 * f + k], p.uv[disk.triangle(f)[k]]);
 }
 
 TEST(Parameterize, RefusesASourceOnTheBoundaryOrOutOfRange) {
@@ -181,11 +201,23 @@ void expectFreeResult(const TriMesh& mesh, const Parameterization& p, const Para
   for (const Vec2& q : p.uv) {
     EXPECT_TRUE(q.x >= 0 && q.x <= 1 && q.y >= 0 && q.y <= 1) << q.x << ", " << q.y;
   }
-  EXPECT_EQ(p.boundaryLoop, mesh.boundaryLoops()[0]);
   ASSERT_EQ(p.boundaryPolygon.size(), p.boundaryLoop.size());
-  for (size_t i = 0; i < p.boundaryLoop.size(); ++i) {
-    EXPECT_EQ(p.boundaryPolygon[i].x, p.uv[p.boundaryLoop[i]].x);
-    EXPECT_EQ(p.boundaryPolygon[i].y, p.uv[p.boundaryLoop[i]].y);
+  if (p.cut == CutMethod::Disk) {
+    EXPECT_EQ(p.boundaryLoop, mesh.boundaryLoops()[0]);
+    for (size_t i = 0; i < p.boundaryLoop.size(); ++i) {
+      EXPECT_EQ(p.boundaryPolygon[i].x, p.uv[p.boundaryLoop[i]].x);
+      EXPECT_EQ(p.boundaryPolygon[i].y, p.uv[p.boundaryLoop[i]].y);
+    }
+  } else {
+    // Cut or filled: the loop is the disk's, in mesh numbers; a seam vertex has a uv per side, and the
+    // polygon's point is the uv of one of its corners.
+    std::vector<std::vector<Vec2>> cornersOf(mesh.numVertices());
+    for (int32_t f = 0; f < mesh.numFaces(); ++f)
+      for (int k = 0; k < 3; ++k) cornersOf[mesh.triangle(f)[k]].push_back(p.cornerUv[3 * f + k]);
+    for (size_t i = 0; i < p.boundaryLoop.size(); ++i) {
+      const auto& corners = cornersOf[p.boundaryLoop[i]];
+      EXPECT_NE(std::find(corners.begin(), corners.end(), p.boundaryPolygon[i]), corners.end()) << i;
+    }
   }
   ASSERT_FALSE(p.candidates.empty());
   const BoundaryCandidate& last = p.candidates.back();
@@ -302,8 +334,8 @@ TEST(FreeBoundary, OnEverySampleItIsBijectiveAndLessStretchedThanEveryFixedBound
 
 TEST(FreeBoundary, TimingsListRefineAndOnlyFreeAndAutoSpendTimeThere) {
   const TriMesh mesh = makeSample("mountain").value();
-  const std::vector<std::string> stages = {"source", "trace",  "boundary", "weights",
-                                           "solve",  "refine", "metrics",  "total"};
+  const std::vector<std::string> stages = {"cut",   "source", "trace",   "boundary", "weights",
+                                           "solve", "refine", "metrics", "total"};
   for (std::optional<BoundaryKind> b :
        {std::optional<BoundaryKind>(BoundaryKind::Circle), std::optional<BoundaryKind>(BoundaryKind::Free),
         std::optional<BoundaryKind>()}) {
@@ -346,11 +378,17 @@ TEST(FreeBoundary, ReportsRefineAndCancellingThereIsACancelledErrorThatLeavesNot
   }
 }
 
-TEST(FreeBoundary, NeedsADiskAndAnInteriorSourceAsMeasuredDoes) {
+TEST(FreeBoundary, NeedsAnInteriorSourceAsMeasuredDoesAndRefinesWhatIsNotADiskToo) {
   ParamOptions o;
   o.boundary = BoundaryKind::Free;
-  EXPECT_EQ(parameterize(testing::loadGood("good/tetrahedron.off"), o).error().code, ErrorCode::Topology);
-  EXPECT_EQ(parameterize(testing::loadGood("good/annulus.off"), o).error().code, ErrorCode::Topology);
+  o.free.maxIterations = 20;
+  for (const char* file : {"good/tetrahedron.off", "good/annulus.off"}) {
+    const TriMesh notADisk = testing::loadGood(file);
+    auto p = parameterize(notADisk, o);
+    ASSERT_TRUE(p.ok()) << file << ": " << p.error().message;
+    EXPECT_NE(p.value().cut, CutMethod::Disk) << file;
+    EXPECT_TRUE(p.value().metrics.bijective) << file;
+  }
   const TriMesh mesh = makeSample("cap").value();
   o.source = SurfacePoint::vertex(mesh.boundaryLoops()[0][0]);
   auto onBoundary = parameterize(mesh, o);

@@ -8,19 +8,37 @@
 namespace straightest {
 namespace {
 
-TEST(Samples, EverySampleIsAConsistentlyOrientedDiskWithoutDegenerateFaces) {
+TEST(Samples, EverySampleIsAConsistentlyOrientedConnectedMeshWithoutDegenerateFaces) {
   for (const std::string& name : sampleNames()) {
     auto mesh = makeSample(name);
     ASSERT_TRUE(mesh.ok()) << name << ": " << mesh.error().message;
     const MeshSummary& s = mesh.value().summary();
-    EXPECT_EQ(s.boundaryLoopSizes.size(), 1u) << name;
-    EXPECT_EQ(s.eulerCharacteristic, 1) << name;
     EXPECT_EQ(s.components, 1) << name;
     EXPECT_EQ(s.degenerateFaces, 0) << name;
     EXPECT_EQ(s.reorientedFaces, 0) << name;
-    for (int f = 0; f < mesh.value().numFaces(); ++f)
-      ASSERT_GT(mesh.value().faceNormal(f).z, 0) << name << ": face " << f << " faces down";
+    EXPECT_EQ(s.unreferencedVertices, 0) << name;
   }
+}
+
+TEST(Samples, TheReliefsAreUpwardFacingDisksTheOthersHaveTheTopologyTheirNamesSay) {
+  for (const std::string name : {"mountain", "cap", "saddle", "face", "holes"}) {
+    const TriMesh mesh = makeSample(name).value();
+    const MeshSummary& s = mesh.summary();
+    // χ = 2 − 2g − k with genus 0: a disk has one loop, the holes sample four.
+    const size_t loops = name == "holes" ? 4 : 1;
+    EXPECT_EQ(s.boundaryLoopSizes.size(), loops) << name;
+    EXPECT_EQ(s.eulerCharacteristic, 2 - static_cast<int64_t>(loops)) << name;
+    for (int f = 0; f < mesh.numFaces(); ++f)
+      ASSERT_GT(mesh.faceNormal(f).z, 0) << name << ": face " << f << " faces down";
+  }
+  const TriMesh sphere = makeSample("sphere").value(), torus = makeSample("torus").value();
+  EXPECT_TRUE(sphere.boundaryLoops().empty());
+  EXPECT_EQ(sphere.summary().eulerCharacteristic, 2);
+  EXPECT_TRUE(torus.boundaryLoops().empty());
+  EXPECT_EQ(torus.summary().eulerCharacteristic, 0);  // genus 1
+  int samplesSeen = 0;
+  for (const std::string& name : sampleNames()) samplesSeen += makeSample(name).ok();
+  EXPECT_EQ(samplesSeen, 7) << "every name is checked above";
 }
 
 TEST(Samples, MountainIsThePapers2500VertexHeightField) {

@@ -406,23 +406,38 @@ describe('parameterization', () => {
     assert(png.suggestedFilename().includes('free') && png.suggestedFilename().endsWith('.png'), `layout PNG ${png.suggestedFilename()}`);
   });
 
-  pageTest('a closed mesh shows the core’s disk message in the parameterization panel', {
+  pageTest('closed meshes are cut to a disk: the sphere and torus samples show a layout and report their seam', {
     ready: 'window.__straightest.param',
   }, async ({ page }) => {
+    for (const [name, cut] of [['sphere', 'path'], ['torus', 'cut-graph']]) {
+      await page.selectOption('#sample-select', name);
+      await page.waitForFunction((c) => window.__straightest.param?.cut === c && !window.__straightest.progress.busy, cut);
+      const { param, paramError } = await page.evaluate(() => window.__straightest);
+      assert(paramError === null, `${name}: ${JSON.stringify(paramError)}`);
+      assert(param.seamEdges > 0 && param.bijective && Number.isFinite(param.l2), `${name}: ${JSON.stringify(param)}`);
+      const message = await page.textContent('#param-message');
+      assert(message.includes(`seam of ${param.seamEdges} edges`), `${name}: the panel says '${message}'`);
+      const layout = await uvLayoutCoverage(page);
+      assert(layout.fraction > 0.1, `${name}: only ${(layout.fraction * 100).toFixed(1)}% of the uv canvas is drawn on`);
+      assert(await page.isHidden('#error-panel'), `${name}: the error panel is visible`);
+    }
+    // A closed file too (it was refused before): no error, a cut.
     await page.setInputFiles('#file-input', {
       name: 'tetrahedron.off', mimeType: 'text/plain', buffer: Buffer.from(TETRAHEDRON_OFF),
     });
-    await expectReady(page, 'window.__straightest.lastInfo.vertices === 4 && window.__straightest.paramError');
-    const { param, paramError } = await page.evaluate(() => window.__straightest);
-    assert(param === null, `the previous mesh's parameterization is still listed: ${JSON.stringify(param)}`);
-    assert(paramError.category === 'topology', `error category '${paramError.category}'`);
+    await expectReady(page, 'window.__straightest.lastInfo.vertices === 4 && window.__straightest.param');
+    const { param } = await page.evaluate(() => window.__straightest);
+    assert(param.cut === 'path', `tetrahedron: ${JSON.stringify(param)}`);
+    assert(!(await page.isDisabled('#compare-button')), 'compare stays disabled on a cut mesh');
+  });
+
+  pageTest('holes are filled virtually, with a note', { ready: 'window.__straightest.param' }, async ({ page }) => {
+    await page.selectOption('#sample-select', 'holes');
+    await page.waitForFunction(() => window.__straightest.param?.cut === 'fill' && !window.__straightest.progress.busy);
+    const { param } = await page.evaluate(() => window.__straightest);
+    assert(param.filledLoops.length === 3 && param.bijective, `holes: ${JSON.stringify(param)}`);
     const message = await page.textContent('#param-message');
-    assert(/disk/i.test(message) && message.includes(paramError.message), `param panel says '${message}'`);
-    assert(await page.isVisible('#param-message'), 'the message is hidden');
-    assert(await page.isHidden('#error-panel'), 'the global error panel is visible');
-    assert((await page.textContent('#stats-paths')).trim() === '0', 'the paths view did not update');
-    assert(await page.isDisabled('#compare-button') && await page.isDisabled('#export-obj-button'),
-      'compare/export stay enabled on a non-disk');
+    assert(/3 holes filled virtually; outer boundary = loop \d/.test(message), `the panel says '${message}'`);
   });
 });
 

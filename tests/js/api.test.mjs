@@ -44,7 +44,7 @@ test('reports reoriented faces', async () => {
 });
 
 test('built-in samples come from the core', () => {
-  assert.deepEqual(st.sampleNames(), ['mountain', 'cap', 'saddle', 'face']);
+  assert.deepEqual(st.sampleNames(), ['mountain', 'cap', 'saddle', 'face', 'holes', 'sphere', 'torus']);
   const mesh = st.sample('mountain');
   assert.equal(mesh.info().vertices, 2500);
   mesh.delete();

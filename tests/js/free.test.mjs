@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { createStraightest } from '../../wasm/index.js';
 
 const st = await createStraightest();
-const stages = ['source', 'trace', 'boundary', 'weights', 'solve', 'refine', 'metrics', 'total'];
+const stages = ['cut', 'source', 'trace', 'boundary', 'weights', 'solve', 'refine', 'metrics', 'total'];
 
 /** What every free result satisfies, whatever the refinement did. */
 function checkFree(mesh, p, maxIterations) {
@@ -20,11 +20,24 @@ function checkFree(mesh, p, maxIterations) {
   assert.equal(Number.isFinite(p.stretch.l2), p.bijective, 'a finite stretch only for a bijective map');
   assert.equal(p.uv.length, 2 * mesh.info().vertices);
   assert.ok(p.uv.every((x) => x >= 0 && x <= 1));
-  assert.deepEqual(p.boundaryLoop, mesh.boundaryLoops()[0]);
-  p.boundaryLoop.forEach((v, i) => {
-    assert.equal(p.boundaryPolygon[2 * i], p.uv[2 * v]);
-    assert.equal(p.boundaryPolygon[2 * i + 1], p.uv[2 * v + 1]);
-  });
+  if (p.cut === 'disk') {
+    assert.deepEqual(p.boundaryLoop, mesh.boundaryLoops()[0]);
+    p.boundaryLoop.forEach((v, i) => {
+      assert.equal(p.boundaryPolygon[2 * i], p.uv[2 * v]);
+      assert.equal(p.boundaryPolygon[2 * i + 1], p.uv[2 * v + 1]);
+    });
+  } else {
+    // Cut or filled: a seam vertex has a uv per side; the polygon's point is one of its corners' uv.
+    const indices = mesh.indices();
+    const corners = new Map();
+    indices.forEach((v, c) => {
+      if (!corners.has(v)) corners.set(v, []);
+      corners.get(v).push(`${p.cornerUv[2 * c]},${p.cornerUv[2 * c + 1]}`);
+    });
+    p.boundaryLoop.forEach((v, i) => {
+      assert.ok(corners.get(v).includes(`${p.boundaryPolygon[2 * i]},${p.boundaryPolygon[2 * i + 1]}`), `loop ${i}`);
+    });
+  }
   assert.equal(p.candidates.at(-1).boundary, 'free');
   assert.equal(p.candidates.at(-1).l2, p.stretch.l2);
   assert.equal(p.candidates.at(-1).overlaps, p.overlaps);
@@ -105,7 +118,7 @@ test('cancelling during refine throws cancelled and the mesh and module stay usa
   mesh.delete();
 });
 
-test('the refinement options are checked; a non-disk and a boundary source are refused as for measured', () => {
+test('the refinement options are checked; a boundary source is refused as for measured; a non-disk is cut', () => {
   const mesh = st.sample('cap');
   for (const maxIterations of [0, -3, 1.5, 'ten', Infinity])
     assert.throws(() => mesh.parameterize({ boundary: 'free', maxIterations }), (e) => e.category === 'invalid_argument' && /maxIterations/.test(e.message));
@@ -117,7 +130,9 @@ test('the refinement options are checked; a non-disk and a boundary source are r
   assert.throws(() => mesh.parameterize({ boundary: 'free', source: onBoundary }), (e) => e.category === 'invalid_argument' && e.message === measuredError);
   mesh.delete();
   const closed = st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1], [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3]);
-  assert.throws(() => closed.parameterize({ boundary: 'free' }), (e) => e.category === 'topology' && /disk/.test(e.message));
+  const cut = closed.parameterize({ boundary: 'free', maxIterations: 10 });
+  checkFree(closed, cut, 10);
+  assert.equal(cut.cut, 'path');
   closed.delete();
 });
 

@@ -35,8 +35,12 @@ test('auto reports every candidate and keeps the least stretched', () => {
 });
 
 test('refusals are Errors with messages', () => {
+  // A closed mesh is not refused: it is cut along a seam (cut.test.mjs), and a source on the seam is.
   const closed = st.loadMesh('OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n');
-  assert.throws(() => closed.parameterize(), (e) => e instanceof Error && e.category === 'topology' && /disk/.test(e.message));
+  const cut = closed.parameterize({ boundary: 'circle' });
+  assert.equal(cut.cut, 'path');
+  assert.throws(() => closed.parameterize({ source: cut.seam[0] }),
+    (e) => e instanceof Error && e.category === 'invalid_argument' && /seam/.test(e.message));
   closed.delete();
   const mesh = st.sample('cap');
   assert.throws(() => mesh.parameterize({ boundary: 'ellipse' }), /unknown boundary 'ellipse'/);

@@ -8,6 +8,7 @@ import {
   StraightestError,
   type Straightest,
   type BasePlane,
+  type CutMethod,
   type ErrorCategory,
   type MeshInfo,
   type Parameterization,
@@ -15,7 +16,7 @@ import {
   type SurfacePoint,
   type TraceStatus,
 } from 'straightest';
-import { applyUV, meshFromBufferGeometry, toBufferGeometry } from 'straightest/three';
+import { applyUV, meshFromBufferGeometry, toBufferGeometry, toSeamSplitGeometry } from 'straightest/three';
 import * as inline from 'straightest/inline';
 import { createStraightestWorker, type WorkerMesh } from 'straightest/worker';
 import { BufferGeometry } from 'three';
@@ -191,6 +192,19 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const loop: Int32Array = p.boundaryLoop;
   const total: number = p.timings.total;
   void [stretch, bijective, polygon, loop, total, p.faceStretch, p.residual];
+  // Every manifold mesh: how it was made a disk, and the map per face corner.
+  const cut: CutMethod = p.cut;
+  assertType<Equal<typeof p.cut, 'disk' | 'fill' | 'path' | 'cut-graph'>>();
+  const cornerUv: Float32Array = p.cornerUv;
+  const seam: Int32Array = p.seam;
+  const filled: number[] = p.filledLoops;
+  const counts: number[] = [p.genus, p.seamEdges, p.seamLength, p.component, p.components, p.virtualVertices];
+  const cutMs: number = p.timings.cut;
+  const splitObj: string = mesh.toOBJ(p.cornerUv);
+  void [cut, cornerUv, seam, filled, counts, cutMs, splitObj];
+  // @ts-expect-error a cut is one of four methods
+  const spiral: CutMethod = 'spiral';
+  void spiral;
   // @ts-expect-error no 'ellipse' boundary
   mesh.parameterize({ boundary: 'ellipse' });
   // @ts-expect-error no 'harmonic' weights
@@ -267,7 +281,11 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   applyUV(geometry, 'uv');
   // @ts-expect-error the straightest instance comes first
   meshFromBufferGeometry(geometry);
-  void textured;
+  const split: BufferGeometry = toSeamSplitGeometry(fromThree, p);
+  toSeamSplitGeometry(fromThree, { cornerUv: new Float32Array(6) });
+  // @ts-expect-error it needs the parameterization (its cornerUv), not the per-vertex uv
+  toSeamSplitGeometry(fromThree, p.uv);
+  void [textured, split];
 
   // Lifetime: `using` frees a mesh at the end of its scope; constructors are the library's own.
   {

@@ -24,10 +24,11 @@ struct BoundaryPolygon {
 /// order (the default list of the bindings).
 std::vector<BoundaryKind> polygonBoundaryKinds();
 
-/// One entry per kind, in the given order. The mesh must be a disk (else a Topology error for the
-/// whole call); `source` (nullopt: the default source) is needed by measured only, and a bad one is
-/// that entry's error. Asking for free is an InvalidArgument error for the whole call. Progress stage
-/// "trace" (measured); cancelling returns a Cancelled error.
+/// One entry per kind, in the given order. A mesh that is not a disk is first cut or filled as
+/// parameterize does (progress stage "cut"): the polygons are that disk's, the loop in mesh vertex
+/// numbers (a seam vertex appears once per side), its errors the whole call's; `source` (nullopt: the default source)
+/// is needed by measured only, and a bad one is that entry's error. Asking for free is an InvalidArgument error for the
+/// whole call. Progress stage "trace" (measured); cancelling returns a Cancelled error.
 Expected<std::vector<BoundaryPolygon>> boundaryPolygons(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
                                                         const std::vector<BoundaryKind>& kinds,
                                                         const Progress& progress = {});

@@ -1,4 +1,4 @@
-// compare_parameterizations.hpp — every boundary kind × every weight kind of one disk, parameterized
+// compare_parameterizations.hpp — every boundary kind × every weight kind of one mesh, parameterized
 // and judged side by side, with the best row picked by preferredMap (the rule boundary 'auto' uses).
 // What the page's comparison table shows. A free row refines the map its weights' measured (if
 // bijective) or circle row already solved, as parameterize with boundary free would (no second solve).
@@ -32,9 +32,10 @@ struct Comparison {
   int64_t best = -1;                // index into rows by preferredMap over the rows without error; -1 if none
 };
 
-/// The source is resolved once (nullopt: the default source) and shared by every cell. The mesh must
-/// be a disk (else a Topology error for the whole call). Progress stage "compare": the fraction of
-/// cells done; cancelling (at any point, also inside a cell) returns a Cancelled error. `free`: the
+/// The source is resolved once (nullopt: the default source) and shared by every cell. A mesh that is
+/// not a disk is cut (or filled) by each cell's parameterize the same way (cutToDisk is deterministic),
+/// with the disk's default source; a cell that cannot be parameterized keeps its error. Progress stage "compare": the
+/// fraction of cells done; cancelling (at any point, also inside a cell) returns a Cancelled error. `free`: the
 /// refinement's options for free rows.
 Expected<Comparison> compareParameterizations(const TriMesh& mesh, const std::optional<SurfacePoint>& source,
                                               const std::vector<BoundaryKind>& boundaries,

@@ -65,7 +65,13 @@ struct FreeBoundaryResult {
   bool untangled = false;    // the start had flipped or degenerate triangles and was untangled first
 };
 
-/// `mesh` must be a disk (the caller checks); `start` has one uv per vertex. Progress stage "refine"
+/// `mesh` is a disk, or a disk with holes (parameterize refines the real faces of a filled disk, its holes
+/// left free; the caller checks): what the guarantee needs is a start with no flipped or degenerate face
+/// and no crossing between any two boundary edges of any loops. Such a map is injective on a disk with
+/// holes too: the number of preimages of a point is the winding number of the outer loop's image (0 or
+/// 1) plus the holes' (0 or −1, their loops run clockwise), so at most 1; and the line search keeps all
+/// three conditions over every loop. Untangling holds every boundary vertex, the holes' rims included.
+/// `start` has one uv per vertex. Progress stage "refine"
 /// (fraction by iteration; when the start is untangled first, untangling is its first half). Errors:
 /// InvalidArgument (start of the wrong size or not finite at a vertex of a face, negative options),
 /// Cancelled.

@@ -11,11 +11,15 @@
 // filled virtually with the longest loop as the outer boundary; closed and higher-genus surfaces cut
 // along a seam) and the disk is parameterized, virtual vertices and faces dropped from the output. The
 // result then says how (`cut`), and its map is per face corner (`cornerUv`: a seam vertex has one uv per
-// side). The source (measured and free boundaries) must be an interior point of the disk (not on the
-// seam). UVs are scaled into [0, 1]² by their bounding box (aspect kept); unreferenced vertices get
-// (0, 0). With convex-combination weights (all but cotan) and a fixed boundary the interior lies
-// inside the convex boundary polygon, so that box is the polygon's (unitSquareFrame):
-// boundary_polygons.hpp gives every fixed polygon in this frame without a solve. The free boundary's
+// side). The source (measured and free boundaries) must be an interior point of the mesh and of the disk
+// (not on the seam: an InvalidArgument error); the default source is the disk's (defaultSource), or when
+// that is a filled hole's centre, the real vertex farthest inside the disk. The stretch is measured on
+// the real faces only; the free boundary refines the real faces from the filled solve's map, holes free
+// (free_boundary.hpp says why that stays bijective). boundaryPolygons and compareParameterizations cut
+// the same way. Progress stage "cut" comes first (and the timing "cut", 0 for a disk). UVs are scaled into [0, 1]² by
+// their bounding box (aspect kept); unreferenced vertices get (0, 0). With convex-combination weights (all but cotan)
+// and a fixed boundary the interior lies inside the convex boundary polygon, so that box is the polygon's
+// (unitSquareFrame): boundary_polygons.hpp gives every fixed polygon in this frame without a solve. The free boundary's
 // polygon is the refined loop's uv (not convex), known only after the refinement.
 #pragma once
 #include <optional>
@@ -45,8 +49,8 @@ struct ParamOptions {
   WeightKind weights = WeightKind::ShapePreserving;
   LinearSolver solver = LinearSolver::Multigrid;
   FreeBoundaryOptions free;  // the refinement's iteration cap, tolerance and time budget (boundary free and auto)
-  /// When set, receives "source", "trace", "boundary", "weights", "solve", "refine", "metrics" and
-  /// "total" (every one, 0 for a stage that did not run).
+  /// When set, receives "cut", "source", "trace", "boundary", "weights", "solve", "refine", "metrics"
+  /// and "total" (every one, 0 for a stage that did not run).
   Timings* timings = nullptr;
 };
 
@@ -119,8 +123,11 @@ Expected<Parameterization> parameterize(const TriMesh& mesh, const ParamOptions&
 /// parameterize does after its solve, for a caller that holds the start, e.g. the comparison). The
 /// result has boundary Free, init = start.boundary, the start's source, weights, loop, fallbacks
 /// and residual, and its candidates plus the free one. Records "refine" and "metrics" in `timings`.
-/// Errors: Topology (not a disk), InvalidArgument (a start that is itself free, or of the wrong
-/// size), Cancelled.
+/// A start whose cut is not Disk (parameterize cut or filled the mesh) is refined on the same disk
+/// (cutToDisk again: it is deterministic; its cornerUv placed on the disk, the real faces refined with
+/// the holes free) and mapped back like parameterize's result. Errors: Topology (a start of cut Disk
+/// on a mesh that is not one), InvalidArgument (a start that is itself free, or of the wrong size),
+/// Cancelled.
 Expected<Parameterization> refineParameterization(const TriMesh& mesh, const Parameterization& start,
                                                   const FreeBoundaryOptions& options = {},
                                                   const Progress& progress = {}, Timings* timings = nullptr);

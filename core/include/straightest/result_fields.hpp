@@ -143,6 +143,23 @@ void visitRefinement(const Parameterization& p, V& v) {
   v.flag("untangled", p.untangled);
 }
 
+/// How the mesh was made a disk (disk_cut.hpp) and the map per face corner: cornerUv 6 numbers per
+/// face (NaN outside the parameterized component), seam 2 vertex numbers per edge cut open.
+template <class V>
+void visitCut(const Parameterization& p, V& v) {
+  static_assert(sizeof(std::array<int32_t, 2>) == 2 * sizeof(int32_t), "seam edges as packed int32 pairs");
+  v.text("cut", cutMethodName(p.cut));
+  v.bulk("cornerUv", packed(p.cornerUv), 2 * p.cornerUv.size(), Bulk::Float32);
+  v.bulk("seam", reinterpret_cast<const int32_t*>(p.seam.data()), 2 * p.seam.size(), Bulk::Int32);
+  v.count("seamEdges", static_cast<int64_t>(p.seam.size()));
+  v.number("seamLength", p.seamLength);
+  v.counts("filledLoops", std::vector<int64_t>(p.filledLoops.begin(), p.filledLoops.end()));
+  v.count("genus", p.genus);
+  v.count("component", p.component);
+  v.count("components", p.components);
+  v.count("virtualVertices", p.virtualVertices);
+}
+
 template <class V>
 void visitFields(const Parameterization& p, V& v) {
   const StretchMetrics& m = p.metrics;
@@ -175,6 +192,7 @@ void visitFields(const Parameterization& p, V& v) {
   v.number("residual", p.residual);
   visitRefinement(p, v);
   v.list("candidates", p.candidates);
+  visitCut(p, v);
 }
 
 /// "error" and "category" of a part that may have failed: the error's, or null for both.

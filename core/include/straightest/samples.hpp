@@ -6,7 +6,11 @@
 //  - "cap":      a spherical cap of radius 1 and polar angle 60°, rings around the pole.
 //  - "saddle":   z = x² − y² over the unit disk.
 //  - "face":     a bumpy, face-like relief (a nose, brows, cheeks) over an elliptical disk.
-// All are disks (one boundary loop, χ = 1).
+//  - "holes":    a low dome over the unit disk with three round holes (4 boundary loops, genus 0).
+//  - "sphere":   a closed icosphere of radius 1 (makeIcosphere(1, 4): 2562 vertices).
+//  - "torus":    a closed torus, R = 1, r = 0.4 (makeTorus(1, 0.4, 48, 24): genus 1).
+// The first four are disks (one boundary loop, χ = 1); the last three are what parameterize cuts or
+// fills into a disk first (disk_cut.hpp).
 #pragma once
 #include <functional>
 #include <string>
