@@ -49,7 +49,7 @@ class HeatMethod {
   std::unique_ptr<Impl> impl_;
 };
 
-enum class DistanceMethod { Heat, Dijkstra };
+enum class DistanceMethod { Heat, Dijkstra, Exact };  // Exact: window propagation (exact_geodesic.hpp)
 Expected<DistanceMethod> parseDistanceMethod(const std::string& name);
 
 /// Distances on one mesh by either method; the heat method's factorization is made at the first heat
