@@ -49,7 +49,10 @@ class Walk {
  public:
   Walk(const TriMesh& mesh, GeodesicShot& shot, const ShootOptions& options, const Progress& progress)
       : mesh_(mesh), shot_(shot), progress_(progress), report_(progress_, "shoot") {
-    maxSteps_ = options.maxSteps > 0 ? options.maxSteps : 16 * static_cast<int64_t>(mesh.numFaces()) + 1024;
+    const double perEdge = std::min(shot.requestedLength / mesh.meanEdgeLength(), 1e15);
+    maxSteps_ = options.maxSteps > 0
+                    ? options.maxSteps
+                    : 16 * (static_cast<int64_t>(mesh.numFaces()) + static_cast<int64_t>(perEdge)) + 1024;
     vertexTolerance_ = kOnPlaneRel * mesh.meanEdgeLength();
   }
 

@@ -41,7 +41,9 @@ enum class ShootStatus : uint8_t {
 const char* shootStatusName(ShootStatus s);
 
 struct ShootOptions {
-  int64_t maxSteps = 0;  // 0: 16 · faces + 1024 (a geodesic may wind over a face many times, not unboundedly)
+  // 0: 16 · (faces + length / mean edge length) + 1024: a geodesic may wind over a face many times, but
+  // each step advances (a bound against a walk stuck in a degenerate neighbourhood, not a limit on length).
+  int64_t maxSteps = 0;
 };
 
 struct GeodesicShot {
