@@ -126,7 +126,8 @@ export type BoundaryKind = 'measured' | 'circle' | 'square' | 'free';
 export type InitBoundary = 'measured' | 'circle';
 export type WeightKind = 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform';
 export type LinearSolver = 'multigrid' | 'lu' | 'bicgstab';
-export type DistanceMethod = 'heat' | 'dijkstra';
+/** 'exact': window propagation (exact polyhedral geodesic distance). */
+export type DistanceMethod = 'heat' | 'dijkstra' | 'exact';
 
 export interface ParameterizeOptions {
   /** Center of the measured boundary (default 'auto'); must be interior (also for 'free' and 'auto'). */
