@@ -59,6 +59,8 @@ class Walk {
   /// Maps the tangent vector `tangent` (in the plane of normal n) into a face around the source and walks.
   Expected<bool> run(const Vec3& tangent, const Vec3& n) {
     const SurfacePoint& s = shot_.source;
+    shot_.points.reserve(256);
+    shot_.positions.reserve(256);
     shot_.points.push_back(s);
     shot_.positions.push_back(position(mesh_, s));
     p_ = shot_.positions.back();
@@ -206,19 +208,37 @@ class Walk {
         return finish();
       }
       const Vec3 n = mesh_.faceNormal(face_);
+      // Corners and twins of the face in one cache line (the walk visits faces all over the mesh).
+      const FaceAdjacency& adjacency = mesh_.adjacency(face_);
+      const int32_t first = 3 * face_;
       int32_t exit = -1;
       double exitS = kInf, exitT = 0;
-      for (int k = 0; k < 3; ++k) {
-        const int32_t h = 3 * face_ + k;
-        if (h == skip_ || (only_ >= 0 && h != only_)) continue;
-        const Vec3 a = mesh_.position(mesh_.tail(h)), e = mesh_.position(mesh_.head(h)) - a;
+      auto consider = [&](int32_t h) {
+        const int32_t k = h - first;
+        const Vec3 a = mesh_.position(adjacency.corners[k]);
+        const Vec3 e = mesh_.position(adjacency.corners[k == 2 ? 0 : k + 1]) - a;
         const double den = dot(cross(d_, e), n);
-        if (!(den > 0)) continue;  // the ray does not leave through this edge
+        if (!(den > 0)) return;  // the ray does not leave through this edge
         const double s = dot(cross(a - p_, e), n) / den;
         if (s < exitS) {
           exitS = s;
           exitT = dot(cross(a - p_, d_), n) / den;
           exit = h;
+        }
+      };
+      if (skip_ >= 0) {
+        // Entered through skip_: the ray leaves through the edge on the side of the opposite corner it passes.
+        const int32_t nextH = TriMesh::next(skip_), prevH = TriMesh::prev(skip_);
+        const Vec3 c = mesh_.position(adjacency.corners[(skip_ - first + 2) % 3]);
+        consider(dot(cross(d_, c - p_), n) > 0 ? nextH : prevH);
+        if (exit < 0) {  // rounding at the corner: let both edges compete
+          consider(nextH);
+          consider(prevH);
+        }
+      } else {
+        for (int k = 0; k < 3; ++k) {
+          const int32_t h = 3 * face_ + k;
+          if (only_ < 0 || h == only_) consider(h);
         }
       }
       if (exit < 0) {
@@ -233,7 +253,8 @@ class Walk {
         shot_.status = ShootStatus::ReachedLength;
         return finish();
       }
-      const int32_t tail = mesh_.tail(exit), head = mesh_.head(exit);
+      const int32_t exitK = exit - first;
+      const int32_t tail = adjacency.corners[exitK], head = adjacency.corners[exitK == 2 ? 0 : exitK + 1];
       const double edgeLength = norm(mesh_.position(head) - mesh_.position(tail));
       const double t = std::clamp(exitT, 0.0, 1.0);
       const int32_t vertex = t * edgeLength <= vertexTolerance_         ? tail
@@ -245,8 +266,9 @@ class Walk {
         continue;
       }
       const Vec3 x = mesh_.position(tail) * (1 - t) + mesh_.position(head) * t;
-      record(canonical(mesh_, SurfacePoint::edge(exit, t), kExactSnap), x);
-      const int32_t twin = mesh_.twin(exit);
+      const int32_t twin = adjacency.twins[exitK];
+      // The canonical edge point (the smaller halfedge; t is away from the ends, which are vertex passings).
+      record(twin >= 0 && twin < exit ? SurfacePoint::edge(twin, 1 - t) : SurfacePoint::edge(exit, t), x);
       if (twin < 0) {
         shot_.status = ShootStatus::HitBoundary;
         return finish();
@@ -254,7 +276,9 @@ class Walk {
       // Unfold: keep the components along the edge and across it (into the next face).
       const Vec3 u = normalized(mesh_.position(head) - mesh_.position(tail));
       const int32_t next = TriMesh::face(twin);
-      d_ = normalized(u * dot(d_, u) + cross(mesh_.faceNormal(next), u) * dot(d_, cross(n, u)));
+      // (A rotation about the edge: the length stays 1 up to rounding, renormalized now and then.)
+      d_ = u * dot(d_, u) + cross(mesh_.faceNormal(next), u) * dot(d_, cross(n, u));
+      if ((step & 63) == 0) d_ = normalized(d_);
       face_ = next;
       skip_ = twin;
       only_ = -1;
@@ -323,9 +347,14 @@ Expected<GeodesicShot> shootGeodesic(const TriMesh& mesh, const SurfacePoint& so
     if (!(norm(direction) > 0)) return invalid("the direction has zero length");
     auto s = prepare(mesh, source, length, true);
     if (!s) return s.error();
-    auto frame = tangentFrame(mesh, s.value());
-    if (!frame) return frame.error();
-    const Vec3 n = frame.value().normal;
+    Vec3 n;
+    if (options.tangentNormal && norm(*options.tangentNormal) > 0 && isFinite(*options.tangentNormal)) {
+      n = normalized(*options.tangentNormal);
+    } else {
+      auto frame = tangentFrame(mesh, s.value());
+      if (!frame) return frame.error();
+      n = frame.value().normal;
+    }
     const Vec3 tangent = projected(direction, n);
     if (!(norm(tangent) > 1e-12 * norm(direction)))
       return invalid("the direction is along the surface normal at the source (no tangent component)");

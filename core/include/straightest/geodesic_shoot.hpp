@@ -44,6 +44,10 @@ struct ShootOptions {
   // 0: 16 · (faces + length / mean edge length) + 1024: a geodesic may wind over a face many times, but
   // each step advances (a bound against a walk stuck in a degenerate neighbourhood, not a limit on length).
   int64_t maxSteps = 0;
+  // The plane a 3D direction is projected onto, by its normal (default: the area-weighted normal at the
+  // source). shootGeodesicToward passes the base normal; a caller shooting many times from one source can
+  // compute basePlane once and pass it here.
+  std::optional<Vec3> tangentNormal;
 };
 
 struct GeodesicShot {
@@ -61,7 +65,7 @@ struct GeodesicShot {
   Vec3 endPosition;
   // Toward a destination (NaN otherwise):
   Vec3 target{std::numeric_limits<double>::quiet_NaN(), 0, 0};
-  double straightestDistance = std::numeric_limits<double>::quiet_NaN();  // cutting plane's, when reached
+  double straightestDistance = std::numeric_limits<double>::quiet_NaN();  // cutting plane's (NaN: a length was given)
   double missDistance = std::numeric_limits<double>::quiet_NaN();         // closest approach to the target
 };
 
@@ -81,7 +85,8 @@ Expected<GeodesicShot> shootGeodesicAtAngle(const TriMesh& mesh, const SurfacePo
                                             const Progress& progress = {});
 
 /// Shoots toward a destination (see the file comment); without a length, for the cutting plane's straightest
-/// distance to it (an InvalidArgument error when the cutting plane does not reach it: give a length).
+/// distance to it (an InvalidArgument error when the cutting plane does not reach it: give a length), which
+/// is then reported as straightestDistance.
 Expected<GeodesicShot> shootGeodesicToward(const TriMesh& mesh, const SurfacePoint& source,
                                            const SurfacePoint& destination, std::optional<double> length = {},
                                            const ShootOptions& options = {}, const Progress& progress = {});
