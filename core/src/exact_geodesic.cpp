@@ -43,8 +43,13 @@ struct Window {
   int32_t origin;  // pseudo-source vertex, −1: the source point
 };
 
+/// A queue entry: the window's key beside its slot in the pool, so that the heap moves 16 bytes, not 64.
+struct Entry {
+  double key;
+  int32_t slot;
+};
 struct Later {
-  bool operator()(const Window& a, const Window& b) const { return a.key > b.key; }
+  bool operator()(const Entry& a, const Entry& b) const { return a.key > b.key; }
 };
 
 class Propagation {
@@ -85,8 +90,10 @@ class Propagation {
                                                 "or too degenerate for window propagation"};
       }
       std::pop_heap(queue_.begin(), queue_.end(), Later{});
-      const Window w = queue_.back();
+      const int32_t slot = queue_.back().slot;
       queue_.pop_back();
+      const Window w = pool_[slot];
+      free_.push_back(slot);
       if (w.halfedge < 0) emitFromVertex(-1 - w.halfedge, false);
       else propagate(w);
     }
@@ -96,7 +103,16 @@ class Propagation {
 
  private:
   void push(const Window& w) {
-    queue_.push_back(w);
+    int32_t slot;
+    if (free_.empty()) {
+      slot = static_cast<int32_t>(pool_.size());
+      pool_.push_back(w);
+    } else {
+      slot = free_.back();
+      free_.pop_back();
+      pool_[slot] = w;
+    }
+    queue_.push_back(Entry{w.key, slot});
     std::push_heap(queue_.begin(), queue_.end(), Later{});
     out_.stats.maxQueue = std::max<int64_t>(out_.stats.maxQueue, static_cast<int64_t>(queue_.size()));
   }
@@ -240,8 +256,8 @@ class Propagation {
     b1 = std::min(b1, l);
     if (!(b1 - b0 > kMinWindowRel * l)) return;
     const Vec2 x0{b0, 0}, x1{b1, 0};
-    const double f0 = sigma + norm(image - x0), f1 = sigma + norm(image - x1);
-    const double nearest = sigma + norm(Vec2{std::clamp(image.x, b0, b1), 0} - image);
+    const double f0 = sigma + unfolding::length(image - x0), f1 = sigma + unfolding::length(image - x1);
+    const double nearest = sigma + unfolding::length(Vec2{std::clamp(image.x, b0, b1), 0} - image);
     const double* d = out_.distances.data();
     const int32_t tail = mesh_.tail(h), head = mesh_.head(h);
     auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
@@ -253,7 +269,7 @@ class Propagation {
       // third's position in h's frame: the corner of face(twin(h)) opposite h, below the axis.
       const int32_t t = mesh_.twin(h);
       const Vec2 r = corner(l, len_[TriMesh::next(t)], len_[TriMesh::prev(t)], /*below=*/true);
-      if (shorter(d[third] + std::max(norm(r - x0), norm(r - x1)), nearest)) {
+      if (shorter(d[third] + std::max(unfolding::length(r - x0), unfolding::length(r - x1)), nearest)) {
         ++out_.stats.filtered;
         return;
       }
@@ -269,9 +285,9 @@ class Propagation {
     const double l = len_[w.halfedge];
     const Vec2 x0{w.b0, 0}, x1{w.b1, 0};
     auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
-    if (shorter(d[mesh_.tail(w.halfedge)] + w.b1, w.sigma + norm(w.image - x1)) ||
-        shorter(d[mesh_.head(w.halfedge)] + (l - w.b0), w.sigma + norm(w.image - x0)) ||
-        (d[vc] < kInf && shorter(d[vc] + std::max(norm(c - x0), norm(c - x1)), w.key))) {
+    if (shorter(d[mesh_.tail(w.halfedge)] + w.b1, w.sigma + unfolding::length(w.image - x1)) ||
+        shorter(d[mesh_.head(w.halfedge)] + (l - w.b0), w.sigma + unfolding::length(w.image - x0)) ||
+        (d[vc] < kInf && shorter(d[vc] + std::max(unfolding::length(c - x0), unfolding::length(c - x1)), w.key))) {
       ++out_.stats.filtered;
       return true;
     }
@@ -294,14 +310,14 @@ class Propagation {
     // frames (this window's and its neighbour's), so each side accepts it within rounding.
     const double slack = kSeenSlack * l;
     if (xc >= w.b0 - slack && xc <= w.b1 + slack)
-      update(vc, w.sigma + norm(c - image), GeodesicParent{h, w.origin, image});
+      update(vc, w.sigma + unfolding::length(c - image), GeodesicParent{h, w.origin, image});
     // The part left of c leaves through c–a (child on twin(prevH), frame a → c).
     if (xc > w.b0) {
       const int32_t child = mesh_.twin(prevH);
       const double lac = len_[prevH];
       const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
       const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
-      if (p0 <= 0) update(mesh_.tail(h), w.sigma + norm(image - a), GeodesicParent{h, w.origin, image});
+      if (p0 <= 0) update(mesh_.tail(h), w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
       if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, mesh_.head(h));
     }
     // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
@@ -310,7 +326,7 @@ class Propagation {
       const double lcb = len_[nextH];
       const double q0 = xc > w.b0 ? 0.0 : lineMeetsSegment(image, Vec2{w.b0, 0}, c, b, 0.0) * lcb;
       const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
-      if (q1 >= lcb) update(mesh_.head(h), w.sigma + norm(image - b), GeodesicParent{h, w.origin, image});
+      if (q1 >= lcb) update(mesh_.head(h), w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
       if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, mesh_.tail(h));
     }
   }
@@ -321,7 +337,9 @@ class Propagation {
   std::vector<uint8_t> pseudo_;
   std::vector<double> emitted_;                   // distance at a vertex's last emission
   std::vector<std::pair<int32_t, double>> ring_;  // emitFromVertex's fan: outgoing halfedge, angle before it
-  std::vector<Window> queue_;                     // a binary heap ordered by Later
+  std::vector<Entry> queue_;                      // a binary heap ordered by Later
+  std::vector<Window> pool_;                      // the queued windows (slots reused through free_)
+  std::vector<int32_t> free_;
   int64_t reached_ = 0, queueLimit_ = 0;
 };
 

@@ -58,7 +58,7 @@ Expected<std::vector<Vec3>> exactShortestPath(const TriMesh& mesh, const ExactGe
       const Vec2 corner2d[3] = {a, b, c};
       if (origin >= 0) {
         for (int i = 0; i < 3 && !arrived; ++i)
-          if (corners[i] == origin && norm(toward - corner2d[i]) <= cornerTolerance) arrived = true;
+          if (corners[i] == origin && unfolding::length(toward - corner2d[i]) <= cornerTolerance) arrived = true;
         if (arrived) {
           v = origin;
           points.push_back(mesh.position(v));
