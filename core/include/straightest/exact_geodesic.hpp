@@ -10,8 +10,9 @@
 // boundary vertices, so those become pseudo-sources once their distance is known, and emit windows of
 // their own. Without the trimming of MMP, windows would multiply; ICH's filter drops a new window when
 // one of the three corners of the face it came through already offers a shorter route to every point
-// of it (d(corner) + |corner − x| < σ + |image − x|), which keeps the queue's peak bounded in practice
-// (a fraction of the vertex count on the meshes measured; see docs/ARCHITECTURE.md).
+// of it (d(corner) + |corner − x| < σ + |image − x|), and each halfedge keeps the first window that crossed
+// it, to which later windows are trimmed; the queue's peak stays a fraction of the vertex count on the
+// meshes measured (see docs/ARCHITECTURE.md).
 // Unreferenced vertices and other components get +inf. Cost: O(windows · log(queue)).
 #pragma once
 #include <cstdint>
