@@ -43,15 +43,6 @@ struct Window {
   int32_t origin;  // pseudo-source vertex, −1: the source point
 };
 
-/// The first window that crossed a halfedge (b1 < b0: none yet). Windows leave the queue in the order of
-/// their least distance, so it is usually the best over most of its edge; later windows it beats everywhere
-/// on their interval are dropped (dominated).
-struct Settled {
-  double b0 = 1, b1 = 0;
-  Vec2 image;
-  double sigma = 0;
-};
-
 /// A queue entry: the window's key beside its slot in the pool, so that the heap moves 16 bytes, not 64.
 struct Entry {
   double key;
@@ -80,7 +71,6 @@ class Propagation {
     }
     for (int32_t v = 0; v < mesh.numVertices(); ++v)
       pseudo_[v] = mesh.isBoundaryVertex(v) || angle[v] > kTwoPi + kSaddleExcess;
-    settled_.assign(3 * static_cast<size_t>(mesh.numFaces()), Settled{});
     queueLimit_ = 100 * static_cast<int64_t>(mesh.numFaces()) + 1'000'000;
   }
 
@@ -258,51 +248,6 @@ class Propagation {
               -1);
   }
 
-  /// Trims [b0, b1] to the part where (σ, image) is not beaten by the halfedge's settled window (by more than
-  /// the filter's margin) at its ends; false when nothing is left. The difference of the two distances
-  /// changes sign only where σ + |image − x| = σs + |images − x|; squared twice that is a quadratic in x,
-  /// whose roots split the overlap into pieces of one sign each, judged at their middles.
-  bool trim(int32_t h, double& b0, double& b1, const Vec2& image, double sigma) const {
-    const Settled& s = settled_[h];
-    const double o0 = std::max(b0, s.b0), o1 = std::min(b1, s.b1);
-    if (!(o0 < o1)) return true;
-    auto worse = [&](double x) {
-      const double f = sigma + unfolding::length(image - Vec2{x, 0});
-      return f - (s.sigma + unfolding::length(s.image - Vec2{x, 0})) > kFilterMargin * f;
-    };
-    const double delta = s.sigma - sigma, aw = image.x, as = s.image.x;
-    const double alpha = -2 * (aw - as);
-    const double k = aw * aw - as * as + image.y * image.y - s.image.y * s.image.y - delta * delta;
-    const double qa = alpha * alpha - 4 * delta * delta, qb = 2 * alpha * k + 8 * delta * delta * as;
-    const double qc = k * k - 4 * delta * delta * (as * as + s.image.y * s.image.y);
-    double cuts[4] = {o0, o1, o0, o0};
-    int n = 2;
-    if (std::fabs(qa) > 1e-300) {
-      const double disc = qb * qb - 4 * qa * qc;
-      if (disc >= 0) {
-        const double r = std::sqrt(disc);
-        for (double x : {(-qb - r) / (2 * qa), (-qb + r) / (2 * qa)})
-          if (x > o0 && x < o1) cuts[n++] = x;
-      }
-    } else if (std::fabs(qb) > 1e-300) {
-      const double x = -qc / qb;
-      if (x > o0 && x < o1) cuts[n++] = x;
-    }
-    std::sort(cuts, cuts + n);
-    bool beaten[3];
-    for (int i = 0; i + 1 < n; ++i) beaten[i] = worse(0.5 * (cuts[i] + cuts[i + 1]));
-    // A beaten prefix (when the overlap starts at b0) and a beaten suffix (when it ends at b1) are cut off.
-    double lo = b0, hi = b1;
-    if (o0 == b0)
-      for (int i = 0; i + 1 < n && beaten[i]; ++i) lo = cuts[i + 1];
-    if (o1 == b1)
-      for (int i = n - 2; i >= 0 && beaten[i]; --i) hi = cuts[i];
-    if (!(hi - lo > kMinWindowRel * len_[h])) return false;
-    b0 = lo;
-    b1 = hi;
-    return true;
-  }
-
   /// Adds the window [b0, b1] on halfedge h unless it is too narrow or the filter (the corners of the face it
   /// leaves, h's endpoints and `third`, a vertex of that face; −1: none) shows it useless.
   void addWindow(int32_t h, double b0, double b1, const Vec2& image, double sigma, int32_t origin, int32_t third) {
@@ -329,13 +274,8 @@ class Propagation {
         return;
       }
     }
-    if (!trim(h, b0, b1, image, sigma)) {
-      ++out_.stats.filtered;
-      return;
-    }
     ++out_.stats.windows;
-    push(Window{sigma + unfolding::length(Vec2{std::clamp(image.x, b0, b1), 0} - image), b0, b1, image, sigma, h,
-                origin});
+    push(Window{nearest, b0, b1, image, sigma, h, origin});
   }
 
   /// The filter again when the window leaves the queue: the corners' distances may have shrunk since it
@@ -356,20 +296,13 @@ class Propagation {
 
   /// Carries window w across face(w.halfedge): its rays leave through the other two edges, split at the
   /// opposite corner c, which gets its distance when the window sees it.
-  void propagate(Window w) {
+  void propagate(const Window& w) {
     const int32_t h = w.halfedge, nextH = TriMesh::next(h), prevH = TriMesh::prev(h);
     const double l = len_[h];
     const Vec2 a{0, 0}, b{l, 0}, c = unfolding::oppositeCorner(len_, h);
     const Vec2& image = w.image;
     const int32_t vc = mesh_.head(nextH);
     if (useless(w, c, vc)) return;
-    Settled& settled = settled_[h];
-    if (settled.b1 < settled.b0) {
-      settled = Settled{w.b0, w.b1, w.image, w.sigma};
-    } else if (!trim(h, w.b0, w.b1, w.image, w.sigma)) {  // the settled window may have come after this one
-      ++out_.stats.filtered;
-      return;
-    }
     // Where the ray from the image through c crosses the axis.
     const double depth = c.y - image.y;
     const double xc = depth > 0 ? image.x + (c.x - image.x) * (-image.y) / depth : c.x;
@@ -404,7 +337,6 @@ class Propagation {
   std::vector<uint8_t> pseudo_;
   std::vector<double> emitted_;                   // distance at a vertex's last emission
   std::vector<std::pair<int32_t, double>> ring_;  // emitFromVertex's fan: outgoing halfedge, angle before it
-  std::vector<Settled> settled_;                  // per halfedge: the first window propagated across it
   std::vector<Entry> queue_;                      // a binary heap ordered by Later
   std::vector<Window> pool_;                      // the queued windows (slots reused through free_)
   std::vector<int32_t> free_;

@@ -10,9 +10,8 @@
 // boundary vertices, so those become pseudo-sources once their distance is known, and emit windows of
 // their own. Without the trimming of MMP, windows would multiply; ICH's filter drops a new window when
 // one of the three corners of the face it came through already offers a shorter route to every point
-// of it (d(corner) + |corner − x| < σ + |image − x|), and each halfedge keeps the first window that crossed
-// it, to which later windows are trimmed; the queue's peak stayed at 0.8–1.5 windows per vertex on the
-// meshes measured, 10k–250k vertices (see docs/ARCHITECTURE.md).
+// of it (d(corner) + |corner − x| < σ + |image − x|); the queue's peak stayed at 0.8–1.5 windows per vertex
+// on the meshes measured, 300–250k vertices (see docs/ARCHITECTURE.md).
 // Unreferenced vertices and other components get +inf. Cost: O(windows · log(queue)).
 #pragma once
 #include <cstdint>
