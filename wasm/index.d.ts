@@ -203,8 +203,11 @@ export type InitBoundary = 'measured' | 'circle';
 export type WeightKind = 'shape-preserving' | 'mean-value' | 'cotan' | 'uniform';
 /** The sparse solver: 'multigrid' (BiCGSTAB + algebraic multigrid), 'lu' (direct), 'bicgstab' (ILUT). */
 export type LinearSolver = 'multigrid' | 'lu' | 'bicgstab';
-/** Geodesic distances by the heat method (factored once per mesh) or along edges (Dijkstra). */
-export type DistanceMethod = 'heat' | 'dijkstra';
+/**
+ * Geodesic distances: 'heat' (the heat method, factored once per mesh, approximate), 'dijkstra' (along
+ * edges, an upper bound) or 'exact' (window propagation: the exact polyhedral geodesic distance).
+ */
+export type DistanceMethod = 'heat' | 'dijkstra' | 'exact';
 /** The built-in sample meshes (st.sampleNames() lists them). */
 export type SampleName = 'mountain' | 'cap' | 'saddle' | 'face' | 'holes' | 'sphere' | 'torus' | (string & {});
 

@@ -18,7 +18,9 @@
 
 #include "json_writer.hpp"
 #include "straightest/enum_names.hpp"
+#include "straightest/exact_geodesic.hpp"
 #include "straightest/geodesic_distance.hpp"
+#include "straightest/geodesic_shoot.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
 #include "straightest/result_fields.hpp"
@@ -72,6 +74,20 @@ std::string usage() {
          "), converged false\n"
          "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order; a cut or\n"
          "                             filled mesh gets a vt per distinct corner uv (f v/vt: the seam splits)\n"
+         "  shoot MESH       a straightest geodesic from a source and a direction (Polthier–Schmies)\n"
+         "      --source auto|N        source vertex (default auto)\n"
+         "      --direction ANGLE      radians in the source's tangent frame (0: its first edge, counter-clockwise)\n"
+         "      --toward D             or: toward vertex D, as the cutting plane would start (reports miss_distance)\n"
+         "      --length L             how far (required with --direction; default with --toward: the cutting\n"
+         "                             plane's straightest distance to D)\n"
+         "      --points               include the path's points\n"
+         "  distances MESH   geodesic distances from a source to vertices\n"
+         "      --source auto|N        source vertex (default auto)\n"
+         "      --method " +
+         alternatives(namesOf(kDistanceMethodNames)) +
+         "   (default exact: window propagation)\n"
+         "      --to N,N,...           target vertices (default: every vertex)\n"
+         "      --points               exact only: each target's shortest path (polyline)\n"
          "\n"
          "MESH is an .obj or .off file, sample:NAME for a built-in sample (" +
          choiceList(sampleNames(), ", ", ", ") +
@@ -95,6 +111,9 @@ struct Options {
   std::string boundary = "measured", weights = "shape-preserving", solver = "multigrid", output;
   BuildLimits limits;
   FreeBoundaryOptions free;
+  bool toGiven = false;  // shoot / distances:
+  std::string method = "exact", direction, toward;
+  std::optional<double> length;
 };
 
 struct UsageError {
@@ -154,7 +173,13 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--max-vertices") o.limits.maxVertices = parseCount(a, value());
     else if (a == "--max-faces") o.limits.maxFaces = parseCount(a, value());
     else if (a == "--source") o.source = value();
-    else if (a == "--to") o.to = value();
+    else if (a == "--to") {
+      o.to = value();
+      o.toGiven = true;
+    } else if (a == "--method") o.method = value();
+    else if (a == "--direction") o.direction = value();
+    else if (a == "--toward") o.toward = value();
+    else if (a == "--length") o.length = parsePositive(a, value());
     else if (a == "--points") o.points = true;
     else if (a == "--boundary") o.boundary = value();
     else if (a == "--weights") o.weights = value();
@@ -172,7 +197,8 @@ Options parseArgs(int argc, char** argv) {
   if (o.command == "help") return o;
   if (positional.empty()) throw UsageError{"missing COMMAND"};
   o.command = positional[0];
-  if (o.command != "info" && o.command != "paths" && o.command != "param")
+  if (o.command != "info" && o.command != "paths" && o.command != "param" && o.command != "shoot" &&
+      o.command != "distances")
     throw UsageError{"unknown command '" + o.command + "'"};
   if (positional.size() < 2) throw UsageError{"missing MESH"};
   if (positional.size() > 2) throw UsageError{"unexpected argument '" + positional[2] + "'"};
@@ -316,6 +342,102 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   return 0;
 }
 
+int runShoot(const Options& o, const TriMesh& mesh, double loadMs) {
+  if (o.direction.empty() == o.toward.empty())
+    return fail(o, Error{ErrorCode::InvalidArgument, "shoot needs --direction ANGLE or --toward D (one of them)"});
+  auto given = sourceArgument(mesh, o.source);
+  if (!given) return fail(o, given.error());
+  auto source = resolveSource(mesh, given.value());
+  if (!source) return fail(o, source.error());
+  Timings timings;
+  timings.add("load", loadMs);
+  const Stopwatch clock;
+  Expected<GeodesicShot> shot = Error{ErrorCode::Internal, ""};
+  if (!o.toward.empty()) {
+    auto d = parseVertex(mesh, o.toward, "--toward");
+    if (!d) return fail(o, d.error());
+    shot = shootGeodesicToward(mesh, source.value(), SurfacePoint::vertex(d.value()), o.length, {},
+                               progressLines(o.progress));
+  } else {
+    char* end = nullptr;
+    const double angle = std::strtod(o.direction.c_str(), &end);
+    if (*end || !std::isfinite(angle))
+      return fail(o, Error{ErrorCode::InvalidArgument,
+                           "--direction expects an angle in radians, got '" + o.direction + "'"});
+    if (!o.length) return fail(o, Error{ErrorCode::InvalidArgument, "--direction needs --length L"});
+    shot = shootGeodesicAtAngle(mesh, source.value(), angle, *o.length, {}, progressLines(o.progress));
+  }
+  if (!shot) return fail(o, shot.error());
+  timings.add("shoot", clock.ms());
+  json out = cli::toJson(shot.value());
+  if (o.points) {
+    json pts = json::array();
+    for (const Vec3& x : shot.value().positions) pts.push_back(cli::vec3Json(x));
+    out["points"] = std::move(pts);
+  }
+  out["timings_ms"] = cli::toJson(timings);
+  std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
+  return 0;
+}
+
+int runDistances(const Options& o, const TriMesh& mesh, double loadMs) {
+  auto method = parseDistanceMethod(o.method);
+  if (!method) return fail(o, method.error());
+  auto given = sourceArgument(mesh, o.source);
+  if (!given) return fail(o, given.error());
+  auto source = resolveSource(mesh, given.value());
+  if (!source) return fail(o, source.error());
+  DistanceTable table{source.value(), method.value(), {}, {}};
+  if (o.toGiven) {
+    std::stringstream list(o.to);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+      auto v = parseVertex(mesh, item, "--to");
+      if (!v) return fail(o, v.error());
+      table.targets.push_back(v.value());
+    }
+    if (table.targets.empty()) return fail(o, Error{ErrorCode::InvalidArgument, "--to needs a list of vertices"});
+  } else {
+    for (int32_t v = 0; v < mesh.numVertices(); ++v) table.targets.push_back(v);
+  }
+  if (o.points && table.method != DistanceMethod::Exact)
+    return fail(o, Error{ErrorCode::InvalidArgument, "--points (shortest paths) needs --method exact"});
+  Timings timings;
+  timings.add("load", loadMs);
+  Stopwatch clock;
+  std::vector<double> all;
+  json paths = json::array(), stats;
+  if (table.method == DistanceMethod::Exact) {
+    auto field = exactGeodesics(mesh, table.source, progressLines(o.progress));
+    if (!field) return fail(o, field.error());
+    timings.add("distances", clock.lap());
+    stats = cli::toJson(field.value().stats);
+    for (int32_t t : o.points ? table.targets : std::vector<int32_t>{}) {
+      auto path = exactShortestPath(mesh, field.value(), t);
+      json pts = json::array();
+      if (path)
+        for (const Vec3& x : path.value()) pts.push_back(cli::vec3Json(x));
+      paths.push_back(std::move(pts));
+    }
+    if (o.points) timings.add("paths", clock.lap());
+    all = std::move(field).value().distances;
+  } else {
+    all = GeodesicDistances(mesh).from(table.source, table.method);
+    timings.add("distances", clock.lap());
+  }
+  for (int32_t t : table.targets) table.distances.push_back(all[t]);
+  json out = cli::toJson(table);
+  out["targets"] = table.targets;
+  json distances = json::array();
+  for (double d : table.distances) distances.push_back(std::isfinite(d) ? json(d) : json(nullptr));
+  out["distances"] = std::move(distances);
+  if (o.points) out["paths"] = std::move(paths);
+  if (table.method == DistanceMethod::Exact) out["exact"] = std::move(stats);
+  out["timings_ms"] = cli::toJson(timings);
+  std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -342,6 +464,8 @@ int main(int argc, char** argv) {
     if (!mesh) return fail(o, mesh.error());
     if (o.command == "paths") return runPaths(o, mesh.value(), loadMs);
     if (o.command == "param") return runParam(o, mesh.value(), loadMs);
+    if (o.command == "shoot") return runShoot(o, mesh.value(), loadMs);
+    if (o.command == "distances") return runDistances(o, mesh.value(), loadMs);
     std::cout << cli::toJson(mesh.value().summary()).dump(o.pretty ? 2 : -1) << "\n";
     return 0;
   });

@@ -1,6 +1,7 @@
 #include "straightest/geodesic_distance.hpp"
 
 #include "straightest/enum_names.hpp"
+#include "straightest/exact_geodesic.hpp"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -309,6 +310,7 @@ Expected<DistanceMethod> parseDistanceMethod(const std::string& name) {
 
 std::vector<double> GeodesicDistances::from(const SurfacePoint& source, DistanceMethod method) {
   if (method == DistanceMethod::Dijkstra) return dijkstraDistances(mesh_, source);
+  if (method == DistanceMethod::Exact) return exactGeodesicDistances(mesh_, source);
   if (!heat_) heat_ = std::make_unique<HeatMethod>(mesh_);
   return heat_->distances(source);
 }

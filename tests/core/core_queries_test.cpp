@@ -43,7 +43,8 @@ TEST(GeodesicDistances, DispatchesByMethodAndReusesOneHeatFactorization) {
   EXPECT_EQ(distances.from(a, DistanceMethod::Heat), heat.distances(a));
   EXPECT_EQ(distances.from(b, DistanceMethod::Heat), heat.distances(b));
   EXPECT_EQ(distances.from(a, DistanceMethod::Dijkstra), dijkstraDistances(mesh, a));
-  EXPECT_EQ(parseDistanceMethod("magic").error().message, "unknown distance method 'magic' (use heat or dijkstra)");
+  EXPECT_EQ(parseDistanceMethod("magic").error().message,
+            "unknown distance method 'magic' (use heat, dijkstra or exact)");
 }
 
 TEST(ErrorFromException, AllocationFailureIsTooLargeAndAnythingElseInternal) {

@@ -17,7 +17,7 @@ test('name lists come from the core', () => {
   assert.deepEqual(st.boundaryChoices, [...st.boundaryKinds, 'auto']);
   assert.deepEqual(st.weightKinds, ['shape-preserving', 'mean-value', 'cotan', 'uniform']);
   assert.deepEqual(st.solvers, ['multigrid', 'lu', 'bicgstab']);
-  assert.deepEqual(st.distanceMethods, ['heat', 'dijkstra']);
+  assert.deepEqual(st.distanceMethods, ['heat', 'dijkstra', 'exact']);
   assert.deepEqual(st.meshFormats, ['obj', 'off', 'auto']);
   assert.ok(st.errorCategories.includes('invalid_argument') && st.errorCategories.includes('internal'));
   // Every listed name is accepted where it is used.
@@ -135,7 +135,9 @@ test('geodesicDistances dispatches by method in the core', () => {
   assert.deepEqual(again, heat);
   const dijkstra = mesh.geodesicDistances('auto', 'dijkstra');
   for (let v = 0; v < heat.length; v += 97) assert.ok(heat[v] <= dijkstra[v] * 1.05 + 1e-9, 'edge paths are never much shorter');
-  assert.throws(() => mesh.geodesicDistances('auto', 'magic'), (e) => e.category === 'invalid_argument' && /heat or dijkstra/.test(e.message));
+  const exact = mesh.geodesicDistances('auto', 'exact');
+  for (let v = 0; v < exact.length; v++) assert.ok(exact[v] <= dijkstra[v] * (1 + 1e-12), 'the exact distance is the shortest');
+  assert.throws(() => mesh.geodesicDistances('auto', 'magic'), (e) => e.category === 'invalid_argument' && /heat, dijkstra or exact/.test(e.message));
   mesh.delete();
 });
 

@@ -154,8 +154,9 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const heat: Float64Array = mesh.geodesicDistances(source, 'heat');
   mesh.geodesicDistances({ vertex: 0 }, 'dijkstra');
   mesh.geodesicDistances();
-  // @ts-expect-error the distance methods are 'heat' and 'dijkstra'
   mesh.geodesicDistances(source, 'exact');
+  // @ts-expect-error the distance methods are 'heat', 'dijkstra' and 'exact'
+  mesh.geodesicDistances(source, 'mmp');
   void heat;
 
   // Parameterization.

@@ -11,6 +11,7 @@
 #include "straightest/boundary_map.hpp"
 #include "straightest/error.hpp"
 #include "straightest/geodesic_distance.hpp"
+#include "straightest/geodesic_shoot.hpp"
 #include "straightest/interior_weights.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
@@ -45,7 +46,12 @@ inline constexpr EnumName<LinearSolver> kLinearSolverNames[] = {{LinearSolver::M
                                                                 {LinearSolver::SparseLU, "lu"},
                                                                 {LinearSolver::BiCGSTAB, "bicgstab"}};
 inline constexpr EnumName<DistanceMethod> kDistanceMethodNames[] = {{DistanceMethod::Heat, "heat"},
-                                                                    {DistanceMethod::Dijkstra, "dijkstra"}};
+                                                                    {DistanceMethod::Dijkstra, "dijkstra"},
+                                                                    {DistanceMethod::Exact, "exact"}};
+inline constexpr EnumName<ShootStatus> kShootStatusNames[] = {{ShootStatus::ReachedLength, "reached_length"},
+                                                              {ShootStatus::HitBoundary, "hit_boundary"},
+                                                              {ShootStatus::StepLimit, "step_limit"},
+                                                              {ShootStatus::NoExit, "no_exit"}};
 inline constexpr EnumName<MeshFormat> kMeshFormatNames[] = {{MeshFormat::Obj, "obj"},
                                                             {MeshFormat::Off, "off"},
                                                             {MeshFormat::Auto, "auto"}};

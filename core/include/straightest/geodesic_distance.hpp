@@ -49,8 +49,16 @@ class HeatMethod {
   std::unique_ptr<Impl> impl_;
 };
 
-enum class DistanceMethod { Heat, Dijkstra };
+enum class DistanceMethod { Heat, Dijkstra, Exact };  // Exact: window propagation (exact_geodesic.hpp)
 Expected<DistanceMethod> parseDistanceMethod(const std::string& name);
+
+/// Distances from a source to chosen vertices, as `straightest distances` reports them.
+struct DistanceTable {
+  SurfacePoint source;
+  DistanceMethod method = DistanceMethod::Exact;
+  std::vector<int32_t> targets;
+  std::vector<double> distances;  // one per target
+};
 
 /// Distances on one mesh by either method; the heat method's factorization is made at the first heat
 /// query and reused by every later one (the mesh must outlive this object).

@@ -12,6 +12,7 @@
 //   points(name, std::vector<SurfacePoint>), textColumn(name, std::vector<std::string>) — one entry per
 //                                       path (the CLI leaves these out and writes one row per path)
 #pragma once
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@
 #include "straightest/boundary_polygons.hpp"
 #include "straightest/compare_parameterizations.hpp"
 #include "straightest/enum_names.hpp"
+#include "straightest/exact_geodesic.hpp"
+#include "straightest/geodesic_shoot.hpp"
 #include "straightest/parameterize.hpp"
 #include "straightest/straightest_path.hpp"
 #include "straightest/timings.hpp"
@@ -244,6 +247,47 @@ template <class V>
 void visitFields(const Comparison& c, V& v) {
   v.list("rows", c.rows);
   v.count("best", c.best);
+}
+
+/// A geodesic shot from a source (the initial value problem); target fields null unless shot toward one.
+template <class V>
+void visitFields(const GeodesicShot& s, V& v) {
+  v.point("source", s.source);
+  v.vec3("sourcePosition", s.positions.empty() ? Vec3{} : s.positions.front());
+  v.vec3("normal", s.normal);
+  v.vec3("direction", s.direction);
+  v.text("status", shootStatusName(s.status));
+  v.number("requestedLength", s.requestedLength);
+  v.number("length", s.length);
+  v.count("facesCrossed", s.facesCrossed);
+  v.count("vertexPassings", s.vertexPassings);
+  v.point("end", s.end);
+  v.vec3("endPosition", s.endPosition);
+  if (std::isnan(s.target.x)) {
+    for (const char* name : {"target", "straightestDistance", "missDistance"}) v.nothing(name);
+  } else {
+    v.vec3("target", s.target);
+    v.number("straightestDistance", s.straightestDistance);
+    v.number("missDistance", s.missDistance);
+  }
+  v.bulk("points", packed(s.positions), 3 * s.positions.size(), Bulk::Float64);
+}
+
+template <class V>
+void visitFields(const ExactGeodesicStats& s, V& v) {
+  v.count("windows", s.windows);
+  v.count("filtered", s.filtered);
+  v.count("maxQueue", s.maxQueue);
+  v.count("pseudoSources", s.pseudoSources);
+}
+
+/// Distances to chosen vertices (the CLI writes targets and distances as rows of its own).
+template <class V>
+void visitFields(const DistanceTable& t, V& v) {
+  v.point("source", t.source);
+  v.text("method", nameOf(kDistanceMethodNames, t.method));
+  v.bulk("targets", t.targets.data(), t.targets.size(), Bulk::Int32);
+  v.bulk("distances", t.distances.data(), t.distances.size(), Bulk::Float64);
 }
 
 }  // namespace straightest

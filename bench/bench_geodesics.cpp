@@ -1,0 +1,171 @@
+// Benchmark: the paper's two comparison methods. (1) Exact geodesic distances (window propagation) from the
+// default source to every vertex, on height fields and on the meshes named on the command line: time,
+// windows, the queue's peak, and the exact distances' agreement with Dijkstra's upper bound. (2) Geodesic
+// shooting (Polthier–Schmies) toward every boundary vertex, in the direction and for the length the
+// cutting plane gives, against the cutting-plane tracer: faces per second, and how far the shot passes
+// from the target (the miss, relative to the length). Prints tables; never pass/fail.
+//   bench_geodesics TARGET [--heightfields 100,250,1000] [--budget-s 60] [MESH.off ...]
+// A height field is skipped once a smaller one took longer than the budget (its time would be ~4× that).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "straightest/base_plane.hpp"
+#include "straightest/exact_geodesic.hpp"
+#include "straightest/geodesic_distance.hpp"
+#include "straightest/geodesic_shoot.hpp"
+#include "straightest/mesh_io.hpp"
+#include "straightest/samples.hpp"
+#include "straightest/straightest_path.hpp"
+
+using namespace straightest;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double msSince(Clock::time_point a) { return std::chrono::duration<double, std::milli>(Clock::now() - a).count(); }
+
+struct Mesh {
+  std::string name;
+  TriMesh mesh;
+};
+
+void exactRow(const char* target, const Mesh& m, double& lastMs) {
+  const int32_t source = defaultSource(m.mesh).value();
+  const auto t0 = Clock::now();
+  auto field = exactGeodesics(m.mesh, SurfacePoint::vertex(source));
+  const double ms = msSince(t0);
+  lastMs = ms;
+  if (!field) {
+    std::printf("| %s | %s | %d | error: %s |\n", target, m.name.c_str(), m.mesh.numVertices(),
+                field.error().message.c_str());
+    return;
+  }
+  const ExactGeodesics& f = field.value();
+  const std::vector<double> graph = dijkstraDistances(m.mesh, SurfacePoint::vertex(source));
+  double worstRatio = 0, sumRatio = 0;
+  int64_t counted = 0, above = 0;
+  for (int32_t v = 0; v < m.mesh.numVertices(); ++v) {
+    if (!(graph[v] > 0) || !std::isfinite(graph[v])) continue;
+    const double r = f.distances[v] / graph[v];
+    worstRatio = std::max(worstRatio, r);
+    sumRatio += r;
+    above += r > 1 + 1e-12;
+    ++counted;
+  }
+  std::printf("| %s | %s | %d | %.1f | %.2f | %lld | %.1f | %lld | %lld | %.4f | %lld |\n", target, m.name.c_str(),
+              m.mesh.numVertices(), ms, m.mesh.numVertices() / ms, static_cast<long long>(f.stats.windows),
+              static_cast<double>(f.stats.windows) / m.mesh.numVertices(), static_cast<long long>(f.stats.maxQueue),
+              static_cast<long long>(f.stats.pseudoSources), counted ? sumRatio / counted : 0.0,
+              static_cast<long long>(above));
+}
+
+void shootRow(const char* target, const Mesh& m) {
+  const int32_t source = defaultSource(m.mesh).value();
+  const SurfacePoint s = SurfacePoint::vertex(source);
+  const std::vector<SurfacePoint> targets = boundaryTargets(m.mesh);
+  if (targets.empty()) return;
+  Timings timings;
+  const PathBatch batch = traceStraightestPaths(m.mesh, s, targets, TraceOptions{false, 0, &timings}).value();
+  int64_t traceFaces = 0;
+  for (int64_t c : batch.facesCrossed) traceFaces += c;
+  const BasePlane base = basePlane(m.mesh, s);
+  int64_t shotFaces = 0, shots = 0;
+  std::vector<double> miss;
+  const auto t0 = Clock::now();
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (batch.status[i] != TraceStatus::Reached) continue;
+    const Vec3 d = position(m.mesh, targets[i]);
+    const std::optional<Vec3> dir = inPlaneDirection(base, d);
+    if (!dir) continue;
+    ShootOptions options;
+    options.tangentNormal = base.normal;  // as shootGeodesicToward, with the base plane computed once
+    auto shot = shootGeodesic(m.mesh, s, *dir, batch.length[i], options);
+    if (!shot) continue;
+    ++shots;
+    shotFaces += shot.value().facesCrossed;
+    // The closest approach to the target, over the segments.
+    const std::vector<Vec3>& p = shot.value().positions;
+    double closest = norm(d - p.front());
+    for (size_t k = 1; k < p.size(); ++k) {
+      const Vec3 e = p[k] - p[k - 1];
+      const double ee = dot(e, e);
+      const double t = ee > 0 ? std::clamp(dot(d - p[k - 1], e) / ee, 0.0, 1.0) : 0.0;
+      closest = std::min(closest, norm(d - (p[k - 1] + e * t)));
+    }
+    miss.push_back(closest / batch.length[i]);
+  }
+  const double shootMs = msSince(t0);
+  std::sort(miss.begin(), miss.end());
+  const double median = miss.empty() ? 0 : miss[miss.size() / 2], worst = miss.empty() ? 0 : miss.back();
+  int64_t hits = 0;
+  for (double x : miss) hits += x < 1e-6;
+  std::printf("| %s | %s | %d | %zu | %.2f | %.1f | %lld | %.2f | %.1f | %.4f | %.4f | %lld |\n", target,
+              m.name.c_str(), m.mesh.numVertices(), targets.size(), timings["trace"],
+              traceFaces / timings["trace"] / 1000.0, static_cast<long long>(shots), shootMs,
+              shotFaces / shootMs / 1000.0, median, worst, static_cast<long long>(hits));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* target = argc > 1 ? argv[1] : "native";
+  std::vector<int> heightfields{100, 250, 1000};
+  double budgetS = 60;
+  std::vector<std::string> files;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--heightfields" && i + 1 < argc) {
+      heightfields.clear();
+      std::stringstream list(argv[++i]);
+      std::string item;
+      while (std::getline(list, item, ',')) heightfields.push_back(std::atoi(item.c_str()));
+    } else if (a == "--budget-s" && i + 1 < argc) {
+      budgetS = std::atof(argv[++i]);
+    } else {
+      files.push_back(a);
+    }
+  }
+  std::printf(
+      "Exact distances from the default source to every vertex (windows: created after the filter; mean and "
+      "count of exact ÷ Dijkstra above 1 are a sanity check)\n\n");
+  std::printf(
+      "| target | mesh | vertices | ms | k vertices/s | windows | windows/vertex | queue peak | pseudo-sources | mean "
+      "exact/graph | exact > graph |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::vector<Mesh> meshes;
+  for (const std::string& f : files) {
+    auto m = loadMeshFile(f);
+    if (!m) {
+      std::fprintf(stderr, "bench_geodesics: %s: %s\n", f.c_str(), m.error().message.c_str());
+      continue;
+    }
+    meshes.push_back({f.substr(f.find_last_of('/') + 1), std::move(m).value()});
+  }
+  double lastMs = 0;
+  for (const Mesh& m : meshes) exactRow(target, m, lastMs);
+  lastMs = 0;
+  for (int n : heightfields) {
+    Mesh m{"heightfield " + std::to_string(n), makeHeightField(n)};
+    if (lastMs > budgetS * 1000) {
+      std::printf("| %s | %s | %d | skipped: the previous size took %.0f s > %.0f s |\n", target, m.name.c_str(),
+                  m.mesh.numVertices(), lastMs / 1000, budgetS);
+      continue;
+    }
+    exactRow(target, m, lastMs);
+    meshes.push_back(std::move(m));
+  }
+  std::printf(
+      "\nShooting toward every boundary vertex (direction and length from the cutting plane) vs the tracer "
+      "(miss: closest approach ÷ length; hits: miss < 1e-6)\n\n");
+  std::printf(
+      "| target | mesh | vertices | targets | trace ms | tracer M faces/s | shots | shoot ms | shooting M faces/s | "
+      "median miss | worst miss | hits |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const Mesh& m : meshes) shootRow(target, m);
+  return 0;
+}

@@ -1,0 +1,367 @@
+// exact_geodesic.cpp — window propagation (ICH) for exact polyhedral geodesic distances; see
+// exact_geodesic.hpp. The back-trace of shortest paths is in exact_geodesic_path.cpp.
+#include "straightest/exact_geodesic.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "unfolding.hpp"
+
+namespace straightest {
+namespace {
+
+using unfolding::corner;
+using unfolding::lineMeetsSegment;
+using unfolding::toFrame;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// A vertex whose total angle exceeds 2π by more than rounding is a saddle: shortest paths may bend there.
+constexpr double kSaddleExcess = 1e-9;
+/// Windows narrower than this fraction of their edge are dropped: the rays they carry are within rounding
+/// of their neighbours' (the corners they touch get their distance directly), and keeping them would
+/// let zero-width windows multiply along rays through vertices.
+constexpr double kMinWindowRel = 1e-10;
+/// A corner is seen by a window whose end it lies on within this fraction of the edge (see propagate).
+constexpr double kSeenSlack = 1e-9;
+/// The shadow cone is widened by this angle on each side so that rounding in the arriving direction cannot
+/// lose a direction.
+constexpr double kConeSlack = 1e-7;
+/// The filter drops a window only when a corner is shorter by more than rounding (relative).
+constexpr double kFilterMargin = 1e-12;
+
+/// A window on `halfedge` (propagating into face(halfedge)), or when halfedge < 0 a pseudo-source event
+/// for vertex −1 − halfedge.
+struct Window {
+  double key;     // least distance over the interval: the queue's order
+  double b0, b1;  // the interval, as distances from the halfedge's tail
+  Vec2 image;     // the origin unfolded into the halfedge's frame (y <= 0: behind the edge)
+  double sigma;   // distance at the origin
+  int32_t halfedge;
+  int32_t origin;  // pseudo-source vertex, −1: the source point
+};
+
+/// A queue entry: the window's key beside its slot in the pool, so that the heap moves 16 bytes, not 64.
+struct Entry {
+  double key;
+  int32_t slot;
+};
+struct Later {
+  bool operator()(const Entry& a, const Entry& b) const { return a.key > b.key; }
+};
+
+class Propagation {
+ public:
+  Propagation(const TriMesh& mesh, ExactGeodesics& out)
+      : mesh_(mesh),
+        out_(out),
+        len_(unfolding::halfedgeLengths(mesh)),
+        pseudo_(mesh.numVertices(), 0),
+        emitted_(mesh.numVertices(), kInf) {
+    out_.distances.assign(mesh.numVertices(), kInf);
+    out_.parents.assign(mesh.numVertices(), GeodesicParent{});
+    std::vector<double> angle(mesh.numVertices(), 0.0);
+    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) {
+      // The corner angle at tail(h) between h and the reverse of prev(h), from the three edge lengths.
+      const double a = len_[h], b = len_[TriMesh::prev(h)], o = len_[TriMesh::next(h)];
+      const double cosine = (a * a + b * b - o * o) / (2 * a * b);
+      angle[mesh.tail(h)] += std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
+    }
+    for (int32_t v = 0; v < mesh.numVertices(); ++v)
+      pseudo_[v] = mesh.isBoundaryVertex(v) || angle[v] > kTwoPi + kSaddleExcess;
+    queueLimit_ = 100 * static_cast<int64_t>(mesh.numFaces()) + 1'000'000;
+  }
+
+  Expected<bool> run(const SurfacePoint& source, const Progress& progress) {
+    seed(source);
+    int64_t referenced = 0;
+    for (int32_t v = 0; v < mesh_.numVertices(); ++v) referenced += mesh_.vertexHalfedge(v) >= 0;
+    ThrottledProgress report(progress, "distances");
+    int64_t pops = 0;
+    while (!queue_.empty()) {
+      if ((++pops & 4095) == 0) {
+        if (!report(referenced > 0 ? static_cast<double>(reached_) / referenced : 1.0))
+          return cancelledError("exact geodesic distances");
+        if (static_cast<int64_t>(queue_.size()) > queueLimit_)
+          return Error{ErrorCode::TooLarge, "exact geodesic distances: more than " + std::to_string(queueLimit_) +
+                                                " windows in the queue (100 per face); the mesh is too large "
+                                                "or too degenerate for window propagation"};
+      }
+      std::pop_heap(queue_.begin(), queue_.end(), Later{});
+      const int32_t slot = queue_.back().slot;
+      queue_.pop_back();
+      const Window w = pool_[slot];
+      free_.push_back(slot);
+      if (w.halfedge < 0) emitFromVertex(-1 - w.halfedge, false);
+      else propagate(w);
+    }
+    if (!progress("distances", 1.0)) return cancelledError("exact geodesic distances");
+    return true;
+  }
+
+ private:
+  void push(const Window& w) {
+    int32_t slot;
+    if (free_.empty()) {
+      slot = static_cast<int32_t>(pool_.size());
+      pool_.push_back(w);
+    } else {
+      slot = free_.back();
+      free_.pop_back();
+      pool_[slot] = w;
+    }
+    queue_.push_back(Entry{w.key, slot});
+    std::push_heap(queue_.begin(), queue_.end(), Later{});
+    out_.stats.maxQueue = std::max<int64_t>(out_.stats.maxQueue, static_cast<int64_t>(queue_.size()));
+  }
+
+  void update(int32_t v, double d, const GeodesicParent& parent) {
+    if (!(d < out_.distances[v])) return;
+    if (out_.distances[v] == kInf) ++reached_;
+    out_.distances[v] = d;
+    out_.parents[v] = parent;
+    if (pseudo_[v]) push(Window{d, 0, 0, Vec2{}, d, -1 - v, v});
+  }
+
+  /// The source point's first windows: every edge of the faces around it that it sees across.
+  void seed(const SurfacePoint& source) {
+    const Vec3 s = position(mesh_, source);
+    if (source.kind == SurfacePoint::Kind::Vertex) {
+      const int32_t v = source.index;
+      out_.distances[v] = 0;
+      ++reached_;
+      emitFromVertex(v, true);
+      return;
+    }
+    std::vector<int32_t> faces;
+    incidentFaces(mesh_, source, faces);
+    for (int32_t f : faces)
+      for (int k = 0; k < 3; ++k) {
+        const int32_t h = 3 * f + k;
+        const double toTail = norm(s - mesh_.position(mesh_.tail(h)));
+        update(mesh_.tail(h), toTail, GeodesicParent{-1, -1, Vec2{}});
+        if (source.kind == SurfacePoint::Kind::Edge && (h == source.index || h == mesh_.twin(source.index)))
+          continue;  // the source lies on this edge: the other face's windows cover what is beyond it
+        windowAcross(h, norm(s - mesh_.position(mesh_.head(h))), toTail, 0, -1);
+      }
+  }
+
+  /// A window covering the whole edge of halfedge h (of a face that holds the origin), seen from an origin
+  /// at the given distances from h's head and tail, propagating into the face beyond h.
+  void windowAcross(int32_t h, double toHead, double toTail, double sigma, int32_t origin) {
+    const int32_t t = mesh_.twin(h);
+    if (t < 0) return;
+    const double l = len_[h];
+    if (!(l > 0)) return;
+    // twin's frame: its tail is h's head.
+    const Vec2 image = corner(l, toHead, toTail, /*below=*/true);
+    addWindow(t, 0, l, image, sigma, origin, -1);
+  }
+
+  /// The angle of face(h) at tail(h), from the edge lengths.
+  double cornerAngle(int32_t h) const {
+    const double a = len_[h], b = len_[TriMesh::prev(h)], o = len_[TriMesh::next(h)];
+    const double cosine = (a * a + b * b - o * o) / (2 * a * b);
+    return std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
+  }
+
+  /// The directions in which a shortest path through saddle v may continue: at least π away, on both
+  /// sides, from the path it arrived by (a shorter path would cut the corner otherwise). As fan angles
+  /// [lo, hi], counted counter-clockwise from vertexHalfedge(v) over the ring's corner angles in `ring_`;
+  /// false when the arriving direction is not known (then every direction is kept).
+  bool shadowCone(int32_t v, double total, double& lo, double& hi) const {
+    const GeodesicParent& parent = out_.parents[v];
+    double back = -10;  // fan angle of the direction from v back along the arriving path
+    if (parent.halfedge >= 0) {
+      const int32_t k = parent.halfedge;
+      const int32_t corners[3] = {mesh_.tail(k), mesh_.head(k), mesh_.head(TriMesh::next(k))};
+      const Vec2 at[3] = {Vec2{0, 0}, Vec2{len_[k], 0}, unfolding::oppositeCorner(len_, k)};
+      int i = 0;
+      while (i < 3 && corners[i] != v) ++i;
+      if (i == 3) return false;
+      const Vec2 edge = at[(i + 1) % 3] - at[i], r = parent.image - at[i];  // corner i's outgoing halfedge
+      const int32_t hv = 3 * TriMesh::face(k) + (k % 3 + i) % 3;
+      // The arriving ray crosses this face only when v is its corner c (i == 2); at the window's own edge's
+      // tail (i == 0) it arrives from the faces clockwise of hv, at its head (i == 1) from beyond the
+      // face's other edge: the unfolded angle continues into the ring either way.
+      double local = std::atan2(cross(edge, r), dot(edge, r));
+      if (i == 1 && local < 0) local += kTwoPi;
+      if (i == 2) local = std::clamp(local, 0.0, cornerAngle(hv));
+      for (size_t j = 0; j < ring_.size(); ++j)
+        if (ring_[j].first == hv) back = ring_[j].second + local;
+      if (back < -kPi) return false;  // hv not found
+    } else if (parent.origin >= 0) {
+      for (size_t j = 0; j < ring_.size(); ++j)
+        if (mesh_.head(ring_[j].first) == parent.origin) back = ring_[j].second;
+    }
+    if (back < -kPi) return false;
+    back = std::fmod(back + total, total);
+    lo = back + kPi - kConeSlack;
+    hi = back + total - kPi + kConeSlack;
+    return hi > lo;
+  }
+
+  /// A pseudo-source (or the source vertex): its neighbours by their edges, and windows across the
+  /// opposite edge of the faces around v — for a saddle only within its shadow cone (shadowCone).
+  void emitFromVertex(int32_t v, bool isSource) {
+    const double d = out_.distances[v];
+    if (!isSource && !(d < emitted_[v])) return;  // stale event, or already emitted at this distance
+    emitted_[v] = d;
+    ++out_.stats.pseudoSources;
+    ring_.clear();
+    double total = 0;
+    for (int32_t h : mesh_.outgoingHalfedges(v)) {
+      ring_.push_back({h, total});
+      total += cornerAngle(h);
+    }
+    double lo = 0, hi = 0;
+    const bool cone = !isSource && !mesh_.isBoundaryVertex(v) && shadowCone(v, total, lo, hi);
+    for (const auto& [h, phi] : ring_) {
+      const int32_t p = TriMesh::prev(h), o = TriMesh::next(h);
+      update(mesh_.head(h), d + len_[h], GeodesicParent{-1, v, Vec2{}});
+      update(mesh_.tail(p), d + len_[p], GeodesicParent{-1, v, Vec2{}});
+      if (!cone) {
+        windowAcross(o, len_[p], len_[h], d, v);
+        continue;
+      }
+      const double gamma = cornerAngle(h);
+      for (double shift : {-total, 0.0, total}) {
+        const double b0 = std::max(0.0, lo + shift - phi), b1 = std::min(gamma, hi + shift - phi);
+        if (b1 > b0) windowAcrossBetween(h, b0, b1, d, v);
+      }
+    }
+  }
+
+  /// The part of the window across next(h) (h leaving the origin v) between the rays at angles b0 < b1
+  /// from h.
+  void windowAcrossBetween(int32_t h, double b0, double b1, double sigma, int32_t origin) {
+    const int32_t o = TriMesh::next(h), t = mesh_.twin(o);
+    if (t < 0 || !(len_[o] > 0)) return;
+    const Vec2 w1{len_[h], 0}, w2 = unfolding::oppositeCorner(len_, h), v{0, 0};
+    const double t0 = lineMeetsSegment(v, Vec2{std::cos(b0), std::sin(b0)}, w1, w2, 0.0);
+    const double t1 = lineMeetsSegment(v, Vec2{std::cos(b1), std::sin(b1)}, w1, w2, 1.0);
+    const double l = len_[o];
+    // twin(o) runs from w2 to w1.
+    addWindow(t, (1 - t1) * l, (1 - t0) * l, corner(l, len_[TriMesh::prev(h)], len_[h], /*below=*/true), sigma, origin,
+              -1);
+  }
+
+  /// Adds the window [b0, b1] on halfedge h unless it is too narrow or the filter (the corners of the face it
+  /// leaves, h's endpoints and `third`, a vertex of that face; −1: none) shows it useless.
+  void addWindow(int32_t h, double b0, double b1, const Vec2& image, double sigma, int32_t origin, int32_t third) {
+    const double l = len_[h];
+    b0 = std::max(b0, 0.0);
+    b1 = std::min(b1, l);
+    if (!(b1 - b0 > kMinWindowRel * l)) return;
+    const Vec2 x0{b0, 0}, x1{b1, 0};
+    const double f0 = sigma + unfolding::length(image - x0), f1 = sigma + unfolding::length(image - x1);
+    const double nearest = sigma + unfolding::length(Vec2{std::clamp(image.x, b0, b1), 0} - image);
+    const double* d = out_.distances.data();
+    const int32_t tail = mesh_.tail(h), head = mesh_.head(h);
+    auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
+    if (shorter(d[tail] + b1, f1) || shorter(d[head] + (l - b0), f0)) {
+      ++out_.stats.filtered;
+      return;
+    }
+    if (third >= 0 && d[third] < kInf) {
+      // third's position in h's frame: the corner of face(twin(h)) opposite h, below the axis.
+      const int32_t t = mesh_.twin(h);
+      const Vec2 r = corner(l, len_[TriMesh::next(t)], len_[TriMesh::prev(t)], /*below=*/true);
+      if (shorter(d[third] + std::max(unfolding::length(r - x0), unfolding::length(r - x1)), nearest)) {
+        ++out_.stats.filtered;
+        return;
+      }
+    }
+    ++out_.stats.windows;
+    push(Window{nearest, b0, b1, image, sigma, h, origin});
+  }
+
+  /// The filter again when the window leaves the queue: the corners' distances may have shrunk since it
+  /// was made. (Its edge's endpoints, and the corner c of the face it enters.)
+  bool useless(const Window& w, const Vec2& c, int32_t vc) {
+    const double* d = out_.distances.data();
+    const double l = len_[w.halfedge];
+    const Vec2 x0{w.b0, 0}, x1{w.b1, 0};
+    auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
+    if (shorter(d[mesh_.tail(w.halfedge)] + w.b1, w.sigma + unfolding::length(w.image - x1)) ||
+        shorter(d[mesh_.head(w.halfedge)] + (l - w.b0), w.sigma + unfolding::length(w.image - x0)) ||
+        (d[vc] < kInf && shorter(d[vc] + std::max(unfolding::length(c - x0), unfolding::length(c - x1)), w.key))) {
+      ++out_.stats.filtered;
+      return true;
+    }
+    return false;
+  }
+
+  /// Carries window w across face(w.halfedge): its rays leave through the other two edges, split at the
+  /// opposite corner c, which gets its distance when the window sees it.
+  void propagate(const Window& w) {
+    const int32_t h = w.halfedge, nextH = TriMesh::next(h), prevH = TriMesh::prev(h);
+    const double l = len_[h];
+    const Vec2 a{0, 0}, b{l, 0}, c = unfolding::oppositeCorner(len_, h);
+    const Vec2& image = w.image;
+    const int32_t vc = mesh_.head(nextH);
+    if (useless(w, c, vc)) return;
+    // Where the ray from the image through c crosses the axis.
+    const double depth = c.y - image.y;
+    const double xc = depth > 0 ? image.x + (c.x - image.x) * (-image.y) / depth : c.x;
+    // c is seen when its ray crosses the window; a ray through c along the window's end is computed in two
+    // frames (this window's and its neighbour's), so each side accepts it within rounding.
+    const double slack = kSeenSlack * l;
+    if (xc >= w.b0 - slack && xc <= w.b1 + slack)
+      update(vc, w.sigma + unfolding::length(c - image), GeodesicParent{h, w.origin, image});
+    // The part left of c leaves through c–a (child on twin(prevH), frame a → c).
+    if (xc > w.b0) {
+      const int32_t child = mesh_.twin(prevH);
+      const double lac = len_[prevH];
+      const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
+      const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
+      if (p0 <= 0) update(mesh_.tail(h), w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
+      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, mesh_.head(h));
+    }
+    // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
+    if (xc < w.b1) {
+      const int32_t child = mesh_.twin(nextH);
+      const double lcb = len_[nextH];
+      const double q0 = xc > w.b0 ? 0.0 : lineMeetsSegment(image, Vec2{w.b0, 0}, c, b, 0.0) * lcb;
+      const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
+      if (q1 >= lcb) update(mesh_.head(h), w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
+      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, mesh_.tail(h));
+    }
+  }
+
+  const TriMesh& mesh_;
+  ExactGeodesics& out_;
+  std::vector<double> len_;
+  std::vector<uint8_t> pseudo_;
+  std::vector<double> emitted_;                   // distance at a vertex's last emission
+  std::vector<std::pair<int32_t, double>> ring_;  // emitFromVertex's fan: outgoing halfedge, angle before it
+  std::vector<Entry> queue_;                      // a binary heap ordered by Later
+  std::vector<Window> pool_;                      // the queued windows (slots reused through free_)
+  std::vector<int32_t> free_;
+  int64_t reached_ = 0, queueLimit_ = 0;
+};
+
+}  // namespace
+
+Expected<ExactGeodesics> exactGeodesics(const TriMesh& mesh, const SurfacePoint& source, const Progress& progress) {
+  return guarded([&]() -> Expected<ExactGeodesics> {
+    auto valid = validateSurfacePoint(mesh, source);
+    if (!valid) return valid.error();
+    ExactGeodesics out;
+    out.source = valid.value();
+    Propagation propagation(mesh, out);
+    auto done = propagation.run(out.source, progress);
+    if (!done) return done.error();
+    return out;
+  });
+}
+
+std::vector<double> exactGeodesicDistances(const TriMesh& mesh, const SurfacePoint& source) {
+  auto field = exactGeodesics(mesh, source);
+  if (!field) return std::vector<double>(mesh.numVertices(), kInf);
+  return std::move(field).value().distances;
+}
+
+}  // namespace straightest
