@@ -119,7 +119,11 @@ TEST(ExactGeodesic, NeverAboveTheStraightestNorTheGraphDistanceOnTheSamples) {
       ++reached;
       ASSERT_LE(f.distances[v], batch.length[i] * (1 + 1e-12)) << name << " vertex " << v;
     }
-    EXPECT_GT(reached, static_cast<int>(targets.size()) / 2) << name;
+    // On a disk most sections reach; on the torus many planes through S cut it in two circles and
+    // D lies on the other one (other_component), so only a share of the targets tests the bound there.
+    const int least = mesh.boundaryLoops().empty() ? static_cast<int>(targets.size()) / 4
+                                                   : static_cast<int>(targets.size()) / 2;
+    EXPECT_GT(reached, least) << name;
   }
 }
 
