@@ -109,7 +109,7 @@ Bijective: measured ${count('measured')} of ${done.length}, free ${count('free')
 | mesh | vertices | loops | genus | cut | seam length | measured L2 / L∞ | s | free L2 / L∞ | converged | s |
 |---|---:|---:|---:|---|---:|---:|---:|---:|---|---:|
 ${table.join('\n')}
-${refused.length ? `\nRefused by the loader (${refused.length}; not manifold, so outside this issue):\n\n${refused.map((r) => `- ${r.name}: ${r.error}`).join('\n')}\n` : ''}`;
+${refused.length ? `\nRefused by the loader (${refused.length}), with its message:\n\n${refused.map((r) => `- ${r.name}: ${r.error}`).join('\n')}\n` : ''}`;
 }
 
 if (process.argv[1] === fileURLToPath(import.meta.url)) {

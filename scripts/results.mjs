@@ -2,12 +2,14 @@
 // shape-preserving parameterization with a circle boundary vs the measured boundary, and the free
 // boundary refined from it) on Nefertiti (CGAL's sample data, Debian package libcgal-demo) and on the
 // generated Mountain and Face samples, and writes docs/RESULTS.md, with the real-patch table
-// (scripts/real-patches.mjs). Every number in that
-// file comes from this run of the native CLI and tools.
+// (scripts/real-patches.mjs) and every non-disk CGAL mesh cut and parameterized
+// (scripts/manifold-results.mjs). Every number in that file comes from this run of the native CLI and
+// tools.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { join } from 'node:path';
+import { manifoldSection, measureManifolds } from './manifold-results.mjs';
 import { measurePatches, realPatchesSection, runRealPatches, startComparison } from './real-patches.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -141,7 +143,7 @@ ${detail.join('\n')}
 - The measured boundary is not always the best choice; \`--boundary auto\` computes all four and keeps the
   least stretched bijective one.
 
-${realPatchesSection(patches)}\n${measuredSection()}\n${freeStartSection()}`;
+${realPatchesSection(patches)}\n${measuredSection()}\n${freeStartSection()}\n${manifoldSection(measureManifolds())}`;
 mkdirSync(join(root, 'docs'), { recursive: true });
 writeFileSync(join(root, 'docs/RESULTS.md'), text);
 process.stdout.write('wrote docs/RESULTS.md\n');
