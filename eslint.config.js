@@ -1,5 +1,5 @@
 // JavaScript lint (eslint flat config): @eslint/js's recommended rules, with each directory's globals —
-// the npm package runs in browsers and Node, the page in a browser (its worker in a worker scope), the
+// the npm package runs in browsers and Node, the page in a browser, the
 // scripts and tests under Node (the browser tests' page.evaluate callbacks run in the page).
 // `npm run lint` (scripts/lint.sh) runs it with the format and type checks.
 import js from '@eslint/js';
@@ -13,7 +13,6 @@ export default [
   },
   { files: ['wasm/**/*.js'], languageOptions: { globals: { ...globals.browser, ...globals.node } } },
   { files: ['web/**/*.js'], languageOptions: { globals: globals.browser } },
-  { files: ['web/worker.js'], languageOptions: { globals: globals.worker } },
   { files: ['scripts/**/*.mjs', 'tests/js/**/*.mjs'], languageOptions: { globals: globals.node } },
   { files: ['tests/e2e/**/*.mjs'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },
   { files: ['eslint.config.js'], languageOptions: { globals: globals.node } },

@@ -3,8 +3,11 @@
 // posts results back with their typed arrays' buffers transferred (not copied).
 //
 // Protocol (every request has an `id`; exactly one final reply echoes it; 'progress' may come before):
-//   → { id, type: 'init', options }                      ← { id, type: 'result', value: null }
-//        options: createStraightest's (wasmUrl, wasmBinary); the worker's own default otherwise
+//   → { id, type: 'init', options }                      ← { id, type: 'result', value: names }
+//        options: createStraightest's (wasmUrl, wasmBinary); the worker's own default otherwise;
+//        names: the module's name lists ({ sampleNames, boundaryKinds, weightKinds, … }, see NAME_LISTS)
+//   → { id, type: 'module', method, args }                ← { id, type: 'result', value }
+//        a Straightest method that makes no mesh: 'formatFromFileName'
 //   → { id, type: 'create', mesh, method, args }         ← { id, type: 'result', value: MeshInfo }
 //        method: 'loadMesh' | 'meshFromArrays' | 'sample'; mesh: the client's number for it
 //   → { id, type: 'call', mesh, method, args, progress }  ← { id, type: 'result', value }
@@ -19,6 +22,10 @@ let straightest = null;
 const meshes = new Map();
 
 const CREATORS = new Set(['loadMesh', 'meshFromArrays', 'sample']);
+const MODULE_METHODS = new Set(['formatFromFileName']);
+// The Straightest getters the client offers synchronously, read once at 'init'.
+const NAME_LISTS = ['traceStatuses', 'boundaryKinds', 'polygonBoundaryKinds', 'boundaryChoices', 'weightKinds', 'solvers',
+  'distanceMethods', 'meshFormats', 'errorCategories'];
 const METHODS = new Set(['info', 'positions', 'indices', 'boundaryLoops', 'vertexNormals', 'defaultSource', 'basePlane',
   'straightestPaths', 'geodesicDistances', 'parameterize', 'boundaryPolygons', 'compareParameterizations', 'toOBJ']);
 
@@ -40,7 +47,11 @@ async function handle(request) {
   switch (type) {
     case 'init':
       straightest = await createStraightest(request.options ?? {});
-      return null;
+      return Object.fromEntries([['sampleNames', straightest.sampleNames()],
+        ...NAME_LISTS.map((name) => [name, straightest[name]])]);
+    case 'module':
+      if (!MODULE_METHODS.has(request.method)) throw new TypeError(`unknown module method '${request.method}'`);
+      return straightest[request.method](...request.args);
     case 'create': {
       if (!CREATORS.has(request.method)) throw new TypeError(`unknown mesh source '${request.method}'`);
       const mesh = straightest[request.method](...request.args);

@@ -2,7 +2,7 @@
 import type {
   BasePlane, BoundaryPolygon, BoundaryPolygonsOptions, BuildLimits, CompareOptions, Comparison, CreateOptions, MeshFormat,
   MeshInfo, Parameterization, ParameterizeOptions, SampleName, StraightestPaths, StraightestPathsOptions, SurfacePoint,
-  DistanceMethod,
+  DistanceMethod, Straightest,
 } from './index.js';
 
 /** What the long calls take in the worker: Mesh's options plus an AbortSignal that cancels the work. */
@@ -45,6 +45,28 @@ export class WorkerMesh {
 
 /** The library in a worker, from `await createStraightestWorker()`. */
 export interface StraightestWorker {
+  /** Names of the built-in sample meshes. */
+  sampleNames(): string[];
+  /** The trace statuses, in the core's order (as Straightest's; read once when the worker started). */
+  readonly traceStatuses: Straightest['traceStatuses'];
+  /** The boundary kinds, in the core's order. */
+  readonly boundaryKinds: Straightest['boundaryKinds'];
+  /** The kinds boundaryPolygons gives without a solve: every kind but 'free'. */
+  readonly polygonBoundaryKinds: Straightest['polygonBoundaryKinds'];
+  /** What parameterize's `boundary` takes: the kinds and 'auto'. */
+  readonly boundaryChoices: Straightest['boundaryChoices'];
+  /** The interior weight kinds. */
+  readonly weightKinds: Straightest['weightKinds'];
+  /** The linear solvers. */
+  readonly solvers: Straightest['solvers'];
+  /** geodesicDistances' methods. */
+  readonly distanceMethods: Straightest['distanceMethods'];
+  /** loadMesh's formats. */
+  readonly meshFormats: Straightest['meshFormats'];
+  /** Every StraightestError category. */
+  readonly errorCategories: Straightest['errorCategories'];
+  /** The format a file name asks for: 'obj', 'off' (by extension, any case) or 'auto'. */
+  formatFromFileName(name: string): Promise<MeshFormat>;
   /** Parses an OBJ or OFF file (bytes or text) in the worker. */
   loadMesh(data: Uint8Array | ArrayBuffer | ArrayBufferView | string, format?: MeshFormat, limits?: BuildLimits): Promise<WorkerMesh>;
   /** A mesh from flat arrays, built in the worker. */

@@ -49,13 +49,14 @@ function defaultWorker() {
  */
 export async function createStraightestWorker(options = {}) {
   const { createWorker = defaultWorker, ...loadOptions } = options;
-  let current = null; // { worker, pending: Map(id → { resolve, reject, onProgress }), meshes: Set(ids built there) }
+  let current = null; // { worker, pending: Map(id → { resolve, reject, onProgress }), meshes: Map(id → built promise) }
+  let names = null; // the module's name lists, from 'init'
   let nextId = 1;
   let nextMesh = 1;
   const recipes = new Map(); // mesh id → { method, args } that made it
 
   function start(worker) {
-    const instance = { worker, pending: new Map(), meshes: new Set(), ready: null };
+    const instance = { worker, pending: new Map(), meshes: new Map(), ready: null };
     worker.addEventListener('message', ({ data }) => {
       const entry = instance.pending.get(data.id);
       if (!entry) return;
@@ -69,7 +70,7 @@ export async function createStraightestWorker(options = {}) {
       fail(instance, `the straightest worker failed: ${event.message || 'script error'}`, 'internal');
     });
     current = instance;
-    instance.ready = send(instance, { type: 'init', options: loadOptions });
+    instance.ready = send(instance, { type: 'init', options: loadOptions }).then((value) => { names = value; });
     return instance;
   }
 
@@ -94,12 +95,16 @@ export async function createStraightestWorker(options = {}) {
     fail(old, 'cancelled', 'cancelled');
   }
 
-  async function ensureMesh(instance, id) {
-    if (!recipes.has(id)) throw new StraightestError('this mesh has been deleted', 'invalid_argument');
-    if (instance.meshes.has(id)) return;
-    const { method, args } = recipes.get(id);
-    await send(instance, { type: 'create', mesh: id, method, args });
-    instance.meshes.add(id);
+  /** Builds mesh `id` in the worker unless it is there already (or being built: calls share one build). */
+  function ensureMesh(instance, id) {
+    if (!recipes.has(id)) return Promise.reject(new StraightestError('this mesh has been deleted', 'invalid_argument'));
+    if (!instance.meshes.has(id)) {
+      const { method, args } = recipes.get(id);
+      const built = send(instance, { type: 'create', mesh: id, method, args });
+      built.catch(() => { if (instance.meshes.get(id) === built) instance.meshes.delete(id); });
+      instance.meshes.set(id, built);
+    }
+    return instance.meshes.get(id);
   }
 
   async function create(method, args) {
@@ -147,7 +152,26 @@ export async function createStraightestWorker(options = {}) {
   start(createWorker());
   await current.ready;
 
+  const list = (name) => [...names[name]];
   return {
+    /** Names of the built-in sample meshes. */
+    sampleNames: () => list('sampleNames'),
+    /** The name lists of Straightest (read once when the worker started). */
+    get traceStatuses() { return list('traceStatuses'); },
+    get boundaryKinds() { return list('boundaryKinds'); },
+    get polygonBoundaryKinds() { return list('polygonBoundaryKinds'); },
+    get boundaryChoices() { return list('boundaryChoices'); },
+    get weightKinds() { return list('weightKinds'); },
+    get solvers() { return list('solvers'); },
+    get distanceMethods() { return list('distanceMethods'); },
+    get meshFormats() { return list('meshFormats'); },
+    get errorCategories() { return list('errorCategories'); },
+    /** The format a file name asks for: 'obj', 'off' (by extension, any case) or 'auto'. */
+    async formatFromFileName(name) {
+      const instance = current;
+      await instance.ready;
+      return send(instance, { type: 'module', method: 'formatFromFileName', args: [String(name ?? '')] });
+    },
     /** Parses an OBJ or OFF file (bytes or text) in the worker. */
     loadMesh: (data, format = 'auto', limits = {}) => create('loadMesh', [data, format, limits]),
     /** A mesh from flat arrays, built in the worker. */

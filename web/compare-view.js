@@ -5,7 +5,7 @@
 import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { BOUNDARY_COLORS } from './colormap.js';
-import { isCancelled } from './worker-client.js';
+import { isCancelled } from './requests.js';
 import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 
 const $ = (id) => document.getElementById(id);
@@ -29,7 +29,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
     $('compare-button').disabled = true;
     comparing = true;
     try {
-      const reply = await session.request('compare', { source: source() }, [], ({ done, total }) => {
+      const reply = await session.request('compare', { source: source() }, ({ done, total }) => {
         if (request.stale() || done === undefined) return;
         progress.max = total;
         progress.value = done;

@@ -1,6 +1,6 @@
 // The page's wiring: it creates the views and connects them to the session and the controls. All
-// geometry happens in the worker (worker.js), which owns the straightest WASM module; the modules
-// here only draw its arrays, pick points on the mesh and orchestrate the requests:
+// geometry happens in the package's worker (straightest/worker, which owns the WASM module); the
+// modules here only draw its arrays, pick points on the mesh and orchestrate the requests:
 //   scene.js        renderer, camera, controls, render scheduling, framing
 //   surface-view.js the mesh on display and what colours it
 //   path-view.js    path lines, markers, base plane, the hovered path's cutting plane
@@ -8,6 +8,7 @@
 //   heat-distance.js, colormap.js   the distance colours; every colour scale
 //   panels.js       info, path statistics, errors, status line
 //   session.js      load / cancel / reload, "latest request wins" (latest.js)
+//   requests.js     each request as a few calls to straightest/worker, with its progress stages
 //   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
 //   progress-view.js, test-hooks.js
 //
@@ -28,7 +29,7 @@ import { createView } from './scene.js';
 import { createSession } from './session.js';
 import { createSurfaceView } from './surface-view.js';
 import { hooks, setState } from './test-hooks.js';
-import { isCancelled } from './worker-client.js';
+import { isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -85,7 +86,7 @@ function closedMesh() {
   return (session.info?.boundaryLoops ?? []).length === 0;
 }
 
-/** The 'targets' of the next 'paths' request (see the protocol in worker.js). */
+/** The 'targets' of the next 'paths' request (see requests.js). */
 function currentTargets() {
   const added = pathRequest.added.map(({ point }) => point);
   if (!$('boundary-toggle').checked) return added;

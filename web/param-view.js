@@ -22,7 +22,7 @@ import { createCompareView } from './compare-view.js';
 import { createStretchView } from './stretch-view.js';
 import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 import { SEAM_COLOR, checkerboardCanvas, drawLayout } from './uv-layout.js';
-import { isCancelled } from './worker-client.js';
+import { isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
 

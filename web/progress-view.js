@@ -1,7 +1,7 @@
 // The progress panel over the 3D view: while the worker runs, one group per request of the current
 // job (loading a mesh, then its paths, then its parameterization, …) and in it one bar per stage
-// with its percentage, fed by the worker's 'progress' messages (the core's progress callbacks; see
-// worker.js). A stage that the core only reports as started and finished (parsing, the weights, the
+// with its percentage, fed by each request's progress (the core's progress callbacks; see
+// requests.js). A stage that the core only reports as started and finished (parsing, the weights, the
 // solver's setup) shows a moving bar while it runs. The Cancel button stops the job (session.js
 // restarts the worker). The panel appears only when a job takes longer than a moment and hides when
 // the worker is idle again; everything here is DOM, and the page stays interactive meanwhile.

@@ -1,6 +1,7 @@
-// The page's session with the geometry worker: starting it, loading a mesh (a sample or a file),
-// Cancel (restart the worker and reload the mesh on display into the new one), and which reply is
-// still wanted — every kind of request follows "latest request wins" (latest.js).
+// The page's session with the geometry worker (requests.js over straightest/worker): starting it,
+// loading a mesh (a sample or a file), Cancel (the worker is replaced and the mesh on display rebuilt
+// in the new one), and which reply is still wanted — every kind of request follows "latest request
+// wins" (latest.js).
 //
 // The mesh on display is described here (label, info, where it came from); what is drawn for it is
 // the display's business: load() hands the reply to display.showMesh() and then awaits
@@ -12,11 +13,9 @@
 import { hooks, setState } from './test-hooks.js';
 import { latest } from './latest.js';
 import { clearError, setStatus, showError } from './panels.js';
-import { createWorkerClient, isCancelled, workerError } from './worker-client.js';
+import { categorizedError, createRequests, isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
-
-const MODULE_URL = import.meta.resolve('straightest'); // the worker imports the npm package from here
 
 /**
  * observer: the progress view (told about every request); display: { showMesh(reply),
@@ -25,7 +24,7 @@ const MODULE_URL = import.meta.resolve('straightest'); // the worker imports the
 export function createSession({ observer, display }) {
   const events = new EventTarget();
   const emit = (type) => events.dispatchEvent(new Event(type));
-  const client = createWorkerClient({ url: new URL('./worker.js', import.meta.url), observer });
+  const requests = createRequests({ observer });
 
   const loads = latest(); // only the most recent load may update the view
   const reloads = latest(); // the reloads into a restarted worker
@@ -37,11 +36,11 @@ export function createSession({ observer, display }) {
   let boundaryKinds = []; // the worker's names of the parameterization's boundaries
 
   /**
-   * Sends a request to the worker; resolves with its reply, rejects with an Error (+ category;
-   * 'cancelled' when Cancel stopped it). onProgress receives the 'progress' messages before the reply.
+   * Runs a request (requests.js); resolves with its reply, rejects with an Error (+ category;
+   * 'cancelled' when Cancel stopped it). onProgress receives its progress ({ stage, fraction, … }).
    */
-  function request(type, payload = {}, transfer = [], onProgress = null) {
-    return client.request(type, payload, transfer, onProgress);
+  function request(type, payload = {}, onProgress = null) {
+    return requests.request(type, payload, onProgress);
   }
 
   /**
@@ -54,7 +53,11 @@ export function createSession({ observer, display }) {
     setStatus(`Loading ${what}…`);
     try {
       const reply = await send(current);
-      if (current.stale()) return;
+      if (current.stale()) {
+        reply.mesh.delete().catch(() => {});
+        return;
+      }
+      requests.adopt(reply.mesh, reply.info);
       label = reply.label;
       hooks.lastInfo = reply.info;
       meshes.supersede();
@@ -89,13 +92,14 @@ export function createSession({ observer, display }) {
     select.value = '';
     return load(`“${file.name}”`, async (current) => {
       const bytes = await file.arrayBuffer();
-      if (current.stale()) throw workerError('cancelled', 'cancelled'); // do not send it to a new worker
-      return request('file', { name: file.name, bytes }, [bytes]);
+      if (current.stale()) throw categorizedError('cancelled', 'cancelled'); // do not send it to a new worker
+      return request('file', { name: file.name, bytes });
     }, { file });
   }
 
   /** Nothing on display (after cancelling the reload of the mesh into a restarted worker). */
   function dropMesh() {
+    requests.drop();
     meshes.supersede();
     display.dropMesh();
     label = '';
@@ -108,12 +112,12 @@ export function createSession({ observer, display }) {
 
   /**
    * Cancel: the worker is busy inside a synchronous WASM call and cannot read a message, so it is
-   * terminated and a new one loads the mesh on display again. Every pending request rejects as
+   * terminated and a new one builds the mesh on display again. Every pending request rejects as
    * 'cancelled', and every request begun before is stale from now on.
    */
   function cancel() {
     const wasRestoring = restoring;
-    client.restart();
+    requests.cancel();
     loads.supersede(); // a load in flight stops (no paths, no follow-up work after it)
     emit('cancel');
     if (wasRestoring) dropMesh(); // cancelling the reload itself: nothing is left in the worker
@@ -121,7 +125,7 @@ export function createSession({ observer, display }) {
     reloadInto();
   }
 
-  /** Initializes the restarted worker and loads the mesh on display into it again. */
+  /** Builds the mesh on display again in the restarted worker (from what made it). */
   async function reloadInto() {
     const origin = displayed;
     const current = reloads.begin();
@@ -129,14 +133,7 @@ export function createSession({ observer, display }) {
     setState('loading');
     setStatus('Cancelled — restarting the geometry worker…');
     try {
-      await request('init', { moduleUrl: MODULE_URL });
-      if (origin?.sample) {
-        await request('sample', { name: origin.sample, restore: true });
-      } else if (origin?.file) {
-        const bytes = await origin.file.arrayBuffer();
-        if (origin !== displayed) return;
-        await request('file', { name: origin.file.name, bytes, restore: true }, [bytes]);
-      }
+      if (origin) await requests.restore(origin.sample ? 'sample' : 'file', origin.sample ?? origin.file.name);
       if (origin !== displayed) return;
       hooks.cancels += 1;
       clearError();
@@ -154,7 +151,7 @@ export function createSession({ observer, display }) {
   async function start() {
     setState('loading');
     try {
-      const ready = await request('init', { moduleUrl: MODULE_URL });
+      const ready = await requests.start();
       const { samples } = ready;
       hooks.samples = samples;
       boundaryKinds = ready.boundaryKinds;

@@ -535,20 +535,21 @@ describe('a 200k-vertex mesh in the worker', () => {
   });
 });
 
-// The worker answers every 'file' request as the npm package does when WASM memory runs out: a
-// listener registered before worker.js's own (imported first) replies and stops the event.
+// The package's worker (straightest/worker) answers every loadMesh as the npm package does when WASM
+// memory runs out: a listener registered before worker-entry.js's own (imported first) replies and
+// stops the event.
 const TOO_LARGE_MESSAGE = 'the mesh is too large for the available memory (WebAssembly allocation failed)';
 function routeWorkerToTooLarge(context) {
   const prelude = `self.addEventListener('message', (event) => {
-    if (event.data?.type !== 'file') return;
+    if (event.data?.type !== 'create' || event.data.method !== 'loadMesh') return;
     event.stopImmediatePropagation();
     self.postMessage({ id: event.data.id, type: 'error', category: 'too_large', message: ${JSON.stringify(TOO_LARGE_MESSAGE)} });
   });`;
   return context.route(
-    (url) => url.pathname === '/web/worker.js' && url.search === '',
+    (url) => url.pathname === '/wasm/worker-entry.js' && url.search === '',
     (route) => route.fulfill({
       contentType: 'text/javascript',
-      body: `import ${JSON.stringify(`data:text/javascript,${encodeURIComponent(prelude)}`)};\nimport './worker.js?real';\n`,
+      body: `import ${JSON.stringify(`data:text/javascript,${encodeURIComponent(prelude)}`)};\nimport './worker-entry.js?real';\n`,
     }),
   );
 }

@@ -173,6 +173,9 @@ test('esbuild and Vite bundle the package for the browser without configuration,
       [capVertices, true, 2 * capVertices, true]);
     assert.ok(helper.stages.includes('solve'), `progress stages: ${helper.stages}`);
     assert.equal(helper.afterCancel, 'cancelled');
+    // The name lists are the module's, read in the worker; the file-name rule is the core's.
+    assert.equal(helper.format, 'off');
+    assert.deepEqual([helper.samples, helper.boundaryKinds, helper.weightKinds], [reference.sampleNames(), reference.boundaryKinds, reference.weightKinds]);
     assert.deepEqual(results['esbuild/esbuild-main.html'], { vertices: capVertices, bijective: true });
     assert.deepEqual(results['esbuild/inline-main.html'], { vertices: capVertices, bijective: true });
   } finally {

@@ -8,8 +8,10 @@ import {
   StraightestError,
   type Straightest,
   type BasePlane,
+  type BoundaryKind,
   type CutMethod,
   type ErrorCategory,
+  type MeshFormat,
   type MeshInfo,
   type Parameterization,
   type ProgressCallback,
@@ -60,6 +62,10 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const notAwaited: MeshInfo = remote.info();
   void notAwaited;
   await remote.delete();
+  const workerKinds: BoundaryKind[] = inWorker.boundaryKinds;
+  const workerFormat: MeshFormat = await inWorker.formatFromFileName('a.obj');
+  const workerSamples: string[] = inWorker.sampleNames();
+  void [workerKinds, workerFormat, workerSamples];
   inWorker.cancel();
   inWorker.terminate();
   // @ts-expect-error the options are an object, not a URL string

@@ -4,7 +4,7 @@
 import { createStraightest } from 'straightest';
 import { createStraightestWorker } from 'straightest/worker';
 
-/** straightest/worker: a result with transferred arrays, progress, then a cancel and a rebuilt mesh. */
+/** straightest/worker: a result with transferred arrays, progress, a cancel and a rebuilt mesh, the name lists. */
 async function viaHelper() {
   const st = await createStraightestWorker();
   const mesh = await st.sample('cap');
@@ -16,10 +16,12 @@ async function viaHelper() {
     .then(() => 'finished', (e) => e.category);
   const afterCancel = await cancelled;
   const info = await mesh.info(); // rebuilt in the new worker
+  const format = await st.formatFromFileName('Part.OFF');
   st.terminate();
   return {
     vertices: info.vertices, uvIsFloat32: p.uv instanceof Float32Array, uvLength: p.uv.length,
-    bijective: p.bijective, stages: [...stages], afterCancel,
+    bijective: p.bijective, stages: [...stages], afterCancel, format,
+    samples: st.sampleNames(), boundaryKinds: st.boundaryKinds, weightKinds: st.weightKinds,
   };
 }
 
