@@ -14,7 +14,9 @@
 #include "straightest/boundary_polygons.hpp"
 #include "straightest/compare_parameterizations.hpp"
 #include "straightest/enum_names.hpp"
+#include "straightest/exact_geodesic.hpp"
 #include "straightest/geodesic_distance.hpp"
+#include "straightest/geodesic_shoot.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
@@ -108,6 +110,82 @@ class MeshHandle {
       const std::vector<double> d = distances_->from(source.value(), method.value());
       JsWriter w;
       w.bulk("distances", d.data(), d.size(), Bulk::Float64);
+      return w.result();
+    });
+  }
+
+  /// A straightest geodesic shot from a source (the initial value problem): by a 3D direction, an
+  /// angle in the source's tangent frame, or toward a destination (then with its miss distance).
+  val shootGeodesic(const val& sourceJs, const val& aimJs, bool keepPoints, const val& progress) const {
+    return respond([&]() -> Expected<val> {
+      auto source = resolvedSource(sourceJs);
+      if (!source) return source.error();
+      auto aim = shotAimFrom(aimJs);
+      if (!aim) return aim.error();
+      const ShotAim& a = aim.value();
+      const double length = a.length.value_or(0);  // given unless toward (shotAimFrom)
+      Timings timings;
+      const Stopwatch clock;
+      auto shot = a.toward
+                      ? shootGeodesicToward(*mesh_, source.value(), *a.toward, a.length, {}, progressFrom(progress))
+                  : a.direction
+                      ? straightest::shootGeodesic(*mesh_, source.value(), *a.direction, length, {},
+                                                   progressFrom(progress))
+                      : shootGeodesicAtAngle(*mesh_, source.value(), *a.angle, length, {}, progressFrom(progress));
+      if (!shot) return shot.error();
+      timings.add("shoot", clock.ms());
+      JsWriter w;
+      visitFields(shot.value(), w);
+      if (!keepPoints) w.bulk("points", static_cast<const double*>(nullptr), 0, Bulk::Float64);
+      w.object("timings", [&](auto& o) { visitFields(timings, o); });
+      return w.result();
+    });
+  }
+
+  /// Exact shortest paths (window propagation) from a source to vertex targets: the table of the
+  /// CLI's `distances --method exact` (source, method, targets, distances), the propagation's cost
+  /// and, unless !keepPoints, each target's polyline packed like straightestPaths' points (an
+  /// unreachable target: an empty polyline and an infinite distance).
+  val exactShortestPaths(const val& sourceJs, const val& targetsJs, bool keepPoints, const val& progress) const {
+    return respond([&]() -> Expected<val> {
+      auto source = resolvedSource(sourceJs);
+      if (!source) return source.error();
+      auto specs = targetsFrom(targetsJs);
+      if (!specs) return specs.error();
+      auto targets = resolveTargets(*mesh_, specs.value());
+      if (!targets) return targets.error();
+      DistanceTable table{source.value(), DistanceMethod::Exact, {}, {}};
+      for (size_t i = 0; i < targets.value().size(); ++i) {
+        const SurfacePoint& t = targets.value()[i];
+        if (t.kind != SurfacePoint::Kind::Vertex)
+          return Error{ErrorCode::InvalidArgument,
+                       "targets[" + std::to_string(i) + "]: exact shortest paths end at vertices (give a vertex)"};
+        table.targets.push_back(t.index);
+      }
+      Timings timings;
+      Stopwatch clock;
+      auto field = exactGeodesics(*mesh_, table.source, progressFrom(progress));
+      if (!field) return field.error();
+      timings.add("distances", clock.lap());
+      std::vector<float> points;
+      std::vector<uint32_t> offsets{0};
+      for (int32_t t : table.targets) {
+        table.distances.push_back(field.value().distances[t]);
+        if (!keepPoints) continue;
+        auto path = exactShortestPath(*mesh_, field.value(), t);
+        if (path)
+          for (const Vec3& x : path.value()) points.insert(points.end(), {float(x.x), float(x.y), float(x.z)});
+        offsets.push_back(static_cast<uint32_t>(points.size() / 3));
+      }
+      if (keepPoints) timings.add("paths", clock.lap());
+      if (!keepPoints) offsets.clear();
+      JsWriter w;
+      visitFields(table, w);
+      w.count("count", static_cast<int64_t>(table.targets.size()));
+      w.bulk("points", points.data(), points.size(), Bulk::Float32);
+      w.bulk("offsets", offsets.data(), offsets.size(), Bulk::Uint32);
+      w.object("exact", [&](auto& o) { visitFields(field.value().stats, o); });
+      w.object("timings", [&](auto& o) { visitFields(timings, o); });
       return w.result();
     });
   }
@@ -256,6 +334,7 @@ val sampleNameList() { return stringArray(sampleNames()); }
 val nameLists() {
   val o = val::object();
   o.set("traceStatuses", stringArray(namesOf(kTraceStatusNames)));
+  o.set("shootStatuses", stringArray(namesOf(kShootStatusNames)));
   o.set("boundaryKinds", stringArray(namesOf(kBoundaryKindNames)));
   o.set("boundaryChoices", stringArray(namesOf(kBoundaryKindNames, kAutoName)));
   std::vector<std::string> polygonKinds;
@@ -285,6 +364,8 @@ EMSCRIPTEN_BINDINGS(straightest) {
       .function("basePlane", &MeshHandle::basePlaneAt)
       .function("straightestPaths", &MeshHandle::straightestPaths)
       .function("geodesicDistances", &MeshHandle::geodesicDistances)
+      .function("shootGeodesic", &MeshHandle::shootGeodesic)
+      .function("exactShortestPaths", &MeshHandle::exactShortestPaths)
       .function("parameterize", &MeshHandle::parameterizeMesh)
       .function("boundaryPolygons", &MeshHandle::boundaryPolygonsOf)
       .function("compareParameterizations", &MeshHandle::compare)

@@ -125,9 +125,35 @@ export class Mesh {
     return withProgress(onProgress, (progress) => handle.straightestPaths(source, targets, !!points, progress), this.#hint);
   }
 
-  /** Shortest distances from a source to every vertex: 'heat' (factored once per mesh) or 'dijkstra'. */
+  /**
+   * Shortest distances from a source to every vertex: 'heat' (factored once per mesh), 'dijkstra' or
+   * 'exact' (window propagation; exactShortestPaths also gives the paths).
+   */
   geodesicDistances(source = 'auto', method = 'heat') {
     return unwrap(this.#live().geodesicDistances(source, String(method)), this.#hint).distances;
+  }
+
+  /**
+   * A straightest geodesic as an initial value problem (Polthier–Schmies): from the source, walk
+   * straight for `length`, aimed by exactly one of `direction` ([x, y, z], projected onto the tangent
+   * plane), `angle` (radians in the source's tangent frame) or `toward` (a surface point: the direction
+   * the cutting plane would take; length defaults to its straightest distance). Returns points (packed
+   * x, y, z), length, facesCrossed, end, status and, with `toward`, missDistance.
+   */
+  shootGeodesic({ source = 'auto', direction, angle, toward, length, points = true, onProgress } = {}) {
+    const handle = this.#live();
+    return withProgress(onProgress, (progress) => handle.shootGeodesic(source, { direction, angle, toward, length },
+      !!points, progress), this.#hint);
+  }
+
+  /**
+   * Exact shortest paths (window propagation) from a source to vertex targets: 'boundary' (default),
+   * 'all-boundaries' or an array of vertices (and such names). Returns targets, distances, and the
+   * polylines packed like straightestPaths' (path i is points offsets[i]..offsets[i+1], 3 floats each).
+   */
+  exactShortestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
+    const handle = this.#live();
+    return withProgress(onProgress, (progress) => handle.exactShortestPaths(source, targets, !!points, progress), this.#hint);
   }
 
   /**
@@ -211,6 +237,9 @@ export class Straightest {
   /** The trace statuses, in the core's order: 'reached' is the only success. */
   get traceStatuses() { return [...this.#names.traceStatuses]; }
 
+  /** shootGeodesic's statuses, in the core's order: 'reached_length' is the only success. */
+  get shootStatuses() { return [...this.#names.shootStatuses]; }
+
   /** The boundary kinds: ['measured', 'circle', 'square', 'free']. */
   get boundaryKinds() { return [...this.#names.boundaryKinds]; }
 
@@ -226,7 +255,7 @@ export class Straightest {
   /** The linear solvers: ['multigrid', 'lu', 'bicgstab']. */
   get solvers() { return [...this.#names.solvers]; }
 
-  /** geodesicDistances' methods: ['heat', 'dijkstra']. */
+  /** geodesicDistances' methods: ['heat', 'dijkstra', 'exact']. */
   get distanceMethods() { return [...this.#names.distanceMethods]; }
 
   /** loadMesh's formats: ['obj', 'off', 'auto']. */

@@ -121,6 +121,46 @@ Expected<FreeBoundaryOptions> freeOptionsFrom(const val& options) {
   return free;
 }
 
+Expected<ShotAim> shotAimFrom(const val& options) {
+  ShotAim aim;
+  const auto given = [&](const char* name) { return !options[name].isUndefined() && !options[name].isNull(); };
+  const auto number = [&](const char* name) -> Expected<double> {
+    if (!isNumber(options[name])) return Error{ErrorCode::InvalidArgument, std::string(name) + " must be a number"};
+    return options[name].as<double>();
+  };
+  if (options.isUndefined() || options.isNull() || options.typeOf().as<std::string>() != "object")
+    return Error{ErrorCode::InvalidArgument, "shootGeodesic needs an options object"};
+  if (given("direction") + given("angle") + given("toward") != 1)
+    return Error{ErrorCode::InvalidArgument, "shootGeodesic needs one of direction, angle or toward (exactly one)"};
+  if (given("direction")) {
+    const val d = options["direction"];
+    const bool shaped = !d.isString() && d.typeOf().as<std::string>() == "object" && isNumber(d["length"]) &&
+                        d["length"].as<double>() == 3 && isNumber(d[0]) && isNumber(d[1]) && isNumber(d[2]);
+    if (!shaped)
+      return Error{ErrorCode::InvalidArgument, "direction must be [x, y, z] (3 numbers); got " + describe(d)};
+    aim.direction = Vec3{d[0].as<double>(), d[1].as<double>(), d[2].as<double>()};
+  }
+  if (given("angle")) {
+    auto a = number("angle");
+    if (!a) return a.error();
+    aim.angle = a.value();
+  }
+  if (given("toward")) {
+    auto point = pointFrom(options["toward"]);
+    if (!point) return shapeError("toward", false, options["toward"]);
+    if (!*point) return point->error();
+    aim.toward = point->value();
+  }
+  if (given("length")) {
+    auto l = number("length");
+    if (!l) return l.error();
+    aim.length = l.value();
+  }
+  if (!aim.toward && !aim.length)
+    return Error{ErrorCode::InvalidArgument, "shootGeodesic needs a length with direction or angle"};
+  return aim;
+}
+
 val stringArray(const std::vector<std::string>& names) {
   val a = val::array();
   for (const std::string& n : names) a.call<void>("push", n);

@@ -1,7 +1,8 @@
 // js_values.hpp — the bindings' adapters between JS values and core types, and nothing else:
 // surface points ('auto' → nullopt), targets ('boundary' → BoundaryVertices), name lists, progress
-// functions, build limits, the free boundary's options, and JsWriter, the visitor of result_fields.hpp that writes each
-// result as a plain JS object with typed arrays for its large arrays. No policy: every decision is the core's.
+// functions, build limits, the free boundary's options, a geodesic shot's aim, and JsWriter, the visitor of
+// result_fields.hpp that writes each result as a plain JS object with typed arrays for its large arrays. No policy:
+// every decision is the core's.
 #pragma once
 #include <emscripten/val.h>
 
@@ -51,6 +52,17 @@ BuildLimits limitsFrom(const val& options);
 /// The free boundary's { maxIterations, timeBudgetMs } (either may be missing: the core's default);
 /// InvalidArgument unless a positive integer / a positive number.
 Expected<FreeBoundaryOptions> freeOptionsFrom(const val& options);
+
+/// How shootGeodesic is aimed: exactly one of a 3D direction, an angle in the source's tangent frame
+/// or a destination, and the length (required unless toward). Only shapes are checked here: a zero or
+/// NaN direction, a NaN angle and a length ≤ 0 reach the core, which refuses them.
+struct ShotAim {
+  std::optional<Vec3> direction;
+  std::optional<double> angle;
+  std::optional<SurfacePoint> toward;
+  std::optional<double> length;
+};
+Expected<ShotAim> shotAimFrom(const val& options);
 
 /// A name list as a JS array of strings.
 val stringArray(const std::vector<std::string>& names);

@@ -11,10 +11,14 @@ import {
   type BoundaryKind,
   type CutMethod,
   type ErrorCategory,
+  type ExactShortestPaths,
+  type GeodesicShot,
   type MeshFormat,
   type MeshInfo,
   type Parameterization,
   type ProgressCallback,
+  type ProgressStage,
+  type ShootStatus,
   type SurfacePoint,
   type TraceStatus,
 } from 'straightest';
@@ -164,6 +168,32 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   // @ts-expect-error the distance methods are 'heat', 'dijkstra' and 'exact'
   mesh.geodesicDistances(source, 'mmp');
   void heat;
+
+  // Geodesics shot from a direction (initial value problem) and exact shortest paths.
+  const shot: GeodesicShot = mesh.shootGeodesic({ source: 'auto', direction: [1, 0, 0], length: 0.5, onProgress });
+  const shotPoints: Float64Array = shot.points;
+  const shotStatus: ShootStatus = shot.status;
+  const miss: number | null = mesh.shootGeodesic({ toward: { vertex: 3 } }).missDistance;
+  mesh.shootGeodesic({ source: { halfedge: 4, t: 0.5 }, angle: Math.PI / 3, length: 1, points: false });
+  mesh.shootGeodesic({ toward: 7, length: 2 });
+  // @ts-expect-error shootGeodesic needs its aim
+  mesh.shootGeodesic();
+  // @ts-expect-error a direction is 3 numbers
+  mesh.shootGeodesic({ direction: [1, 0], length: 1 });
+  // @ts-expect-error 'reached' is a trace status, not a shot's
+  const notShot: ShootStatus = 'reached';
+  const shootStatuses: ShootStatus[] = st.shootStatuses;
+  const exact: ExactShortestPaths = mesh.exactShortestPaths({ source, targets: [3, { vertex: 4 }, 'boundary'], onProgress });
+  const exactPoints: Float32Array = exact.points;
+  const exactOffsets: Uint32Array = exact.offsets;
+  const exactTargets: Int32Array = exact.targets;
+  const windows: number = exact.exact.windows;
+  mesh.exactShortestPaths();
+  mesh.exactShortestPaths({ targets: 'all-boundaries', points: false });
+  // @ts-expect-error exact shortest paths end at vertices
+  mesh.exactShortestPaths({ targets: [{ face: 0, bary: [1, 0, 0] }] });
+  const stages: ProgressStage[] = ['shoot', 'distances'];
+  void [shotPoints, shotStatus, miss, notShot, shootStatuses, exactPoints, exactOffsets, exactTargets, windows, stages];
 
   // Parameterization.
   const p: Parameterization = mesh.parameterize({
