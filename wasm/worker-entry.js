@@ -27,7 +27,8 @@ const MODULE_METHODS = new Set(['formatFromFileName']);
 const NAME_LISTS = ['traceStatuses', 'boundaryKinds', 'polygonBoundaryKinds', 'boundaryChoices', 'weightKinds', 'solvers',
   'distanceMethods', 'meshFormats', 'errorCategories'];
 const METHODS = new Set(['info', 'positions', 'indices', 'boundaryLoops', 'vertexNormals', 'defaultSource', 'basePlane',
-  'straightestPaths', 'geodesicDistances', 'parameterize', 'boundaryPolygons', 'compareParameterizations', 'toOBJ']);
+  'straightestPaths', 'geodesicDistances', 'parameterize', 'boundaryPolygons', 'compareParameterizations', 'toOBJ',
+  'shootGeodesic', 'exactShortestPaths']);
 
 /**
  * Every ArrayBuffer under `value` that a typed array owns whole (results are copies out of WASM memory;

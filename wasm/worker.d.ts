@@ -2,7 +2,7 @@
 import type {
   BasePlane, BoundaryPolygon, BoundaryPolygonsOptions, BuildLimits, CompareOptions, Comparison, CreateOptions, MeshFormat,
   MeshInfo, Parameterization, ParameterizeOptions, SampleName, StraightestPaths, StraightestPathsOptions, SurfacePoint,
-  DistanceMethod, Straightest,
+  DistanceMethod, Straightest, ShootGeodesicOptions, GeodesicShot, ExactShortestPathsOptions, ExactShortestPaths,
 } from './index.js';
 
 /** What the long calls take in the worker: Mesh's options plus an AbortSignal that cancels the work. */
@@ -39,6 +39,10 @@ export class WorkerMesh {
   boundaryPolygons(options?: WorkerOptions<BoundaryPolygonsOptions>): Promise<BoundaryPolygon[]>;
   /** Every boundary × weights; `signal` cancels. */
   compareParameterizations(options?: WorkerOptions<CompareOptions>): Promise<Comparison>;
+  /** A straightest geodesic shot from a source (see Mesh.shootGeodesic); `signal` cancels. */
+  shootGeodesic(options: WorkerOptions<ShootGeodesicOptions>): Promise<GeodesicShot>;
+  /** Exact shortest paths to vertices (see Mesh.exactShortestPaths); `signal` cancels. */
+  exactShortestPaths(options?: WorkerOptions<ExactShortestPathsOptions>): Promise<ExactShortestPaths>;
   /** Frees the mesh in the worker. */
   delete(): Promise<void>;
 }

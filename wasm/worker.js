@@ -33,6 +33,8 @@ class WorkerMesh {
   parameterize(options = {}) { return this.#client.callWithOptions(this.#id, 'parameterize', options); }
   boundaryPolygons(options = {}) { return this.#client.callWithOptions(this.#id, 'boundaryPolygons', options); }
   compareParameterizations(options = {}) { return this.#client.callWithOptions(this.#id, 'compareParameterizations', options); }
+  shootGeodesic(options = {}) { return this.#client.callWithOptions(this.#id, 'shootGeodesic', options); }
+  exactShortestPaths(options = {}) { return this.#client.callWithOptions(this.#id, 'exactShortestPaths', options); }
 
   /** Frees the mesh in the worker; later calls reject with StraightestError 'invalid_argument'. */
   delete() { return this.#client.deleteMesh(this.#id); }

@@ -9,6 +9,7 @@
 //   panels.js       info, path statistics, errors, status line
 //   session.js      load / cancel / reload, "latest request wins" (latest.js)
 //   requests.js     each request as a few calls to straightest/worker, with its progress stages
+//   geodesic-compare.js  cutting plane, shot (IVP) and exact geodesics to the last added destination
 //   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
 //   progress-view.js, test-hooks.js
 //
@@ -18,6 +19,7 @@
 // until its first click, which picks a destination; both ways round each section are drawn. Once the paths are drawn, the parameterization view
 // flattens the mesh.
 
+import { createGeodesicCompare } from './geodesic-compare.js';
 import { createHeatDistance } from './heat-distance.js';
 import { latest } from './latest.js';
 import { clearError, setStatus, showError, showInfo, showPathStats } from './panels.js';
@@ -36,7 +38,8 @@ const $ = (id) => document.getElementById(id);
 const view = createView({ canvas: $('view-canvas'), viewport: $('viewport') });
 const surface = createSurfaceView(view);
 let picking = null; // created below: hovering needs the path view, the path view tells it when paths go
-const paths = createPathView(view, { onClear: () => picking?.hide() });
+let geodesics = null; // created below (it needs the session); cleared with the paths
+const paths = createPathView(view, { onClear: () => { picking?.hide(); geodesics?.clear(); } });
 picking = createPicking({
   view, surface, paths, tooltip: $('path-tooltip'),
   onPick: (picked, add) => {
@@ -69,6 +72,7 @@ const session = createSession({
     showPaths: () => tracePaths(),
   },
 });
+geodesics = createGeodesicCompare({ session, view, surface, wanted: () => $('geodesic-toggle').checked });
 const heat = createHeatDistance({ session, surface, paths, wanted: () => $('heat-toggle').checked });
 createParamView({ session, view, surface, pathSource: () => pathRequest.source });
 
@@ -130,6 +134,7 @@ async function tracePaths() {
         status: reply.statuses[i], length, other: reply.otherArcLengths[i], backward: reply.backward[i] === 1,
       })) : null,
     };
+    geodesics.update(reply.source, pathRequest.added.at(-1) ?? null); // reports its own failure
     stage = 'compute the heat distances';
     if ($('heat-toggle').checked) await heat.show();
     if (current.stale()) return;
@@ -166,6 +171,7 @@ $('file-input').addEventListener('change', (event) => {
 $('wireframe-toggle').addEventListener('change', (event) => surface.setWireframe(event.target.checked));
 $('flat-toggle').addEventListener('change', (event) => surface.setFlatShading(event.target.checked));
 $('boundary-toggle').addEventListener('change', () => tracePaths());
+$('geodesic-toggle').addEventListener('change', () => geodesics.refresh());
 $('base-toggle').addEventListener('change', (event) => paths.setBaseVisible(event.target.checked));
 
 $('heat-toggle').addEventListener('change', (event) => {

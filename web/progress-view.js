@@ -29,6 +29,8 @@ const STAGE_LABELS = {
   overlays: 'other boundaries',
   compare: 'runs',
   export: 'write OBJ',
+  distances: 'exact shortest path',
+  shoot: 'shoot the geodesic',
 };
 
 function requestTitle(type, payload) {
@@ -43,6 +45,7 @@ function requestTitle(type, payload) {
     case 'parameterize': return `Parameterization (${payload.boundary ?? 'measured'} boundary)`;
     case 'compare': return 'Comparison (every boundary × weights)';
     case 'exportObj': return 'OBJ export';
+    case 'geodesics': return 'Geodesics to the destination';
     default: return null; // 'init' and the like: no group
   }
 }

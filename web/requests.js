@@ -23,6 +23,10 @@
 //   'compare' { source }         → { type: 'comparison', source, rows, best } (compareParameterizations;
 //        its progress messages carry `done` and `total` cells)
 //   'exportObj' { uv }           → { type: 'obj', text } (per-vertex uv, or a cut mesh's cornerUv)
+//   'geodesics' { source, target: { vertex } } → { type: 'geodesics', target, exact, plane, shot }: the
+//        three geodesics of issue 17 to one vertex: exact: exactShortestPaths' { distance, points }
+//        (Float32Array), plane: the cutting plane's straightestPaths' { length, status, points }, shot:
+//        shootGeodesic toward it (the plane's length when it reached, else the exact distance)
 // The mesh requests work on the adopted mesh (the one on display).
 //
 // Progress: every request reports { stage, fraction } (0…1) to the observer's task and to
@@ -33,6 +37,7 @@
 //                 boundaries), 'weights', 'solve', 'metrics', 'refine' (free and auto) (the core's
 //                 stages), 'overlays' (the other boundaries' polygons), 'upload'
 //   compare: 'compare'                exportObj: 'export'
+//   geodesics: 'distances' (exact), 'trace' (cutting plane), 'shoot'
 // 'upload' is fetching the arrays the page draws (a mesh) or unpacking the reply. The core's callbacks
 // (≤ ~100 per stage) are throttled to one update per 50 ms; a stage's start and its final 1.0 always
 // pass, and a stage the core did not report (e.g. 'solve' when the solver converged within its first
@@ -143,6 +148,7 @@ export function createRequests({ observer = null } = {}) {
       case 'parameterize': return [...(disk() ? [] : ['cut']), ...parameterizeStages(payload.boundary), 'overlays', 'upload'];
       case 'compare': return ['compare'];
       case 'exportObj': return ['export'];
+      case 'geodesics': return ['distances', 'trace', 'shoot'];
       default: return [];
     }
   }
@@ -222,6 +228,22 @@ export function createRequests({ observer = null } = {}) {
         onProgress: (stage, fraction) => progress.update('compare', fraction, { done: Math.round(fraction * total), total }),
       }));
       return { type: 'comparison', source, rows, best };
+    },
+
+    async geodesics({ source, target }, progress, step) {
+      const onDisplay = requireMesh();
+      const onProgress = progress.callback;
+      const exact = await step(() => onDisplay.exactShortestPaths({ source, targets: [target], onProgress }));
+      const plane = await step(() => onDisplay.straightestPaths({ source, targets: [target], onProgress }));
+      const reached = plane.statuses[0] === 'reached';
+      const length = reached ? {} : { length: exact.distances[0] };
+      const shot = await step(() => onDisplay.shootGeodesic({ source, toward: target, ...length, onProgress }));
+      return {
+        type: 'geodesics', target,
+        exact: { distance: exact.distances[0], points: exact.points.slice(3 * exact.offsets[0], 3 * exact.offsets[1]) },
+        plane: { length: plane.lengths[0], status: plane.statuses[0], points: plane.points.slice(3 * plane.offsets[0], 3 * plane.offsets[1]) },
+        shot,
+      };
     },
 
     async exportObj({ uv }, progress, step) {

@@ -15,6 +15,10 @@ export const hooks = {
   // { count, reached, source, traceMs, plain, otherArcs (other arcs drawn: closed surfaces), arcs: up
   // to 16 paths' { status, length, other (NaN when none), backward } } of the paths on display
   paths: null,
+  // The geodesic comparison (geodesic-compare.js) to the last added destination: { target (vertex),
+  // planeLength, planeStatus, shotLength, shotStatus, missDistance, exactLength, drawn: { plane, shot,
+  // exact } (whether each line was drawn) }, or null (toggle off, no destination, or before the reply).
+  geodesics: null,
   cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
   // The parameterization view: { boundary, weights, l2, linf, bijective, flipped, overlaps, init,
   // iterations, cut, seamEdges, genus, filledLoops, components } after each parameterization (init

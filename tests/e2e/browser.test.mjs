@@ -243,6 +243,37 @@ describe('straightest paths', () => {
       `hover tooltip: '${tip}'`);
   });
 
+  pageTest('shift+click compares the cutting-plane path, the shot geodesic and the exact shortest path', {
+    ready: 'window.__straightest.param && !window.__straightest.progress.busy',
+  }, async ({ page }) => {
+    const box = await page.locator('#view-canvas').boundingBox();
+    await page.keyboard.down('Shift');
+    await page.mouse.click(box.x + box.width * 0.55, box.y + box.height * 0.6);
+    await page.keyboard.up('Shift');
+    await expectReady(page, 'window.__straightest.geodesics');
+    const g = await page.evaluate(() => window.__straightest.geodesics);
+    assert(Number.isInteger(g.target), `destination vertex ${g.target}`);
+    for (const key of ['planeLength', 'shotLength', 'exactLength']) {
+      assert(Number.isFinite(g[key]) && g[key] > 0, `${key} = ${g[key]}`);
+    }
+    assert(g.planeStatus === 'reached', `the cutting plane's path: ${g.planeStatus}`);
+    // The exact distance is the shortest: no path on the surface is shorter.
+    assert(g.exactLength <= g.planeLength + 1e-9, `exact ${g.exactLength} > cutting plane ${g.planeLength}`);
+    assert(Number.isFinite(g.missDistance) && g.missDistance >= 0, `miss distance ${g.missDistance}`);
+    assert(g.drawn.plane && g.drawn.shot && g.drawn.exact, `drawn: ${JSON.stringify(g.drawn)}`);
+    assert(await page.isVisible('#geodesic-compare'), 'the comparison table is hidden');
+    for (const id of ['#geo-plane-length', '#geo-shot-length', '#geo-exact-length']) {
+      const text = (await page.textContent(id)).trim();
+      assert(/^[\d.]+(e[-+]?\d+)?$/.test(text), `${id} shows '${text}'`);
+    }
+    assert(/misses by/.test(await page.textContent('#geo-shot-note')), 'no miss distance shown');
+
+    // The toggle hides the comparison.
+    await page.uncheck('#geodesic-toggle');
+    await page.waitForFunction(() => window.__straightest.geodesics === null);
+    assert(!(await page.isVisible('#geodesic-compare')), 'the comparison stays after the toggle is off');
+  });
+
   pageTest('a closed mesh shows its info and a note instead of paths', {
     ready: 'window.__straightest.paths',
   }, async ({ page }) => {

@@ -176,6 +176,17 @@ test('esbuild and Vite bundle the package for the browser without configuration,
     // The name lists are the module's, read in the worker; the file-name rule is the core's.
     assert.equal(helper.format, 'off');
     assert.deepEqual([helper.samples, helper.boundaryKinds, helper.weightKinds], [reference.sampleNames(), reference.boundaryKinds, reference.weightKinds]);
+    // shootGeodesic and exactShortestPaths through the worker give what they give on the main thread.
+    const cap = reference.sample('cap');
+    const target = helper.geodesics.target;
+    const shot = cap.shootGeodesic({ toward: { vertex: target } });
+    const exact = cap.exactShortestPaths({ targets: [target] });
+    cap.delete();
+    assert.deepEqual(helper.geodesics, {
+      target, shotLength: shot.length, missDistance: shot.missDistance, shotPoints: true,
+      exactDistance: exact.distances[0], exactPoints: true,
+    });
+    assert.ok(helper.geodesics.exactDistance <= shot.straightestDistance + 1e-9);
     assert.deepEqual(results['esbuild/esbuild-main.html'], { vertices: capVertices, bijective: true });
     assert.deepEqual(results['esbuild/inline-main.html'], { vertices: capVertices, bijective: true });
   } finally {

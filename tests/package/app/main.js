@@ -17,10 +17,18 @@ async function viaHelper() {
   const afterCancel = await cancelled;
   const info = await mesh.info(); // rebuilt in the new worker
   const format = await st.formatFromFileName('Part.OFF');
+  // The geodesics of issue 17, forwarded: a shot toward a boundary vertex and the exact shortest path to it.
+  const [loop] = await mesh.boundaryLoops();
+  const shot = await mesh.shootGeodesic({ toward: { vertex: loop[0] } });
+  const exact = await mesh.exactShortestPaths({ targets: [loop[0]] });
   st.terminate();
   return {
     vertices: info.vertices, uvIsFloat32: p.uv instanceof Float32Array, uvLength: p.uv.length,
     bijective: p.bijective, stages: [...stages], afterCancel, format,
+    geodesics: {
+      target: loop[0], shotLength: shot.length, missDistance: shot.missDistance, shotPoints: shot.points instanceof Float64Array,
+      exactDistance: exact.distances[0], exactPoints: exact.points instanceof Float32Array && exact.offsets.length === 2,
+    },
     samples: st.sampleNames(), boundaryKinds: st.boundaryKinds, weightKinds: st.weightKinds,
   };
 }
