@@ -1,15 +1,7 @@
 cmake_minimum_required(VERSION 3.20)  # modern policies (quoted arguments are never dereferenced)
 # CLI contract: JSON on stdout and exit 0 for a good mesh; exit 2 with the message on stderr (or JSON
 # with --json-errors) for bad input; never a signal. Run by ctest as `cli_smoke`.
-function(expect_run expected_code)
-  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err
-                  WORKING_DIRECTORY ${SOURCE_DIR})
-  if(NOT code STREQUAL "${expected_code}")
-    message(FATAL_ERROR "straightest ${ARGN}: exit ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  set(OUT "${out}" PARENT_SCOPE)
-  set(ERR "${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
 function(expect_contains text needle)
   string(FIND "${text}" "${needle}" pos)

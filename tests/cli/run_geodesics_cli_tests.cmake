@@ -1,14 +1,7 @@
 cmake_minimum_required(VERSION 3.20)
 # CLI contract of `shoot` and `distances` (geodesics): their JSON fields, and exit 2 with a category for bad
 # input. Run by ctest as `cli_geodesics`.
-function(expect_run expected_code)
-  execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err
-                  WORKING_DIRECTORY ${SOURCE_DIR})
-  if(NOT code STREQUAL "${expected_code}")
-    message(FATAL_ERROR "straightest ${ARGN}: exit ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  set(OUT "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect_run.cmake)
 
 function(expect_category expected)
   string(JSON category GET "${OUT}" category)
