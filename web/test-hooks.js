@@ -15,6 +15,9 @@ export const hooks = {
   // { count, reached, source, traceMs, plain, otherArcs (other arcs drawn: closed surfaces), arcs: up
   // to 16 paths' { status, length, other (NaN when none), backward } } of the paths on display
   paths: null,
+  // The 3D camera at the last frame: { upAxis, up, position, target (the orbit centre), fovDeg (vertical),
+  // aspect } (arrays of 3 numbers).
+  camera: null,
   cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
   // The parameterization view: { boundary, weights, l2, linf, bijective, flipped, overlaps, init,
   // iterations, cut, seamEdges, genus, filledLoops, components } after each parameterization (init

@@ -20,6 +20,7 @@ import {
 } from './support/meshes.mjs';
 
 useBrowser({ onExit: removeBigGrid });
+await import('./camera.tests.mjs'); // after useBrowser: its tests use the shared browser
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
