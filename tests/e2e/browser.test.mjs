@@ -20,7 +20,9 @@ import {
 } from './support/meshes.mjs';
 
 useBrowser({ onExit: removeBigGrid });
-await import('./camera.tests.mjs'); // after useBrowser: its tests use the shared browser
+// After useBrowser: their tests use the shared browser.
+await import('./camera.tests.mjs');
+await import('./options.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
