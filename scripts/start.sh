@@ -5,8 +5,8 @@ source "$(dirname "$0")/common.sh"
 ensure_system_packages
 ensure_node_modules
 # The one slow step of a first start, announced so that a silent compiler is not taken for a hang; the
-# estimate is the first build on a busy 2-core machine (a rebuild with nothing changed takes seconds).
-echo "building the WebAssembly module (~6 min the first time, seconds after that)"
+# estimate is a first build measured on a busy 2-core machine (a rebuild with nothing changed takes seconds).
+echo "building the WebAssembly module (~8 min the first time, seconds after that)"
 t=$(now_ms)
 bash scripts/build.sh module
 echo "built the WebAssembly module in $(elapsed "$t") s"
