@@ -1,7 +1,8 @@
 // The page's wiring: it creates the views and connects them to the session and the controls. All
 // geometry happens in the package's worker (straightest/worker, which owns the WASM module); the
 // modules here only draw its arrays, pick points on the mesh and orchestrate the requests:
-//   scene.js        renderer, camera, controls, render scheduling, framing
+//   scene.js        renderer, camera, controls, render scheduling, framing, up axis, view presets
+//   up-axis.js      which axis points up when a mesh opens (the Up menu's auto)
 //   surface-view.js the mesh on display and what colours it
 //   path-view.js    path lines, markers, base plane, the hovered path's cutting plane
 //   picking.js      hovering paths (tooltip) and clicking the surface
@@ -28,6 +29,7 @@ import { createPathView } from './path-view.js';
 import { createPicking } from './picking.js';
 import { createProgressView } from './progress-view.js';
 import { createView } from './scene.js';
+import { autoUpAxis } from './up-axis.js';
 import { createSession } from './session.js';
 import { createSurfaceView } from './surface-view.js';
 import { hooks, setState } from './test-hooks.js';
@@ -58,6 +60,7 @@ const session = createSession({
       heat.reset();
       paths.clear(); // they belong to the previous mesh
       surface.show(positions, indices, normals);
+      setUpAxis(info.bbox);
       view.frameBox(info.bbox);
       showInfo(info, label);
       view.requestRender(); // shows the mesh if tracing takes longer than a frame
@@ -167,6 +170,22 @@ $('file-input').addEventListener('change', (event) => {
   if (file) session.loadFile(file);
   event.target.value = ''; // choosing the same file again still fires 'change'
 });
+
+// The Up menu: auto (up-axis.js's rule, its choice shown in the option) or x / y / z.
+function setUpAxis(bbox) {
+  const select = $('up-select');
+  const auto = autoUpAxis(bbox, $('sample-select').value !== ''); // '' while a file is on display
+  select.options[0].textContent = `auto (${auto})`;
+  view.setUpAxis(select.value === 'auto' ? auto : select.value);
+}
+$('up-select').addEventListener('change', () => {
+  if (session.info) setUpAxis(session.info.bbox);
+});
+$('fit-button').addEventListener('click', () => view.fit());
+$('view-reset-button').addEventListener('click', () => view.resetView());
+for (const preset of ['top', 'front', 'side']) {
+  $(`view-${preset}-button`).addEventListener('click', () => view.viewFrom(preset));
+}
 
 $('wireframe-toggle').addEventListener('change', (event) => surface.setWireframe(event.target.checked));
 $('flat-toggle').addEventListener('change', (event) => surface.setFlatShading(event.target.checked));

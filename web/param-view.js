@@ -29,6 +29,9 @@ const $ = (id) => document.getElementById(id);
 // Above this many vertices the page does not parameterize automatically after loading (seconds of
 // work per solve; the button runs it, with progress and Cancel).
 const LARGE_MESH_VERTICES = 300_000;
+// Changing Boundary, Weights or "Center at the path source" runs the parameterization again once the
+// options have stayed put this long (stepping through a menu with the arrow keys runs only the last).
+const RERUN_DELAY_MS = 300;
 
 /** The boundary menu's words for the core's kinds (st.boundaryKinds) and 'auto'. */
 const BOUNDARY_CHOICES = {
@@ -427,10 +430,34 @@ export function createParamView({ session, view, surface, pathSource }) {
     uvCanvas.toBlob((blob) => blob && download(blob, name), 'image/png');
   }
 
+  // ---------------------------------------------------------------- re-running on option changes
+
+  let rerunTimer = 0;
+
+  /**
+   * The options changed: what is shown must follow them. A run in flight with the old options is
+   * superseded at once (latest wins: its reply is dropped, never shown) and the new run starts after
+   * RERUN_DELAY_MS without a change. The worker is not restarted for it: that also stops the paths
+   * and the mesh reload, and is the Cancel button's job. A large mesh is never parameterized
+   * unasked (as on load): it gets a note instead.
+   */
+  function optionsChanged() {
+    clearTimeout(rerunTimer);
+    if (!surface.mesh) return;
+    if (large()) {
+      showNote('The options changed: press Parameterize to run them on this large mesh.', 'note');
+      return;
+    }
+    runs.supersede();
+    showNote('Parameterizing…', 'busy');
+    rerunTimer = setTimeout(() => parameterize(), RERUN_DELAY_MS);
+  }
+
   // ---------------------------------------------------------------- the session's events
 
   /** A new mesh is on display: everything shown belongs to the previous one. */
   session.addEventListener('meshchange', () => {
+    clearTimeout(rerunTimer); // the options' re-run was for the previous mesh
     fillBoundaryMenu();
     runs.supersede();
     running = false;
@@ -482,7 +509,13 @@ export function createParamView({ session, view, surface, pathSource }) {
 
   // ---------------------------------------------------------------- controls
 
-  $('param-button').addEventListener('click', () => parameterize());
+  $('param-button').addEventListener('click', () => {
+    clearTimeout(rerunTimer); // runs now what a pending re-run would have
+    parameterize();
+  });
+  for (const id of ['boundary-select', 'weights-select', 'param-source-toggle']) {
+    $(id).addEventListener('change', () => optionsChanged());
+  }
   $('export-obj-button').addEventListener('click', () => exportObj());
   $('export-png-button').addEventListener('click', () => exportPng());
   $('texture-select').addEventListener('change', () => updateTexture());

@@ -1,5 +1,6 @@
 // The 3D view: the three.js renderer, camera, lights and orbit controls, render scheduling (one
-// frame per change, on demand) and framing a mesh's bounding box. Everything drawn is added to
+// frame per change, on demand) and where the camera looks from: the up axis, framing a mesh's
+// bounding box (reset), fitting its bounding sphere (fit) and the top/front/side presets. Everything drawn is added to
 // view.scene by the other views; they call view.requestRender() after a change.
 
 import * as THREE from 'three';
@@ -17,7 +18,7 @@ export function createView({ canvas, viewport }) {
 
   const scene = new THREE.Scene();
   const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 100);
-  camera.up.set(0, 0, 1); // the samples are height fields z = h(x, y)
+  camera.up.set(0, 0, 1); // until setUpAxis: the samples are height fields z = h(x, y)
   camera.position.set(2, -3, 2);
   scene.add(camera);
 
@@ -28,8 +29,16 @@ export function createView({ canvas, viewport }) {
   camera.add(headlight.target);
   headlight.target.position.set(0, 0, -1);
 
-  const controls = new OrbitControls(camera, canvas);
-  controls.addEventListener('change', () => requestRender());
+  let controls = createControls();
+  let upAxis = 'z';
+  let framed = null; // { center, radius } of the framed mesh's bounding box
+
+  // OrbitControls reads camera.up once, when it is made: a new up axis needs new controls.
+  function createControls() {
+    const made = new OrbitControls(camera, canvas);
+    made.addEventListener('change', () => requestRender());
+    return made;
+  }
 
   let scale = 1; // bounding-box diagonal of the framed mesh: sizes markers and planes
   let scheduledFrame = 0; // requestAnimationFrame id of a pending render, 0 if none
@@ -39,6 +48,14 @@ export function createView({ canvas, viewport }) {
     scheduledFrame = 0;
     renderer.render(scene, camera);
     hooks.renders += 1;
+    hooks.camera = {
+      upAxis,
+      up: camera.up.toArray(),
+      position: camera.position.toArray(),
+      target: controls.target.toArray(),
+      fovDeg: camera.fov,
+      aspect: camera.aspect,
+    };
   }
 
   function requestRender() {
@@ -79,23 +96,99 @@ export function createView({ canvas, viewport }) {
   new ResizeObserver(resize).observe(viewport);
   resize();
 
-  /** Points the camera at the bounding box, from the front-right and above, so it fills the view. */
-  function frameBox(bbox) {
-    const min = new THREE.Vector3(...bbox.min);
-    const max = new THREE.Vector3(...bbox.max);
-    const center = min.clone().add(max).multiplyScalar(0.5);
-    const radius = Math.max(max.distanceTo(min) / 2, 1e-6);
+  // The camera's frame for each up axis: right × up = front (right-handed), the direction the front
+  // view looks from. z up: looking along +y from -y (x to the right); y up: three's own convention,
+  // looking along -z from +z; x up: y to the right.
+  const FRAMES = {
+    x: { up: [1, 0, 0], right: [0, 1, 0] },
+    y: { up: [0, 1, 0], right: [1, 0, 0] },
+    z: { up: [0, 0, 1], right: [1, 0, 0] },
+  };
+  function frameOf(axis) {
+    const up = new THREE.Vector3(...FRAMES[axis].up);
+    const right = new THREE.Vector3(...FRAMES[axis].right);
+    return { up, right, front: right.clone().cross(up) };
+  }
+  // Where each preset looks from, in the frame of the up axis. Top is tilted a hair toward the front:
+  // looking exactly along the up axis leaves the orbit controls no direction for "up" on screen.
+  const PRESETS = {
+    home: { right: 0.55, front: 1.0, up: 0.75 }, // front-right and above, as the page opens
+    top: { right: 0, front: 1e-3, up: 1 },
+    front: { right: 0, front: 1, up: 0 },
+    side: { right: 1, front: 0, up: 0 },
+  };
+
+  /** The distance at which a sphere of `radius` just fits the narrower of the view's two angles. */
+  function fitDistance(radius) {
     const halfFov = THREE.MathUtils.degToRad(camera.fov / 2);
     const fit = Math.min(halfFov, Math.atan(Math.tan(halfFov) * camera.aspect));
-    scale = 2 * radius;
-    const distance = (radius / Math.sin(fit)) * 0.95;
-    const direction = new THREE.Vector3(0.55, -1.0, 0.75).normalize();
+    return radius / Math.sin(fit);
+  }
+
+  /** Puts the camera `distance` from the framed centre along `direction` (a unit vector). */
+  function place(direction, distance) {
+    const { center } = framed;
     camera.position.copy(center).addScaledVector(direction, distance);
     camera.near = distance / 100;
     camera.far = distance * 100;
     camera.updateProjectionMatrix();
     controls.target.copy(center);
     controls.update();
+    requestRender();
+  }
+
+  /** Looks at the framed mesh from a preset direction (PRESETS) at `distance`. */
+  function lookFrom(preset, distance) {
+    if (!framed) return;
+    const frame = frameOf(upAxis);
+    const weights = PRESETS[preset];
+    const direction = new THREE.Vector3()
+      .addScaledVector(frame.right, weights.right)
+      .addScaledVector(frame.front, weights.front)
+      .addScaledVector(frame.up, weights.up)
+      .normalize();
+    place(direction, distance);
+  }
+
+  /**
+   * Points the camera at the bounding box, from the front-right and above, so it fills the view (a
+   * little closer than the bounding sphere: a box's corners rarely reach it).
+   */
+  function frameBox(bbox) {
+    const min = new THREE.Vector3(...bbox.min);
+    const max = new THREE.Vector3(...bbox.max);
+    const radius = Math.max(max.distanceTo(min) / 2, 1e-6);
+    framed = { center: min.clone().add(max).multiplyScalar(0.5), radius };
+    scale = 2 * radius;
+    resetView();
+  }
+
+  /** Back to the view the mesh opened with (for the current up axis). */
+  function resetView() {
+    lookFrom('home', fitDistance(framed?.radius ?? 1) * 0.95);
+  }
+
+  /** Keeps the direction the camera looks from and moves it so the whole bounding sphere is in view. */
+  function fit() {
+    if (!framed) return;
+    const direction = camera.position.clone().sub(controls.target);
+    if (direction.lengthSq() === 0) direction.copy(frameOf(upAxis).front);
+    place(direction.normalize(), fitDistance(framed.radius));
+  }
+
+  /** Looks from the top, front or side, the whole bounding sphere in view. */
+  function viewFrom(preset) {
+    lookFrom(preset, fitDistance(framed?.radius ?? 1));
+  }
+
+  /** Makes 'x', 'y' or 'z' point up on screen and looks at the mesh as it opens. */
+  function setUpAxis(axis) {
+    if (!FRAMES[axis]) throw new Error(`unknown up axis ${axis}`);
+    upAxis = axis;
+    camera.up.set(...FRAMES[axis].up);
+    controls.dispose();
+    controls = createControls();
+    resetView();
   }
 
   return {
@@ -108,6 +201,14 @@ export function createView({ canvas, viewport }) {
     requestRender,
     gpuIdle,
     frameBox,
+    resetView,
+    fit,
+    viewFrom,
+    setUpAxis,
+    /** 'x', 'y' or 'z': the axis pointing up on screen. */
+    get upAxis() {
+      return upAxis;
+    },
     /** The framed mesh's bounding-box diagonal (sizes markers, planes and picking tolerances). */
     get scale() {
       return scale;

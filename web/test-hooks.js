@@ -19,6 +19,9 @@ export const hooks = {
   // planeLength, planeStatus, shotLength, shotStatus, missDistance, exactLength, drawn: { plane, shot,
   // exact } (whether each line was drawn) }, or null (toggle off, no destination, or before the reply).
   geodesics: null,
+  // The 3D camera at the last frame: { upAxis, up, position, target (the orbit centre), fovDeg (vertical),
+  // aspect } (arrays of 3 numbers).
+  camera: null,
   cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
   // The parameterization view: { boundary, weights, l2, linf, bijective, flipped, overlaps, init,
   // iterations, cut, seamEdges, genus, filledLoops, components } after each parameterization (init

@@ -20,6 +20,9 @@ import {
 } from './support/meshes.mjs';
 
 useBrowser({ onExit: removeBigGrid });
+// After useBrowser: their tests use the shared browser.
+await import('./camera.tests.mjs');
+await import('./options.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
@@ -413,9 +416,9 @@ describe('parameterization', () => {
     const menu = await page.$$eval('#boundary-select option', (options) => options.map((o) => o.value));
     assert(menu.join() === 'measured,circle,square,free,auto', `boundary menu: ${menu.join()}`);
     const before = await page.evaluate(() => window.__straightest.parameterizations);
-    await page.selectOption('#boundary-select', 'free');
-    await page.click('#param-button');
-    await page.waitForFunction((n) => window.__straightest.parameterizations > n, before);
+    await page.selectOption('#boundary-select', 'free'); // the menu alone runs it (no button)
+    await page.waitForFunction((n) => window.__straightest.parameterizations > n &&
+      window.__straightest.param?.boundary === 'free' && !window.__straightest.progress.busy, before);
     const { param, progress } = await page.evaluate(() => window.__straightest);
     assert(param.boundary === 'free' && ['measured', 'circle'].includes(param.init) && Number.isInteger(param.iterations),
       `free parameterization: ${JSON.stringify(param)}`);
