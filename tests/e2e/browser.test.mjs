@@ -530,7 +530,12 @@ describe('a 200k-vertex mesh in the worker', () => {
   }, async ({ page }) => {
     // Once the paths are drawn the page parameterizes the mesh: with the 'auto' boundary (a solve
     // for each of the three) that is seconds of work. Cancel it midway.
+    // Choosing 'auto' re-runs the parameterization of the sample on display: let that finish first,
+    // so the stages waited for below are the big mesh's.
+    const before = await page.evaluate(() => window.__straightest.parameterizations);
     await page.selectOption('#boundary-select', 'auto');
+    await page.waitForFunction((n) => window.__straightest.parameterizations > n && !window.__straightest.progress.busy,
+      before, { timeout: BIG_WAIT_TIMEOUT_MS, polling: 100 });
     await page.setInputFiles('#file-input', bigGridFile());
     await page.waitForFunction((n) => {
       const { lastInfo, progress } = window.__straightest;
