@@ -72,6 +72,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         tr.dataset.boundary = row.boundary;
         tr.dataset.weights = row.weights;
         tr.title = row.error ?? `Show ${row.boundary} / ${WEIGHT_LABELS[row.weights]}`;
+        if (!row.error) tr.tabIndex = 0; // Enter or Space shows it, as a click does
         const refine = row.init ? `${row.init} · ${row.iterations}${row.converged ? '' : '+'}` : '–';
         const cells = row.error
           ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs).replace(' ms', '')]
@@ -105,10 +106,16 @@ export function createCompareView({ session, source, current, onChoose, onSettle
   }
 
   $('compare-button').addEventListener('click', () => run());
-  $('compare-table').tBodies[0].addEventListener('click', (event) => {
+  function choose(event) {
     const tr = event.target.closest('tr');
     if (!tr?.dataset.boundary || tr.classList.contains('failed')) return;
     onChoose(tr.dataset.boundary, tr.dataset.weights);
+  }
+  $('compare-table').tBodies[0].addEventListener('click', choose);
+  $('compare-table').tBodies[0].addEventListener('keydown', (event) => {
+    if (event.key !== 'Enter' && event.key !== ' ') return;
+    event.preventDefault(); // Space would scroll
+    choose(event);
   });
 
   return {

@@ -26,8 +26,9 @@ const materials = {
   exact: new LineMaterial({ color: EXACT_COLOR, linewidth: 3 }),
 };
 
-/** The vertex of the picked point's face with the largest barycentric coordinate. */
-function nearestVertex(surfaceMesh, { face, bary }) {
+/** The picked point's vertex, or the vertex of its face with the largest barycentric coordinate. */
+function nearestVertex(surfaceMesh, { vertex, face, bary }) {
+  if (vertex !== undefined) return vertex; // typed as a vertex number
   const index = surfaceMesh.geometry.index;
   const k = bary.indexOf(Math.max(...bary));
   return index.getX(3 * face + k);

@@ -11,6 +11,9 @@
 //   session.js      load / cancel / reload, "latest request wins" (latest.js)
 //   requests.js     each request as a few calls to straightest/worker, with its progress stages
 //   geodesic-compare.js  cutting plane, shot (IVP) and exact geodesics to the last added destination
+//   exact-ratio.js  straightest ÷ exact over every boundary target (plot and table)
+//   keyboard.js, point-entry.js   the view from the keyboard; typed source and destinations
+//   hints.js        what to try when traces fail or the measured boundary stretches more than the circle
 //   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
 //   progress-view.js, test-hooks.js
 //
@@ -20,13 +23,17 @@
 // until its first click, which picks a destination; both ways round each section are drawn. Once the paths are drawn, the parameterization view
 // flattens the mesh.
 
+import { createExactRatio } from './exact-ratio.js';
 import { createGeodesicCompare } from './geodesic-compare.js';
 import { createHeatDistance } from './heat-distance.js';
+import { poorResultHint, renderHint } from './hints.js';
+import { createKeyboard } from './keyboard.js';
 import { latest } from './latest.js';
 import { clearError, setStatus, showError, showInfo, showPathStats } from './panels.js';
 import { createParamView } from './param-view.js';
 import { createPathView } from './path-view.js';
-import { createPicking } from './picking.js';
+import { createPicking, surfacePosition } from './picking.js';
+import { createPointEntry } from './point-entry.js';
 import { createProgressView } from './progress-view.js';
 import { createView } from './scene.js';
 import { autoUpAxis } from './up-axis.js';
@@ -45,8 +52,9 @@ const paths = createPathView(view, { onClear: () => { picking?.hide(); geodesics
 picking = createPicking({
   view, surface, paths, tooltip: $('path-tooltip'),
   onPick: (picked, add) => {
-    // A closed surface has no boundary destinations: its first click picks a destination.
-    if (add || (closedMesh() && pathRequest.added.length === 0)) pathRequest.added.push(picked);
+    // A closed surface has no boundary destinations: its first click picks a destination. The
+    // "Clicks add destinations" toggle is shift+click for touch screens.
+    if (add || $('pick-destination-toggle').checked || (closedMesh() && pathRequest.added.length === 0)) pathRequest.added.push(picked);
     else pathRequest.source = picked.point;
     tracePaths();
   },
@@ -59,6 +67,8 @@ const session = createSession({
     showMesh({ positions, indices, normals, info, label }) {
       heat.reset();
       paths.clear(); // they belong to the previous mesh
+      exactRatio.clear();
+      renderHint($('paths-hint'), null);
       surface.show(positions, indices, normals);
       setUpAxis(info.bbox);
       view.frameBox(info.bbox);
@@ -70,12 +80,24 @@ const session = createSession({
       heat.reset();
       $('heat-toggle').checked = false;
       paths.clear();
+      exactRatio.clear();
+      renderHint($('paths-hint'), null);
       surface.remove();
     },
     showPaths: () => tracePaths(),
   },
 });
 geodesics = createGeodesicCompare({ session, view, surface, wanted: () => $('geodesic-toggle').checked });
+const exactRatio = createExactRatio({ session, source: () => pathRequest.source });
+createKeyboard(view);
+createPointEntry({
+  counts: () => (surface.mesh && session.info ? { vertices: session.info.vertices, faces: session.info.faces } : null),
+  apply({ source, destinations }) {
+    if (source) pathRequest.source = source;
+    for (const point of destinations) pathRequest.added.push({ point, position: surfacePosition(surface.mesh, point) });
+    tracePaths();
+  },
+});
 const heat = createHeatDistance({ session, surface, paths, wanted: () => $('heat-toggle').checked });
 createParamView({ session, view, surface, pathSource: () => pathRequest.source });
 
@@ -138,6 +160,8 @@ async function tracePaths() {
       })) : null,
     };
     geodesics.update(reply.source, pathRequest.added.at(-1) ?? null); // reports its own failure
+    exactRatio.sourceChanged(reply.source);
+    showPathsHint(reply);
     stage = 'compute the heat distances';
     if ($('heat-toggle').checked) await heat.show();
     if (current.stale()) return;
@@ -153,8 +177,20 @@ async function tracePaths() {
   }
 }
 
+/** The hint under the paths when straightest paths to the boundary failed (hints.js decides). */
+function showPathsHint(reply) {
+  const boundaryTargets = $('boundary-toggle').checked && !closedMesh() ? reply.count - pathRequest.added.length : 0;
+  const failed = reply.statuses.slice(0, boundaryTargets).filter((status) => status !== 'reached').length;
+  const hint = poorResultHint({
+    failedTraces: failed, traces: boundaryTargets, freeAvailable: session.boundaryKinds.includes('free'),
+  });
+  renderHint($('paths-hint'), hint);
+  hooks.pathsHint = hint?.text ?? null;
+}
+
 session.addEventListener('cancel', () => {
   traces.supersede();
+  exactRatio.cancelled();
   heat.cancel();
   if ($('heat-toggle').checked && !surface.hasColors) $('heat-toggle').checked = false;
 });

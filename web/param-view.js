@@ -23,6 +23,7 @@ import { createStretchView } from './stretch-view.js';
 import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 import { SEAM_COLOR, checkerboardCanvas, drawLayout } from './uv-layout.js';
 import { isCancelled } from './requests.js';
+import { parameterizationHint, renderHint } from './hints.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -372,6 +373,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     const failed = reply.overlays.filter((o) => o.error);
     showNote([cutNote(reply), ...failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`)]
       .filter(Boolean).join(' '));
+    showHint(parameterizationHint(reply, requested, session.boundaryKinds));
     $('param-panel').dataset.state = 'done';
     updateTexture();
     showStretch();
@@ -398,7 +400,14 @@ export function createParamView({ session, view, surface, pathSource }) {
   }
 
   /** Drops the parameterization on display (the uv attribute, the heat map, the hook). */
+  /** The poor-result hint under the stats (hints.js decides), or none. */
+  function showHint(hint) {
+    renderHint($('param-hint'), hint);
+    hooks.paramHint = hint?.text ?? null;
+  }
+
   function forget() {
+    showHint(null);
     shown = null;
     hideSeam();
     hooks.param = null;

@@ -11,6 +11,19 @@ const STATUS_TEXT = {
   other_component: 'other_component: the section through the source misses it (drawn: the loop back)',
 };
 
+/**
+ * The 3D position of a surface point on the mesh on display (surface-view.js's mesh): { vertex } or
+ * { face, bary } — for a point typed instead of clicked (its marker).
+ */
+export function surfacePosition(surfaceMesh, point) {
+  const { index, attributes } = surfaceMesh.geometry;
+  const at = (vertex) => new THREE.Vector3().fromBufferAttribute(attributes.position, vertex);
+  if (point.vertex !== undefined) return at(point.vertex);
+  const position = new THREE.Vector3();
+  point.bary.forEach((b, k) => position.addScaledVector(at(index.getX(3 * point.face + k)), b));
+  return position;
+}
+
 /** view: scene.js; surface: surface-view.js; paths: path-view.js; tooltip: the tooltip element. */
 export function createPicking({ view, surface, paths, tooltip, onPick }) {
   const { canvas, viewport, camera } = view;

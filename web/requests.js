@@ -27,6 +27,10 @@
 //        three geodesics of issue 17 to one vertex: exact: exactShortestPaths' { distance, points }
 //        (Float32Array), plane: the cutting plane's straightestPaths' { length, status, points }, shot:
 //        shootGeodesic toward it (the plane's length when it reached, else the exact distance)
+//   'exactRatio' { source }      → { type: 'exactRatio', source, targets: Int32Array (the longest
+//        boundary loop's vertices, in order), distances (exact), lengths (straightest), statuses, ratios:
+//        Float64Array (lengths ÷ distances; NaN where the trace failed) }: exactShortestPaths and
+//        straightestPaths to 'boundary', without points
 // The mesh requests work on the adopted mesh (the one on display).
 //
 // Progress: every request reports { stage, fraction } (0…1) to the observer's task and to
@@ -38,6 +42,7 @@
 //                 stages), 'overlays' (the other boundaries' polygons), 'upload'
 //   compare: 'compare'                exportObj: 'export'
 //   geodesics: 'distances' (exact), 'trace' (cutting plane), 'shoot'
+//   exactRatio: 'distances' (exact), 'trace' (cutting plane)
 // 'upload' is fetching the arrays the page draws (a mesh) or unpacking the reply. The core's callbacks
 // (≤ ~100 per stage) are throttled to one update per 50 ms; a stage's start and its final 1.0 always
 // pass, and a stage the core did not report (e.g. 'solve' when the solver converged within its first
@@ -149,6 +154,7 @@ export function createRequests({ observer = null } = {}) {
       case 'compare': return ['compare'];
       case 'exportObj': return ['export'];
       case 'geodesics': return ['distances', 'trace', 'shoot'];
+      case 'exactRatio': return ['distances', 'trace'];
       default: return [];
     }
   }
@@ -243,6 +249,21 @@ export function createRequests({ observer = null } = {}) {
         exact: { distance: exact.distances[0], points: exact.points.slice(3 * exact.offsets[0], 3 * exact.offsets[1]) },
         plane: { length: plane.lengths[0], status: plane.statuses[0], points: plane.points.slice(3 * plane.offsets[0], 3 * plane.offsets[1]) },
         shot,
+      };
+    },
+
+    async exactRatio({ source = 'auto' }, progress, step) {
+      if (closed()) throw categorizedError('a closed mesh has no boundary to compare against', 'topology');
+      const onDisplay = requireMesh();
+      const onProgress = progress.callback;
+      const exact = await step(() => onDisplay.exactShortestPaths({ source, targets: 'boundary', points: false, onProgress }));
+      const plane = await step(() => onDisplay.straightestPaths({ source, targets: 'boundary', points: false, onProgress }));
+      // Both expand 'boundary' into the same loop in the same order.
+      const ratios = Float64Array.from(plane.lengths, (length, i) =>
+        (plane.statuses[i] === 'reached' ? length / exact.distances[i] : NaN));
+      return {
+        type: 'exactRatio', source: plane.source, targets: exact.targets, distances: exact.distances,
+        lengths: plane.lengths, statuses: plane.statuses, ratios,
       };
     },
 

@@ -205,6 +205,10 @@ export function createView({ canvas, viewport }) {
     fit,
     viewFrom,
     setUpAxis,
+    /** The orbit controls (remade with each up axis): keyboard.js turns key presses into their moves. */
+    get controls() {
+      return controls;
+    },
     /** 'x', 'y' or 'z': the axis pointing up on screen. */
     get upAxis() {
       return upAxis;

@@ -19,6 +19,13 @@ export const hooks = {
   // planeLength, planeStatus, shotLength, shotStatus, missDistance, exactLength, drawn: { plane, shot,
   // exact } (whether each line was drawn) }, or null (toggle off, no destination, or before the reply).
   geodesics: null,
+  // Straightest ÷ exact over every boundary target (exact-ratio.js): { count, failed, min, median, max,
+  // ratios (NaN where the trace failed), statuses, source } of the plot on display, or null.
+  exactRatio: null,
+  // The poor-result hints on display (hints.js), as their text, or null: under the paths, and under
+  // the parameterization.
+  pathsHint: null,
+  paramHint: null,
   // The 3D camera at the last frame: { upAxis, up, position, target (the orbit centre), fovDeg (vertical),
   // aspect } (arrays of 3 numbers).
   camera: null,
