@@ -20,7 +20,7 @@ async function cameraAfter(page, before) {
 }
 
 describe('keyboard and touch', () => {
-  pageTest('the focused view: arrows orbit about the target, + and − zoom, 0 goes back', {}, async ({ page }) => {
+  pageTest('the focused view: arrows orbit, + and − zoom, 0 goes back; a typed source vertex moves the source', {}, async ({ page }) => {
     await page.waitForFunction(() => window.__straightest.camera);
     const start = (await hooks(page)).camera;
     const distance = (cam) => norm(sub(cam.position, cam.target));
@@ -52,27 +52,25 @@ describe('keyboard and touch', () => {
       return Math.hypot(...cam.position.map((v, i) => v - old.position[i])) < 1e-9 ? cam : null;
     }, start);
     assert(home, '0 did not bring back the opening view');
+
+    // Typing instead of clicking.
+    const before = await hooks(page);
+    await page.fill('#source-entry', '1275');
+    await page.click('#point-entry-button');
+    await page.waitForFunction(() => window.__straightest.paths?.source?.vertex === 1275);
+    await page.fill('#targets-entry', '3, face 100 0.2 0.3 0.5');
+    await page.press('#targets-entry', 'Enter');
+    await page.waitForFunction((n) => window.__straightest.paths?.count === n + 2, before.paths.count);
+    const now = await hooks(page);
+    assert.equal(now.paths.source.vertex, 1275, 'adding destinations moved the source');
+    assert.equal(await page.inputValue('#targets-entry'), '', 'the added destinations stay in the field');
+
+    await page.fill('#source-entry', '2500');
+    await page.click('#point-entry-button');
+    await page.waitForSelector('#point-entry-error:not([hidden])');
+    assert.match(await page.textContent('#point-entry-error'), /vertex 2500 does not exist: the mesh has vertices 0 to 2499/);
+    assert.equal((await hooks(page)).traces, now.traces, 'a mistake traced anyway');
   });
-
-  pageTest('typing a source vertex moves the source; typed destinations are added; mistakes are named', {},
-    async ({ page }) => {
-      const before = await hooks(page);
-      await page.fill('#source-entry', '1275');
-      await page.click('#point-entry-button');
-      await page.waitForFunction(() => window.__straightest.paths?.source?.vertex === 1275);
-      await page.fill('#targets-entry', '3, face 100 0.2 0.3 0.5');
-      await page.press('#targets-entry', 'Enter');
-      await page.waitForFunction((n) => window.__straightest.paths?.count === n + 2, before.paths.count);
-      const now = await hooks(page);
-      assert.equal(now.paths.source.vertex, 1275, 'adding destinations moved the source');
-      assert.equal(await page.inputValue('#targets-entry'), '', 'the added destinations stay in the field');
-
-      await page.fill('#source-entry', '2500');
-      await page.click('#point-entry-button');
-      await page.waitForSelector('#point-entry-error:not([hidden])');
-      assert.match(await page.textContent('#point-entry-error'), /vertex 2500 does not exist: the mesh has vertices 0 to 2499/);
-      assert.equal((await hooks(page)).traces, now.traces, 'a mistake traced anyway');
-    });
 
   pageTest('"Clicks add destinations": a click adds one instead of moving the source; compare rows answer Enter', {
     ready: 'window.__straightest.param && !window.__straightest.progress.busy',
