@@ -399,13 +399,13 @@ export function createParamView({ session, view, surface, pathSource }) {
     setButtons();
   }
 
-  /** Drops the parameterization on display (the uv attribute, the heat map, the hook). */
   /** The poor-result hint under the stats (hints.js decides), or none. */
   function showHint(hint) {
     renderHint($('param-hint'), hint);
     hooks.paramHint = hint?.text ?? null;
   }
 
+  /** Drops the parameterization on display (the uv attribute, the heat map, the hook, the hint). */
   function forget() {
     showHint(null);
     shown = null;
