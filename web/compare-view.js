@@ -6,6 +6,7 @@ import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { BOUNDARY_COLORS } from './colormap.js';
 import { isCancelled } from './requests.js';
+import { comparisonHint, renderHint } from './hints.js';
 import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 
 const $ = (id) => document.getElementById(id);
@@ -38,6 +39,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       if (request.stale()) return;
       hooks.compare = reply.rows;
       showTable(reply.rows, reply.rows[reply.best] ?? null);
+      showHint(comparisonHint(reply.rows, current()?.weights));
       const total = reply.rows.reduce((sum, row) => sum + row.timeMs, 0);
       status.textContent = `${reply.rows.length} runs in ${formatMs(total)}`;
     } catch (err) {
@@ -105,6 +107,12 @@ export function createCompareView({ session, source, current, onChoose, onSettle
     }
   }
 
+  /** The poor-result hint under the table (hints.js decides), or none. */
+  function showHint(hint) {
+    renderHint($('compare-hint'), hint);
+    hooks.compareHint = hint?.text ?? null;
+  }
+
   $('compare-button').addEventListener('click', () => run());
   function choose(event) {
     const tr = event.target.closest('tr');
@@ -131,6 +139,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       $('compare-progress').hidden = true;
       $('compare-status').textContent = '';
       hooks.compare = null;
+      showHint(null);
     },
 
     /** Cancel stopped the worker: the runs in flight will not come. */

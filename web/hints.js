@@ -65,3 +65,17 @@ export function parameterizationHint(reply, requested, boundaryKinds) {
     freeAvailable: boundaryKinds.includes('free') && reply.boundary !== 'free', // auto may have chosen it
   });
 }
+
+/**
+ * The hint for a comparison (compareParameterizations' rows): the measured and circle rows with
+ * `weights` (those on display, or the default) — no trace counts in its rows, only their L2.
+ */
+export function comparisonHint(rows, weights = 'shape-preserving') {
+  const l2 = (boundary) => rows.find((r) => r.boundary === boundary && r.weights === weights && !r.error)?.l2 ?? NaN;
+  return poorResultHint({
+    measuredL2: l2('measured'),
+    circleL2: l2('circle'),
+    boundary: 'compare',
+    freeAvailable: rows.some((r) => r.boundary === 'free' && !r.error),
+  });
+}

@@ -23,9 +23,10 @@ export const hooks = {
   // ratios (NaN where the trace failed), statuses, source } of the plot on display, or null.
   exactRatio: null,
   // The poor-result hints on display (hints.js), as their text, or null: under the paths, and under
-  // the parameterization.
+  // the parameterization, and under the comparison table.
   pathsHint: null,
   paramHint: null,
+  compareHint: null,
   // The 3D camera at the last frame: { upAxis, up, position, target (the orbit centre), fovDeg (vertical),
   // aspect } (arrays of 3 numbers).
   camera: null,

@@ -84,6 +84,8 @@ describe('keyboard and touch', () => {
 
     await page.click('#compare-button');
     await page.waitForFunction(() => window.__straightest.compare !== null);
+    assert.equal((await hooks(page)).compareHint, null, 'the mountain\'s measured map stretches less than the circle');
+    assert(await page.isHidden('#compare-hint'));
     const row = page.locator('#compare-table tr[data-boundary="circle"][data-weights="uniform"]');
     assert.equal(await row.getAttribute('tabindex'), '0', 'the row is not focusable');
     await row.focus();

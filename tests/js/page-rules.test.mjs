@@ -3,7 +3,7 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { L2_MARGIN, parameterizationHint, poorResultHint } from '../../web/hints.js';
+import { L2_MARGIN, comparisonHint, parameterizationHint, poorResultHint } from '../../web/hints.js';
 import { parsePoints } from '../../web/point-entry.js';
 
 test('hint: none when every trace reached and the measured map is no worse than the circle', () => {
@@ -45,6 +45,20 @@ test('hint of a parameterization: fallbacks of the traced loop, L2s from the aut
   assert(!auto.advice.some((a) => /free/.test(a)), 'auto chose free: no advice to choose it');
   assert.equal(parameterizationHint(reply('circle', 5, []), 'circle', kinds), null, 'a circle map traces nothing');
   assert.equal(parameterizationHint(reply('measured', 0, [{ boundary: 'measured', l2: 1.03 }]), 'measured', kinds), null);
+});
+
+test('hint of a comparison: the measured and circle rows of the weights on display', () => {
+  const row = (boundary, weights, l2) => ({ boundary, weights, l2, error: null });
+  // lion-head's shape-preserving rows: measured 9.21 > circle 8.88; with cotan weights 5.75 > 5.63 too.
+  const lion = [row('measured', 'shape-preserving', 9.2085), row('circle', 'shape-preserving', 8.8776),
+    row('measured', 'cotan', 5.7482), row('circle', 'cotan', 5.6321), row('free', 'cotan', 1.3334)];
+  const hint = comparisonHint(lion);
+  assert.match(hint.text, /L2 9\.209 > 8\.878/);
+  assert(hint.advice.some((a) => /free/.test(a)), 'the free rows exist');
+  assert.match(comparisonHint(lion, 'cotan').text, /L2 5\.748 > 5\.632/);
+  // The mountain: measured 1.03 well below circle 1.23.
+  assert.equal(comparisonHint([row('measured', 'shape-preserving', 1.0256), row('circle', 'shape-preserving', 1.2296)]), null);
+  assert.equal(comparisonHint([row('measured', 'uniform', 2)]), null, 'no circle row: nothing to compare');
 });
 
 test('typed points: vertices and faces with barycentric coordinates, every mistake named', () => {
