@@ -74,10 +74,10 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         tr.title = row.error ?? `Show ${row.boundary} / ${WEIGHT_LABELS[row.weights]}`;
         const refine = row.init ? `${row.init} · ${row.iterations}${row.converged ? '' : '+'}` : '–';
         const cells = row.error
-          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs).replace(' ms', '')]
+          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs, '')]
           : [WEIGHT_LABELS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
             String(row.flipped + row.degenerate), String(row.overlaps), refine,
-            row.timeMs.toFixed(row.timeMs >= 100 ? 0 : 1)];
+            formatMs(row.timeMs, '')];
         for (const text of cells) tr.insertCell().textContent = text;
         if (best && row.boundary === best.boundary && row.weights === best.weights) tr.classList.add('best');
         if (row.error) tr.classList.add('failed');
