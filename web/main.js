@@ -12,6 +12,7 @@
 //   requests.js     each request as a few calls to straightest/worker, with its progress stages
 //   geodesic-compare.js  cutting plane, shot (IVP) and exact geodesics to the last added destination
 //   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
+//   export-panel.js figure mode (figure-mode.js) and the image exports (image-export.js, layout-svg.js)
 //   progress-view.js, test-hooks.js
 //
 // After a mesh loads, the page asks the worker for the straightest paths from the default source to
@@ -25,6 +26,7 @@ import { createHeatDistance } from './heat-distance.js';
 import { latest } from './latest.js';
 import { clearError, setStatus, showError, showInfo, showPathStats } from './panels.js';
 import { createParamView } from './param-view.js';
+import { createExportPanel } from './export-panel.js';
 import { createPathView } from './path-view.js';
 import { createPicking } from './picking.js';
 import { createProgressView } from './progress-view.js';
@@ -77,7 +79,8 @@ const session = createSession({
 });
 geodesics = createGeodesicCompare({ session, view, surface, wanted: () => $('geodesic-toggle').checked });
 const heat = createHeatDistance({ session, surface, paths, wanted: () => $('heat-toggle').checked });
-createParamView({ session, view, surface, pathSource: () => pathRequest.source });
+const param = createParamView({ session, view, surface, pathSource: () => pathRequest.source });
+createExportPanel({ session, view, surface, paths, param });
 
 // ------------------------------------------------------------------ straightest paths
 
