@@ -139,7 +139,7 @@ export function createFigureMode({ session, view, surface, options, checkerCells
       <progress id="figure-progress" max="1" value="0" hidden></progress>
       <span id="figure-status" class="muted" aria-live="polite"></span>
       <button type="button" id="figure-cancel-button" hidden>Cancel</button>
-      <button type="button" id="figure-close-button">Back to the 3D view</button>
+      <button type="button" id="figure-close-button" title="Esc">Back to the 3D view</button>
     </header>
     <div id="figure-grid"></div>`;
   view.viewport.append(root);
@@ -242,6 +242,9 @@ export function createFigureMode({ session, view, surface, options, checkerCells
   }
 
   $('figure-close-button').addEventListener('click', () => close());
+  root.addEventListener('keydown', (event) => {
+    if (event.key === 'Escape') close();
+  });
   $('figure-cancel-button').addEventListener('click', () => session.cancel());
   session.addEventListener('meshchange', () => {
     close();
@@ -309,6 +312,7 @@ export function createFigureMode({ session, view, surface, options, checkerCells
     /** Shows the grid over the view and computes it (again: the options or the view may have changed). */
     open() {
       root.hidden = false;
+      $('figure-close-button').focus(); // Esc closes from here
       run();
       onChange();
     },
