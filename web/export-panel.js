@@ -42,6 +42,12 @@ export function createExportPanel({ session, view, surface, paths, param }) {
     $('export-status').textContent = `Could not export the ${what}: ${err.message}`;
   }
 
+  /** Says what is being drawn and lets the browser show it before the (synchronous) render. */
+  function working(what) {
+    $('export-status').textContent = `Rendering the ${what} at ${scale()}×…`;
+    return new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+  }
+
   /** Fits the wanted scale to the GPU; returns it and a note when it had to shrink. */
   function usableScale(width, height) {
     const wanted = scale();
@@ -51,6 +57,7 @@ export function createExportPanel({ session, view, surface, paths, param }) {
 
   async function exportView() {
     try {
+      await working('3D view');
       const { clientWidth: width, clientHeight: height } = view.canvas;
       const { usable, note } = usableScale(width, height);
       const canvas = renderToCanvas(view.scene, view.camera, { width, height, scale: usable, background: BACKGROUNDS[theme()] });
@@ -65,6 +72,7 @@ export function createExportPanel({ session, view, surface, paths, param }) {
   async function exportFigure() {
     if (!figure.complete) return;
     try {
+      await working('figure');
       const canvas = figure.compose({ scale: scale(), theme: theme() });
       const name = `${figure.name.replace(/[^\w.-]+/g, '_')}-figure-${scale()}x.png`;
       download(await pngBlob(canvas), name);

@@ -145,9 +145,15 @@ describe('figure mode and exports', () => {
     assert.equal(triangles, faces, 'the SVG draws every face\'s edges once');
   });
 
-  pageTest('hiding the paths takes them off the view; the width and colour controls restyle them', {
+  pageTest('hiding the paths takes them off the view; width and colour restyle them; counts have thousands separators', {
     ready: IDLE,
   }, async ({ page }) => {
+    // Counts of five digits or more have thousands separators (the mountain's paths cross over 10,000 faces).
+    const faces = (await page.textContent('#stats-faces')).trim();
+    const [sum, max] = faces.split(' / ').map((text) => Number(text.replace(/,/g, '')));
+    assert(sum >= 10_000 && faces === `${sum.toLocaleString('en-US')} / ${max}`, `faces crossed: '${faces}'`);
+    assert(!/\b0\.0 ms/.test(await page.textContent('#side-panel')), 'a time reads "0.0 ms"');
+
     const shown = await pathPixels(page);
     assert(shown > 0.005, `only ${(shown * 100).toFixed(2)}% of the view shows the paths`);
     let renders = await page.evaluate(() => window.__straightest.renders);
