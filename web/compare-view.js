@@ -72,7 +72,9 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         tr.dataset.boundary = row.boundary;
         tr.dataset.weights = row.weights;
         tr.title = row.error ?? `Show ${row.boundary} / ${WEIGHT_LABELS[row.weights]}`;
-        const refine = row.init ? `${row.init} · ${row.iterations}${row.converged ? '' : '+'}` : '–';
+        // Short enough for the side panel's width: the cell's title says it in full.
+        const start = row.init === 'measured' ? 'meas.' : row.init;
+        const refine = row.init ? `${start} ${row.iterations}${row.converged ? '' : '+'}` : '–';
         const cells = row.error
           ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs, '')]
           : [WEIGHT_LABELS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
