@@ -75,12 +75,14 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         tr.dataset.weights = row.weights;
         tr.title = row.error ?? `Show ${row.boundary} / ${WEIGHT_LABELS[row.weights]}`;
         if (!row.error) tr.tabIndex = 0; // Enter or Space shows it, as a click does
-        const refine = row.init ? `${row.init} · ${row.iterations}${row.converged ? '' : '+'}` : '–';
+        // Short enough for the side panel's width: the cell's title says it in full.
+        const start = row.init === 'measured' ? 'meas.' : row.init;
+        const refine = row.init ? `${start} ${row.iterations}${row.converged ? '' : '+'}` : '–';
         const cells = row.error
-          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs).replace(' ms', '')]
+          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs, '')]
           : [WEIGHT_LABELS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
             String(row.flipped + row.degenerate), String(row.overlaps), refine,
-            row.timeMs.toFixed(row.timeMs >= 100 ? 0 : 1)];
+            formatMs(row.timeMs, '')];
         for (const text of cells) tr.insertCell().textContent = text;
         if (best && row.boundary === best.boundary && row.weights === best.weights) tr.classList.add('best');
         if (row.error) tr.classList.add('failed');

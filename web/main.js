@@ -15,6 +15,7 @@
 //   keyboard.js, point-entry.js   the view from the keyboard; typed source and destinations
 //   hints.js        what to try when traces fail or the measured boundary stretches more than the circle
 //   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
+//   export-panel.js figure mode (figure-mode.js) and the image exports (image-export.js, layout-svg.js)
 //   progress-view.js, test-hooks.js
 //
 // After a mesh loads, the page asks the worker for the straightest paths from the default source to
@@ -31,6 +32,7 @@ import { createKeyboard } from './keyboard.js';
 import { latest } from './latest.js';
 import { clearError, setStatus, showError, showInfo, showPathStats } from './panels.js';
 import { createParamView } from './param-view.js';
+import { createExportPanel } from './export-panel.js';
 import { createPathView } from './path-view.js';
 import { createPicking, surfacePosition } from './picking.js';
 import { createPointEntry } from './point-entry.js';
@@ -99,7 +101,8 @@ createPointEntry({
   },
 });
 const heat = createHeatDistance({ session, surface, paths, wanted: () => $('heat-toggle').checked });
-createParamView({ session, view, surface, pathSource: () => pathRequest.source });
+const param = createParamView({ session, view, surface, pathSource: () => pathRequest.source });
+createExportPanel({ session, view, surface, paths, param });
 
 // ------------------------------------------------------------------ straightest paths
 

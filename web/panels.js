@@ -2,6 +2,7 @@
 // and how the page writes numbers and surface points. Only DOM: it shows what it is handed.
 
 import { hooks, setState } from './test-hooks.js';
+import { formatCount, formatMs } from './param-format.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -15,19 +16,19 @@ const ERROR_HINTS = {
 
 export function formatNumber(x) {
   if (!Number.isFinite(x)) return String(x);
-  return Number.isInteger(x) ? String(x) : String(Number(x.toPrecision(3)));
+  return Number.isInteger(x) ? formatCount(x) : String(Number(x.toPrecision(3)));
 }
 
-/** 'vertex 12', 'face 34 (0.20, 0.30, 0.50)' (or just 'face 34' without the coordinates), … */
+/** 'vertex 12', 'face 34, barycentric (0.20, 0.30, 0.50)' (or just 'face 34' without the coordinates), … */
 export function describePoint(point, withCoordinates = true) {
   if (typeof point === 'number') return `vertex ${point}`;
   if (typeof point?.vertex === 'number') return `vertex ${point.vertex}`;
   if (typeof point?.face === 'number') {
     const bary = point.bary.map((b) => b.toFixed(2)).join(', ');
-    return withCoordinates ? `face ${point.face} (${bary})` : `face ${point.face}`;
+    return withCoordinates ? `face ${point.face}, barycentric (${bary})` : `face ${point.face}`;
   }
   if (typeof point?.halfedge === 'number') {
-    return withCoordinates ? `halfedge ${point.halfedge} (t = ${point.t.toFixed(2)})` : `halfedge ${point.halfedge}`;
+    return withCoordinates ? `halfedge ${point.halfedge}, t = ${point.t.toFixed(2)}` : `halfedge ${point.halfedge}`;
   }
   return String(point);
 }
@@ -79,9 +80,9 @@ export function showPathStats(reply, request, drawn) {
   if (request.boundary && !request.closed) parts.push(`${count - request.added} boundary`);
   if (request.added) parts.push(`${request.added} added`);
   $('stats-targets').textContent = parts.join(' + ') || 'none';
-  $('stats-paths').textContent = String(count);
-  $('stats-reached').textContent = count ? `${reached} (${((100 * reached) / count).toFixed(0)}%)` : '0';
-  $('stats-failed').textContent = String(count - reached);
+  $('stats-paths').textContent = formatCount(count);
+  $('stats-reached').textContent = count ? `${formatCount(reached)} (${((100 * reached) / count).toFixed(0)}%)` : '0';
+  $('stats-failed').textContent = formatCount(count - reached);
 
   const list = $('stats-failures');
   const failures = Object.entries(summary.failures);
@@ -89,7 +90,7 @@ export function showPathStats(reply, request, drawn) {
     const item = document.createElement('li');
     item.innerHTML = `<code></code> <span></span>`;
     item.firstChild.textContent = status;
-    item.lastChild.textContent = `${n}`;
+    item.lastChild.textContent = formatCount(n);
     return item;
   }));
   list.hidden = failures.length === 0;
@@ -97,13 +98,13 @@ export function showPathStats(reply, request, drawn) {
   $('stats-length').textContent = reached
     ? `${formatNumber(summary.meanLength)} / ${formatNumber(summary.maxLength)}`
     : '–';
-  $('stats-faces').textContent = count ? `${summary.facesCrossed} / ${summary.maxFacesCrossed}` : '–';
+  $('stats-faces').textContent = count ? `${formatCount(summary.facesCrossed)} / ${formatCount(summary.maxFacesCrossed)}` : '–';
   const { timings } = reply;
   const time = $('stats-time');
-  time.textContent = `${timings.trace.toFixed(1)} ms`;
-  time.title = `tracing ${timings.trace.toFixed(2)} ms, setup ${timings.prepare.toFixed(2)} ms ` +
-    `(${reply.timeMs.toFixed(1)} ms in the worker in all)`;
-  $('stats-traces').textContent = String(hooks.traces);
+  time.textContent = formatMs(timings.trace);
+  time.title = `tracing ${formatMs(timings.trace)}, setup ${formatMs(timings.prepare)} ` +
+    `(${formatMs(reply.timeMs)} in the worker in all)`;
+  $('stats-traces').textContent = formatCount(hooks.traces);
 
   const notes = [];
   if (request.closed && count === 0) {
@@ -124,7 +125,7 @@ export function showPathStats(reply, request, drawn) {
   if (reply.baseNote) notes.push(`Base plane: ${reply.baseNote}.`);
   if (drawn?.plain) {
     const every = drawn.stride > 1 ? ` through 1 point in ${drawn.stride}` : '';
-    notes.push(`${(reply.points.length / 3).toLocaleString('en-US')} path points: drawn as thin plain ` +
+    notes.push(`${formatCount(reply.points.length / 3)} path points: drawn as thin plain ` +
       `lines${every} (failed ones solid red), and hovering a path is off.`);
   }
   $('stats-note').textContent = notes.join(' ');

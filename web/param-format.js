@@ -1,4 +1,5 @@
-// How the parameterization panels (param-view.js, compare-view.js) write weights, metrics and times.
+// How the page writes numbers: counts, weights, metrics and times (the panels, the comparison table,
+// the layout captions and the figure all use these, so one number reads the same everywhere).
 
 export const WEIGHT_LABELS = {
   'shape-preserving': 'shape-preserving',
@@ -7,14 +8,27 @@ export const WEIGHT_LABELS = {
   uniform: 'uniform',
 };
 
+/**
+ * A count: thousands separators (1,790,100) from five digits on; four digits stay as they are
+ * (2500), so a count never changes its width by one separator only.
+ */
+export function formatCount(n) {
+  if (!Number.isFinite(n)) return String(n);
+  return Math.abs(n) >= 10_000 ? n.toLocaleString('en-US', { maximumFractionDigits: 0 }) : String(Math.round(n));
+}
+
 /** Metrics close to 1 differ in the third decimal: four significant digits; ∞ for Infinity. */
 export function formatMetric(x) {
   if (x === Infinity) return '∞';
   if (!Number.isFinite(x)) return String(x);
-  if (Math.abs(x) >= 1000) return x.toFixed(0);
+  if (Math.abs(x) >= 1000) return formatCount(x);
   return x.toPrecision(4);
 }
 
+/** A duration: whole milliseconds from 100 on, one decimal below, "< 0.1" for what would round to 0.0. */
 export function formatMs(ms, unit = ' ms') {
-  return (ms >= 100 ? ms.toFixed(0) : ms.toFixed(1)) + unit;
+  if (!Number.isFinite(ms)) return `–${unit}`;
+  if (ms === 0) return `0${unit}`;
+  if (ms < 0.05) return `< 0.1${unit}`;
+  return (ms >= 100 ? formatCount(ms) : ms.toFixed(1)) + unit;
 }

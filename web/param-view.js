@@ -20,10 +20,11 @@ import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { createCompareView } from './compare-view.js';
 import { createStretchView } from './stretch-view.js';
-import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
+import { WEIGHT_LABELS, formatCount, formatMetric, formatMs } from './param-format.js';
 import { SEAM_COLOR, checkerboardCanvas, drawLayout } from './uv-layout.js';
 import { isCancelled } from './requests.js';
 import { parameterizationHint, renderHint } from './hints.js';
+import { download } from './image-export.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -44,18 +45,6 @@ const BOUNDARY_CHOICES = {
   auto: ['auto (best)', 'every boundary, keeping the least L2 stretch'],
 };
 
-/** Saves `blob` under `name` through a temporary download link. */
-function download(blob, name) {
-  const url = URL.createObjectURL(blob);
-  const link = document.createElement('a');
-  link.href = url;
-  link.download = name;
-  document.body.append(link);
-  link.click();
-  link.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 30_000);
-}
-
 /**
  * session: session.js (request, events, the mesh on display); view: scene.js; surface:
  * surface-view.js; pathSource(): the source of the straightest paths ('auto' or a SurfacePoint).
@@ -71,6 +60,7 @@ export function createParamView({ session, view, surface, pathSource }) {
 
   const maxAnisotropy = view.renderer.capabilities.getMaxAnisotropy();
   let checkerTexture = null; // made when first shown
+  let checkerCells = 16; // squares per side of the checkerboard (the export panel's density)
   let imageTexture = null; // the user's image, once loaded
 
   function configureTexture(texture) {
@@ -86,7 +76,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     if (!shown) return null;
     const choice = $('texture-select').value;
     if (choice === 'checker') {
-      checkerTexture ??= configureTexture(new THREE.CanvasTexture(checkerboardCanvas()));
+      checkerTexture ??= configureTexture(new THREE.CanvasTexture(checkerboardCanvas(1024, checkerCells)));
       return checkerTexture;
     }
     if (choice === 'image') return imageTexture;
@@ -235,8 +225,11 @@ export function createParamView({ session, view, surface, pathSource }) {
       if (title) dd.title = title; else dd.removeAttribute('title');
     };
     const method = $('param-method');
-    method.textContent = `${requested === 'auto' ? 'auto → ' : ''}${reply.boundary} boundary` +
-      `${reply.init ? ` (from ${reply.init})` : ''} · ${WEIGHT_LABELS[reply.weights]} weights`;
+    const weights = document.createElement('span'); // breaks before, never inside 'shape-preserving weights'
+    weights.className = 'nowrap';
+    weights.textContent = `${WEIGHT_LABELS[reply.weights]} weights`;
+    method.replaceChildren(`${requested === 'auto' ? 'auto → ' : ''}${reply.boundary} boundary` +
+      `${reply.init ? ` (from ${reply.init})` : ''} · `, weights);
     method.title = reply.candidates.length > 1
       ? `least L2 stretch of ${reply.candidates.map((c) => `${c.boundary} ${formatMetric(c.l2)}`).join(', ')}`
       : '';
@@ -274,23 +267,27 @@ export function createParamView({ session, view, surface, pathSource }) {
   const uvCanvas = $('uv-canvas');
   let layoutMessage = 'No parameterization yet.';
 
-  function redrawLayout() {
-    if (!shown) {
-      drawLayout(uvCanvas, null, layoutMessage);
-      return;
-    }
+  /** The layout on display as drawLayout takes it (title: for exports), or null. */
+  function currentLayout() {
+    if (!shown) return null;
     const { reply } = shown;
-    drawLayout(uvCanvas, {
+    return {
       cornerUv: reply.cornerUv,
       seam: reply.cut === 'path' || reply.cut === 'cut-graph',
       faceStretch: reply.faceStretch,
       overlays: reply.overlays,
       boundary: reply.boundary,
       heat: $('stretch-toggle').checked,
+      title: `${session.label || 'mesh'} — ${reply.boundary} boundary`,
       caption: `${reply.init ? `free from ${reply.init} · ` : ''}${WEIGHT_LABELS[reply.weights]} · ` +
         `L2 ${formatMetric(reply.stretch.l2)} · ` +
         `L∞ ${formatMetric(reply.stretch.linf)}${reply.bijective ? '' : ' · not bijective'}`,
-    });
+    };
+  }
+
+  function redrawLayout() {
+    const layout = currentLayout();
+    drawLayout(uvCanvas, layout && { ...layout, title: '' }, layoutMessage);
   }
   new ResizeObserver(() => redrawLayout()).observe(uvCanvas);
 
@@ -307,6 +304,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     $('compare-button').disabled = !hasMesh || hooks.paramError?.category === 'topology';
     $('export-obj-button').disabled = !shown;
     $('export-png-button').disabled = !shown;
+    $('export-svg-button').disabled = !shown;
   }
 
   const compare = createCompareView({
@@ -427,16 +425,10 @@ export function createParamView({ session, view, surface, pathSource }) {
     try {
       // A cut or filled mesh: a vt per corner uv, so the seam splits in the file too.
       const { text } = await session.request('exportObj', { uv: reply.cut === 'disk' ? reply.uv : reply.cornerUv });
-      download(new Blob([text], { type: 'text/plain' }), `${baseName()}-${reply.boundary}-uv.obj`);
+      download(new Blob([text], { type: 'text/plain' }), `${baseName()}-${reply.boundary}-${reply.weights}-uv.obj`);
     } catch (err) {
       if (!isCancelled(err)) showNote(`Could not export the OBJ: ${err.message}`, 'error');
     }
-  }
-
-  function exportPng() {
-    if (!shown) return;
-    const name = `${baseName()}-${shown.reply.boundary}-uv-layout.png`;
-    uvCanvas.toBlob((blob) => blob && download(blob, name), 'image/png');
   }
 
   // ---------------------------------------------------------------- re-running on option changes
@@ -490,8 +482,8 @@ export function createParamView({ session, view, surface, pathSource }) {
       return;
     }
     const vertices = session.info?.vertices ?? 0;
-    showNote(`Large mesh (${vertices.toLocaleString('en-US')} vertices, more than ` +
-      `${LARGE_MESH_VERTICES.toLocaleString('en-US')}): it is not parameterized automatically. ` +
+    showNote(`Large mesh (${formatCount(vertices)} vertices, more than ` +
+      `${formatCount(LARGE_MESH_VERTICES)}): it is not parameterized automatically. ` +
       'Press Parameterize to run it — it takes a while, the progress shows over the view and ' +
       'Cancel stops it.', 'note');
     layoutMessage = 'Press Parameterize to flatten this large mesh.';
@@ -526,7 +518,6 @@ export function createParamView({ session, view, surface, pathSource }) {
     $(id).addEventListener('change', () => optionsChanged());
   }
   $('export-obj-button').addEventListener('click', () => exportObj());
-  $('export-png-button').addEventListener('click', () => exportPng());
   $('texture-select').addEventListener('change', () => updateTexture());
   $('texture-input').addEventListener('change', (event) => {
     const [file] = event.target.files;
@@ -555,4 +546,22 @@ export function createParamView({ session, view, surface, pathSource }) {
   clearStats();
   setButtons();
   redrawLayout();
+
+  return {
+    /** The options of the runs on display: { source, weights } (the figure uses the same). */
+    options: () => ({ source: sourceOption(), weights: $('weights-select').value }),
+    currentLayout,
+    /** The base of export file names: the mesh, the boundary and the weights on display. */
+    exportName: () => `${baseName()}-${shown?.reply.boundary ?? 'none'}-${shown?.reply.weights ?? ''}`,
+    get checkerCells() {
+      return checkerCells;
+    },
+    /** The checkerboard's squares per side (the texture on the mesh is made again). */
+    setCheckerCells(cells) {
+      checkerCells = cells;
+      checkerTexture?.dispose();
+      checkerTexture = null;
+      updateTexture();
+    },
+  };
 }

@@ -197,6 +197,21 @@ export function createPathView(view, { onClear = () => {} } = {}) {
   view.scene.add(group);
   let shown = null; // the reply on display and the objects drawn for it (see show)
   let baseVisible = true;
+  // The export panel's path style: shown or not, width (× the default widths), colour of reached paths.
+  const style = { visible: true, width: 1, color: PATH_COLOR };
+  const widths = new Map([reachedMaterial, failedMaterial, otherArcMaterial].map((m) => [m, m.linewidth]));
+
+  /** Applies `style` to the materials and to the path lines on display. */
+  function applyStyle() {
+    for (const [material, width] of widths) material.linewidth = width * style.width;
+    reachedMaterial.color.set(style.color);
+    plainReachedMaterial.color.set(style.color);
+    if (shown) {
+      for (const line of shown.drawnLines) line.visible = style.visible;
+      shown.lines = style.visible ? shown.pickableLines : []; // hidden paths are not hovered either
+    }
+    view.requestRender();
+  }
 
   /**
    * Builds the plain-line shaders while the GPU is idle: a program's first use waits for the GPU to
@@ -260,9 +275,11 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     // ray cast on every pointer move.
     const pickable = plain ? [] : lines;
     shown = {
+      drawnLines: [...lines, otherArcs].filter(Boolean), pickableLines: pickable,
       reply, source, normal, lines: pickable, plain, stride, basePlane, highlight, cutPlane, hovered: -1,
       otherArcs: otherArcs ? withOtherArc.length : 0,
     };
+    applyStyle();
   }
 
   /**
@@ -321,6 +338,11 @@ export function createPathView(view, { onClear = () => {} } = {}) {
      */
     get shown() {
       return shown;
+    },
+    /** The paths' look: { visible, width (a factor of the default widths), color } (each optional). */
+    setStyle(changes) {
+      Object.assign(style, changes);
+      applyStyle();
     },
     setBaseVisible(visible) {
       baseVisible = visible;

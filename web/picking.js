@@ -4,6 +4,7 @@
 
 import * as THREE from 'three';
 import { describePoint, formatNumber } from './panels.js';
+import { formatCount } from './param-format.js';
 
 // How the tooltip names a trace status (the core's names, st.traceStatuses); any other: "(partial path)".
 const STATUS_TEXT = {
@@ -93,7 +94,7 @@ export function createPicking({ view, surface, paths, tooltip, onPick }) {
     const arcs = Number.isFinite(other)
       ? ` · ${reply.backward[i] ? 'backward' : 'forward'}, the other way round ${formatNumber(other)}`
       : '';
-    details.textContent = `length ${formatNumber(reply.lengths[i])}${arcs} · ${reply.facesCrossed[i]} faces crossed`;
+    details.textContent = `length ${formatNumber(reply.lengths[i])}${arcs} · ${formatCount(reply.facesCrossed[i])} faces crossed`;
     tooltip.append(title, state, details);
     const rect = viewport.getBoundingClientRect();
     const x = event.clientX - rect.left;

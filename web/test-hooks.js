@@ -40,6 +40,12 @@ export const hooks = {
   paramError: null,
   parameterizations: 0,
   compare: null,
+  // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,
+  // l2, linf, bijective, init }] in the order shown }, or null (never opened, or a new mesh).
+  figure: null,
+  // The images saved (export-panel.js), in order: { kind: 'view' | 'figure' | 'layout-png' | 'layout-svg',
+  // name, width, height (device pixels; cssWidth, cssHeight for the view), bytes (SVG) }.
+  exports: [],
   // The progress panel: busy while a job runs (and its bars linger), the number of jobs and progress
   // messages, the largest fraction each stage ('type:stage') of the current (or last) job reached,
   // and when (ms after the job began) it was first reported and reached 100%.

@@ -4,7 +4,6 @@
 
 import { BOUNDARY_COLORS, STRETCH_INFINITE, stretchIndex, stretchRgb, stretchTable } from './colormap.js';
 
-const LAYOUT_BACKGROUND = '#101318';
 /** The seam of a cut mesh, in the layout and on the surface (param-view.js). */
 export const SEAM_COLOR = '#ff4fd8';
 
@@ -37,19 +36,49 @@ export function checkerboardCanvas(size = 1024, cells = 16) {
 
 // ------------------------------------------------------------------ the 2D layout
 
-const MARGIN = 12; // CSS pixels around the unit square
-const LEGEND_HEIGHT = 58; // CSS pixels below it: the boundary legend, a caption and a key
+export const MARGIN = 12; // CSS pixels around the unit square
+const LEGEND_HEIGHT = 58; // CSS pixels below it on screen: the boundary legend, a caption and a key
+export const LINE_HEIGHT = 15; // CSS pixels per legend line of an export (wrapped, never cut)
 // Above this many faces the triangles are filled pixel by pixel into the canvas' image instead of
 // stroked one by one: at that density the edges would be a solid fill anyway, and stroking millions
 // of sub-pixel triangles would block the page for seconds.
 export const RASTER_FACES = 50_000;
-const RASTER_FILL = [99, 104, 111]; // the thin edge colour over the background, as the strokes blend
 
-/** The canvas' backing store follows its CSS size (at least 2× for a crisp PNG export). */
-function fitCanvas(canvas) {
-  const width = canvas.clientWidth || 300;
-  const height = canvas.clientHeight || Math.round(width + LEGEND_HEIGHT);
-  const scale = Math.max(window.devicePixelRatio || 1, 2);
+/**
+ * The layout's colours per background: 'dark' (the page), 'light' (print) and 'transparent' (the light
+ * palette's ink on no background). rasterFill: the thin edge colour over the background, as the strokes
+ * blend (the fill of a dense mesh).
+ */
+export const LAYOUT_THEMES = {
+  dark: {
+    background: '#101318', grid: 'rgba(141, 150, 165, 0.16)', frame: 'rgba(141, 150, 165, 0.45)',
+    edges: 'rgba(214, 221, 232, 0.42)', heatEdges: 'rgba(16, 19, 24, 0.35)', halo: 'rgba(0, 0, 0, 0.55)',
+    strong: '#e4e7ec', label: '#a3abb8', text: '#c3c9d3', muted: '#8d96a5', rasterFill: [99, 104, 111],
+  },
+  light: {
+    background: '#ffffff', grid: 'rgba(60, 70, 85, 0.14)', frame: 'rgba(60, 70, 85, 0.5)',
+    edges: 'rgba(30, 36, 46, 0.42)', heatEdges: 'rgba(16, 19, 24, 0.3)', halo: 'rgba(255, 255, 255, 0.8)',
+    strong: '#11151b', label: '#3d4552', text: '#2a303a', muted: '#5b6472', rasterFill: [150, 155, 162],
+  },
+};
+LAYOUT_THEMES.transparent = { ...LAYOUT_THEMES.light, background: null };
+
+export const FONT = 'system-ui, sans-serif';
+/** The key below an edge drawing: what the lines are (a dense mesh: what the grey fill is). */
+export function layoutKey(faces) {
+  return faces > RASTER_FACES
+    ? `grey: ${faces.toLocaleString('en-US')} faces, filled (too many edges to draw)`
+    : 'thin lines: mesh edges · dashed square: the uv frame [0,1]²';
+}
+
+/**
+ * The canvas' backing store: its CSS size (at least 2× for a crisp picture) on screen, or an export's
+ * `size` ({ width, height, scale } in CSS pixels and device pixels per CSS pixel).
+ */
+function fitCanvas(canvas, size) {
+  const width = size?.width ?? (canvas.clientWidth || 300);
+  const height = size?.height ?? (canvas.clientHeight || Math.round(width + LEGEND_HEIGHT));
+  const scale = size?.scale ?? Math.max(window.devicePixelRatio || 1, 2);
   const [w, h] = [Math.round(width * scale), Math.round(height * scale)];
   if (canvas.width !== w || canvas.height !== h) [canvas.width, canvas.height] = [w, h];
   // A CPU-backed canvas: its thousands of thin strokes draw faster in software than through a
@@ -60,28 +89,67 @@ function fitCanvas(canvas) {
 }
 
 /**
+ * The legend's text lines at `width` (CSS pixels): the title and the caption, and the key (none with
+ * the heat map, whose key is a colour ramp), each wrapped at word boundaries when `wrap` (exports)
+ * or cut with an ellipsis (the small on-screen canvas).
+ */
+export function legendText(ctx, { title, caption, heat, faces }, width, wrap) {
+  const lines = (text, font) => {
+    if (!text) return [];
+    ctx.font = font;
+    return wrap ? wrapLines(ctx, text, width) : [fitText(ctx, text, width)];
+  };
+  return {
+    title: lines(title, `600 12px ${FONT}`),
+    caption: lines(caption, `11px ${FONT}`),
+    key: heat ? [] : lines(layoutKey(faces), `11px ${FONT}`),
+  };
+}
+
+/**
+ * The CSS size of an export of `layout` `width` wide: the square frame and the legend below it with
+ * every line wrapped (see drawLayout's `size`).
+ */
+export function layoutExportSize(layout, width) {
+  const ctx = document.createElement('canvas').getContext('2d');
+  const faces = layout.cornerUv.length / 6;
+  const side = width - 2 * MARGIN;
+  const text = legendText(ctx, { ...layout, faces }, side, true);
+  const lines = text.title.length + text.caption.length + Math.max(text.key.length, layout.heat ? 1 : 0);
+  return { width, height: Math.ceil(side + 2 * MARGIN + 10 + 16 + lines * LINE_HEIGHT + 4) };
+}
+
+/**
  * Draws a parameterization's layout:
  *   layout = { cornerUv, faceStretch, overlays: [{ boundary, polygon, error }], boundary,
- *              heat: boolean, caption: string, seam: boolean }
+ *              heat: boolean, caption: string, seam: boolean, title?: string }
  * — the triangles' uv edges thinly (filled with their stretch colour when `heat`), the polygons of
  * the other boundaries dashed, the chosen boundary's polygon bold, and a legend. cornerUv has u, v
  * per face corner (a cut mesh's seam vertices have one per side; NaN: a face left out). `seam`: the
  * mesh was cut open, so the chosen polygon (the disk's boundary) is the seam: drawn in the seam's
  * colour and named so. With `layout` null, draws the empty frame and `message`.
+ * options: size (an export: { width, height, scale }, see layoutExportSize; its legend lines wrap
+ * instead of being cut) and theme (a LAYOUT_THEMES key).
  */
-export function drawLayout(canvas, layout, message = '') {
-  const { ctx, width, height } = fitCanvas(canvas);
-  ctx.fillStyle = LAYOUT_BACKGROUND;
-  ctx.fillRect(0, 0, width, height);
+export function drawLayout(canvas, layout, message = '', { size = null, theme = 'dark' } = {}) {
+  const colors = LAYOUT_THEMES[theme] ?? LAYOUT_THEMES.dark;
+  const { ctx, width, height } = fitCanvas(canvas, size);
+  ctx.clearRect(0, 0, width, height);
+  if (colors.background) {
+    ctx.fillStyle = colors.background;
+    ctx.fillRect(0, 0, width, height);
+  }
 
-  // The uv frame [0,1]², as large as fits with the aspect ratio kept; v points up.
-  const side = Math.max(10, Math.min(width - 2 * MARGIN, height - LEGEND_HEIGHT - 2 * MARGIN));
+  // The uv frame [0,1]², as large as fits with the aspect ratio kept; v points up. An export's frame
+  // takes the whole width (its height was made to fit the legend).
+  const legend = size ? height - width : LEGEND_HEIGHT;
+  const side = Math.max(10, Math.min(width - 2 * MARGIN, height - legend - 2 * MARGIN));
   const x0 = (width - side) / 2;
   const y0 = MARGIN;
   const px = (u) => x0 + u * side;
   const py = (v) => y0 + (1 - v) * side;
 
-  ctx.strokeStyle = 'rgba(141, 150, 165, 0.16)';
+  ctx.strokeStyle = colors.grid;
   ctx.lineWidth = 1;
   ctx.beginPath();
   for (let k = 1; k < 4; k++) {
@@ -89,15 +157,15 @@ export function drawLayout(canvas, layout, message = '') {
     ctx.moveTo(px(0), py(k / 4)); ctx.lineTo(px(1), py(k / 4));
   }
   ctx.stroke();
-  ctx.strokeStyle = 'rgba(141, 150, 165, 0.45)';
+  ctx.strokeStyle = colors.frame;
   ctx.setLineDash([3, 3]);
   ctx.strokeRect(px(0), py(1), side, side);
   ctx.setLineDash([]);
 
   if (!layout) {
     if (message) {
-      ctx.fillStyle = '#8d96a5';
-      ctx.font = '12.5px system-ui, sans-serif';
+      ctx.fillStyle = colors.muted;
+      ctx.font = `12.5px ${FONT}`;
       ctx.textAlign = 'center';
       ctx.textBaseline = 'middle';
       wrapText(ctx, message, width / 2, y0 + side / 2, side - 24, 17);
@@ -108,9 +176,9 @@ export function drawLayout(canvas, layout, message = '') {
   const { cornerUv, overlays, boundary, seam } = layout;
   const faces = cornerUv.length / 6;
   if (faces > RASTER_FACES) {
-    rasterize(ctx, layout, x0, y0, side);
+    rasterize(ctx, layout, x0, y0, side, colors.rasterFill);
   } else {
-    drawTriangles(ctx, layout, px, py);
+    drawTriangles(ctx, layout, px, py, colors);
   }
 
   // The boundary polygons: the others dashed and thin, the chosen one bold on top.
@@ -131,7 +199,7 @@ export function drawLayout(canvas, layout, message = '') {
   ctx.setLineDash([]);
   const chosen = overlays.find((o) => o.boundary === boundary && o.polygon);
   if (chosen) {
-    ctx.strokeStyle = 'rgba(0, 0, 0, 0.55)'; // a dark halo keeps the bold line readable on any fill
+    ctx.strokeStyle = colors.halo; // a halo keeps the bold line readable on any fill
     ctx.lineWidth = 5;
     polygonPath(chosen.polygon);
     ctx.stroke();
@@ -140,11 +208,12 @@ export function drawLayout(canvas, layout, message = '') {
     ctx.stroke();
   }
 
-  drawLegend(ctx, { ...layout, raster: faces > RASTER_FACES, faces }, x0, y0 + side + 10, side);
+  const text = legendText(ctx, { ...layout, faces }, side, size !== null);
+  drawLegend(ctx, { ...layout, text, colors }, x0, y0 + side + 10);
 }
 
 /** The triangles as canvas paths: filled with their stretch colour when `heat`, then their edges. */
-function drawTriangles(ctx, { cornerUv, faceStretch, heat }, px, py) {
+function drawTriangles(ctx, { cornerUv, faceStretch, heat }, px, py, colors) {
   const faces = cornerUv.length / 6;
   const u = (f, k) => cornerUv[6 * f + 2 * k];
   const v = (f, k) => cornerUv[6 * f + 2 * k + 1];
@@ -163,7 +232,7 @@ function drawTriangles(ctx, { cornerUv, faceStretch, heat }, px, py) {
   }
 
   // The mesh edges in uv: one path, so shared edges are not drawn twice as dark.
-  ctx.strokeStyle = heat ? 'rgba(16, 19, 24, 0.35)' : 'rgba(214, 221, 232, 0.42)';
+  ctx.strokeStyle = heat ? colors.heatEdges : colors.edges;
   ctx.lineWidth = 0.5;
   ctx.beginPath();
   for (let f = 0; f < faces; f++) {
@@ -180,7 +249,7 @@ function drawTriangles(ctx, { cornerUv, faceStretch, heat }, px, py) {
  * belongs to the triangles that contain its center, so a tiling leaves no holes however small its
  * triangles are.
  */
-function rasterize(ctx, { cornerUv: uv, faceStretch, heat }, x0, y0, side) {
+function rasterize(ctx, { cornerUv: uv, faceStretch, heat }, x0, y0, side, fill) {
   const scale = ctx.getTransform().a; // device pixels per CSS pixel (fitCanvas)
   const left = Math.floor(x0 * scale);
   const top = Math.floor(y0 * scale);
@@ -211,9 +280,7 @@ function rasterize(ctx, { cornerUv: uv, faceStretch, heat }, x0, y0, side) {
     const x2 = Math.min(width - 1, Math.ceil(Math.max(ax, bx, cx)));
     const y1 = Math.max(0, Math.floor(Math.min(ay, by, cy)));
     const y2 = Math.min(height - 1, Math.ceil(Math.max(ay, by, cy)));
-    let r = RASTER_FILL[0];
-    let g = RASTER_FILL[1];
-    let bl = RASTER_FILL[2];
+    let [r, g, bl] = fill;
     if (lut) {
       const k = 3 * stretchIndex(faceStretch[f]);
       [r, g, bl] = [lut[k], lut[k + 1], lut[k + 2]];
@@ -238,10 +305,21 @@ function rasterize(ctx, { cornerUv: uv, faceStretch, heat }, x0, y0, side) {
 }
 
 /**
- * Below the frame, three lines: a swatch per boundary polygon (the chosen one bold), the caption,
- * and the key of the fill (the stretch scale) or of the lines.
+ * A dense layout's triangles alone, filled into a transparent canvas of side × side CSS pixels at
+ * `scale` (the SVG export embeds it: a million triangles would make an unreadable file).
  */
-function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces, seam }, x, y, width) {
+export function rasterLayer(layout, side, scale, theme = 'dark') {
+  const canvas = document.createElement('canvas');
+  const { ctx } = fitCanvas(canvas, { width: side, height: side, scale });
+  rasterize(ctx, layout, 0, 0, side, (LAYOUT_THEMES[theme] ?? LAYOUT_THEMES.dark).rasterFill);
+  return canvas;
+}
+
+/**
+ * Below the frame: a swatch per boundary polygon (the chosen one bold), the title and caption lines,
+ * and the key of the fill (the stretch scale) or of the lines (text: legendText's lines).
+ */
+function drawLegend(ctx, { overlays, boundary, heat, seam, text, colors }, x, y) {
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'left';
   let cx = x;
@@ -255,47 +333,50 @@ function drawLegend(ctx, { overlays, boundary, caption, heat, raster, faces, sea
     ctx.moveTo(cx, y + 6); ctx.lineTo(cx + 18, y + 6);
     ctx.stroke();
     ctx.setLineDash([]);
-    ctx.font = `${isChosen ? 600 : 400} 11.5px system-ui, sans-serif`;
-    ctx.fillStyle = isChosen ? '#e4e7ec' : '#a3abb8';
+    ctx.font = `${isChosen ? 600 : 400} 11.5px ${FONT}`;
+    ctx.fillStyle = isChosen ? colors.strong : colors.label;
     const label = polygon ? `${kind}${isChosen && seam ? ' = seam' : ''}` : `${kind} (failed)`;
     ctx.fillText(label, cx + 23, y + 6);
     ctx.globalAlpha = 1;
     cx += 23 + ctx.measureText(label).width + 14;
   }
 
-  ctx.font = '11px system-ui, sans-serif';
-  ctx.fillStyle = '#c3c9d3';
-  ctx.fillText(fitText(ctx, caption ?? '', width), x, y + 22);
-
-  ctx.fillStyle = '#8d96a5';
-  const keyY = y + 37;
+  let lineY = y + 22;
+  const lines = (list, font, color) => {
+    ctx.font = font;
+    ctx.fillStyle = color;
+    for (const line of list) {
+      ctx.fillText(line, x, lineY);
+      lineY += LINE_HEIGHT;
+    }
+  };
+  lines(text.title, `600 12px ${FONT}`, colors.strong);
+  lines(text.caption, `11px ${FONT}`, colors.text);
   if (!heat) {
-    const key = raster
-      ? `grey: ${faces.toLocaleString('en-US')} faces, filled (too many edges to draw)`
-      : 'thin lines: mesh edges · dashed square: the uv frame [0,1]²';
-    ctx.fillText(fitText(ctx, key, width), x, keyY);
+    lines(text.key, `11px ${FONT}`, colors.muted);
     return;
   }
   // The stretch scale: "L2 stretch: 1 [ramp] ≥ 2 ■ flipped".
+  const keyY = lineY;
   let kx = x;
-  const text = (t) => {
-    ctx.fillStyle = '#8d96a5';
+  const word = (t) => {
+    ctx.fillStyle = colors.muted;
     ctx.fillText(t, kx, keyY);
     kx += ctx.measureText(t).width + 5;
   };
-  text('L2 stretch:');
-  text('1');
+  word('L2 stretch:');
+  word('1');
   const rampWidth = 60;
   const ramp = ctx.createLinearGradient(kx, 0, kx + rampWidth, 0);
   for (let i = 0; i <= 8; i++) ramp.addColorStop(i / 8, `rgb(${stretchRgb(1 + i / 8).join(',')})`);
   ctx.fillStyle = ramp;
   ctx.fillRect(kx, keyY - 4, rampWidth, 8);
   kx += rampWidth + 5;
-  text('≥ 2');
+  word('≥ 2');
   ctx.fillStyle = `rgb(${STRETCH_INFINITE.join(',')})`;
   ctx.fillRect(kx + 3, keyY - 4, 8, 8);
   kx += 16;
-  text('flipped');
+  word('flipped');
 }
 
 /** `text` shortened with an ellipsis to fit `width`. */
@@ -306,8 +387,8 @@ function fitText(ctx, text, width) {
   return `${text.slice(0, end)}…`;
 }
 
-/** Centered text wrapped at word boundaries to `width`, lines `lineHeight` apart around y. */
-function wrapText(ctx, text, x, y, width, lineHeight) {
+/** `text` broken at word boundaries into lines no wider than `width` (a longer word stays whole). */
+export function wrapLines(ctx, text, width) {
   const lines = [];
   let line = '';
   for (const word of text.split(/\s+/)) {
@@ -320,6 +401,12 @@ function wrapText(ctx, text, x, y, width, lineHeight) {
     }
   }
   if (line) lines.push(line);
+  return lines;
+}
+
+/** Centered text wrapped at word boundaries to `width`, lines `lineHeight` apart around y. */
+function wrapText(ctx, text, x, y, width, lineHeight) {
+  const lines = wrapLines(ctx, text, width);
   const top = y - ((lines.length - 1) * lineHeight) / 2;
   lines.forEach((l, i) => ctx.fillText(l, x, top + i * lineHeight));
 }

@@ -25,6 +25,7 @@ await import('./camera.tests.mjs');
 await import('./options.tests.mjs');
 await import('./geoplot.tests.mjs');
 await import('./keyboard.tests.mjs');
+await import('./figure.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
@@ -520,7 +521,8 @@ describe('a 200k-vertex mesh in the worker', () => {
     assert(progress.messages >= expected.length, `${progress.messages} progress messages`);
     assert(lastInfo.vertices === BIG_GRID_VERTICES, `lastInfo.vertices is ${lastInfo.vertices}`);
     const vertices = (await page.textContent('#info-vertices')).trim();
-    assert(vertices === String(BIG_GRID_VERTICES), `info panel shows '${vertices}' vertices, expected ${BIG_GRID_VERTICES}`);
+    assert(vertices === BIG_GRID_VERTICES.toLocaleString('en-US'), // thousands separators from five digits on
+      `info panel shows '${vertices}' vertices, expected ${BIG_GRID_VERTICES}`);
     assert(paths.count === 4 * (BIG_GRID_N - 1) && paths.plain, `paths: ${JSON.stringify(paths)}`);
     assert(param.bijective && Number.isFinite(param.l2), `parameterization: ${JSON.stringify(param)}`);
     assert(await page.isHidden('#progress-panel'), 'the progress panel stays visible when idle');
@@ -558,7 +560,7 @@ describe('a 200k-vertex mesh in the worker', () => {
     assert(after.param === null && after.parameterizations === parameterizations,
       `a cancelled parameterization was shown: ${JSON.stringify(after.param)}`);
     assert(after.lastInfo.vertices === BIG_GRID_VERTICES, `lastInfo.vertices is ${after.lastInfo.vertices}`);
-    assert((await page.textContent('#info-vertices')).trim() === String(BIG_GRID_VERTICES), 'info panel changed');
+    assert((await page.textContent('#info-vertices')).trim() === BIG_GRID_VERTICES.toLocaleString('en-US'), 'info panel changed');
     assert(await page.isHidden('#error-panel'), 'error panel is visible');
     // The mesh is still drawn.
     await page.waitForFunction(() => window.__straightest.renders > 0);
