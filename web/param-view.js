@@ -23,6 +23,7 @@ import { createStretchView } from './stretch-view.js';
 import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 import { SEAM_COLOR, checkerboardCanvas, drawLayout } from './uv-layout.js';
 import { isCancelled } from './requests.js';
+import { glbFromGeometry } from './mesh-files.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -305,6 +306,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     $('param-button').disabled = !hasMesh;
     $('compare-button').disabled = !hasMesh || hooks.paramError?.category === 'topology';
     $('export-obj-button').disabled = !shown;
+    $('export-glb-button').disabled = !shown;
     $('export-png-button').disabled = !shown;
   }
 
@@ -418,9 +420,26 @@ export function createParamView({ session, view, surface, pathSource }) {
     try {
       // A cut or filled mesh: a vt per corner uv, so the seam splits in the file too.
       const { text } = await session.request('exportObj', { uv: reply.cut === 'disk' ? reply.uv : reply.cornerUv });
-      download(new Blob([text], { type: 'text/plain' }), `${baseName()}-${reply.boundary}-uv.obj`);
+      download(new Blob([text], { type: 'text/plain' }), `${exportName(reply)}.obj`);
     } catch (err) {
       if (!isCancelled(err)) showNote(`Could not export the OBJ: ${err.message}`, 'error');
+    }
+  }
+
+  /** The export's file name: the mesh, its boundary and its weights ("lion-measured-shape-preserving"). */
+  function exportName(reply) {
+    return `${baseName()}-${reply.boundary}-${reply.weights}`;
+  }
+
+  /** The textured surface (the seam-split twin of a cut mesh) as GLB, through three's GLTFExporter. */
+  async function exportGlb() {
+    if (!shown || !surface.mesh) return;
+    const name = exportName(shown.reply);
+    try {
+      const buffer = await glbFromGeometry(shown.split ?? surface.mesh.geometry, name);
+      download(new Blob([buffer], { type: 'model/gltf-binary' }), `${name}.glb`);
+    } catch (err) {
+      showNote(`Could not export the GLB: ${err.message}`, 'error');
     }
   }
 
@@ -517,6 +536,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     $(id).addEventListener('change', () => optionsChanged());
   }
   $('export-obj-button').addEventListener('click', () => exportObj());
+  $('export-glb-button').addEventListener('click', () => exportGlb());
   $('export-png-button').addEventListener('click', () => exportPng());
   $('texture-select').addEventListener('change', () => updateTexture());
   $('texture-input').addEventListener('change', (event) => {
