@@ -8,8 +8,8 @@ declare global {
   }
 }
 
-/** loadMesh's formats: 'auto' detects OBJ or OFF from the contents. */
-export type MeshFormat = 'auto' | 'obj' | 'off';
+/** loadMesh's formats: 'auto' detects OBJ, OFF, PLY (magic line) or STL (binary by its size, ASCII by 'solid') from the contents. */
+export type MeshFormat = 'auto' | 'obj' | 'off' | 'ply' | 'stl';
 
 /** Caps checked before building a mesh (defaults: 50M vertices, 100M faces). */
 export interface BuildLimits {
@@ -509,7 +509,7 @@ export class Mesh {
  */
 export class Straightest {
   private constructor();
-  /** Parses an OBJ or OFF file given as bytes or text; throws a StraightestError saying what is wrong where. */
+  /** Parses an OBJ, OFF, PLY or STL file given as bytes or text; throws a StraightestError saying what is wrong where. */
   loadMesh(data: Uint8Array | ArrayBuffer | ArrayBufferView | string, format?: MeshFormat, limits?: BuildLimits): Mesh;
   /** A mesh from flat arrays: x, y, z per vertex and 3 vertex indices per triangle. */
   meshFromArrays(positions: ArrayLike<number>, indices: ArrayLike<number>, limits?: BuildLimits): Mesh;
@@ -537,7 +537,7 @@ export class Straightest {
   readonly distanceMethods: DistanceMethod[];
   /** shootGeodesic's statuses in the core's order ('reached_length' first). */
   readonly shootStatuses: ShootStatus[];
-  /** ['obj', 'off', 'auto'] */
+  /** ['obj', 'off', 'ply', 'stl', 'auto'] */
   readonly meshFormats: MeshFormat[];
   /** Every StraightestError category, in the core's order. */
   readonly errorCategories: ErrorCategory[];

@@ -258,16 +258,16 @@ export class Straightest {
   /** geodesicDistances' methods: ['heat', 'dijkstra', 'exact']. */
   get distanceMethods() { return [...this.#names.distanceMethods]; }
 
-  /** loadMesh's formats: ['obj', 'off', 'auto']. */
+  /** loadMesh's formats: ['obj', 'off', 'ply', 'stl', 'auto']. */
   get meshFormats() { return [...this.#names.meshFormats]; }
 
   /** Every StraightestError category. */
   get errorCategories() { return [...this.#names.errorCategories]; }
 
-  /** The format a file name asks for: 'obj', 'off' (by extension, any case) or 'auto'. */
+  /** The format a file name asks for: 'obj', 'off', 'ply', 'stl' (by extension, any case) or 'auto'. */
   formatFromFileName(name) { return this.#module.formatFromFileName(String(name ?? '')); }
 
-  /** Parses an OBJ or OFF file given as bytes (Uint8Array/ArrayBuffer) or text. */
+  /** Parses an OBJ, OFF, PLY or STL file (PLY and STL ascii or binary) given as bytes (Uint8Array/ArrayBuffer) or text. */
   loadMesh(data, format = 'auto', limits = {}) {
     return new Mesh(internal, unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), limits)).mesh);
   }

@@ -69,9 +69,9 @@ export interface StraightestWorker {
   readonly meshFormats: Straightest['meshFormats'];
   /** Every StraightestError category. */
   readonly errorCategories: Straightest['errorCategories'];
-  /** The format a file name asks for: 'obj', 'off' (by extension, any case) or 'auto'. */
+  /** The format a file name asks for: 'obj', 'off', 'ply', 'stl' (by extension, any case) or 'auto'. */
   formatFromFileName(name: string): Promise<MeshFormat>;
-  /** Parses an OBJ or OFF file (bytes or text) in the worker. */
+  /** Parses an OBJ, OFF, PLY or STL file (bytes or text) in the worker. */
   loadMesh(data: Uint8Array | ArrayBuffer | ArrayBufferView | string, format?: MeshFormat, limits?: BuildLimits): Promise<WorkerMesh>;
   /** A mesh from flat arrays, built in the worker. */
   meshFromArrays(positions: ArrayLike<number>, indices: ArrayLike<number>, limits?: BuildLimits): Promise<WorkerMesh>;

@@ -168,13 +168,13 @@ export async function createStraightestWorker(options = {}) {
     get distanceMethods() { return list('distanceMethods'); },
     get meshFormats() { return list('meshFormats'); },
     get errorCategories() { return list('errorCategories'); },
-    /** The format a file name asks for: 'obj', 'off' (by extension, any case) or 'auto'. */
+    /** The format a file name asks for: 'obj', 'off', 'ply', 'stl' (by extension, any case) or 'auto'. */
     async formatFromFileName(name) {
       const instance = current;
       await instance.ready;
       return send(instance, { type: 'module', method: 'formatFromFileName', args: [String(name ?? '')] });
     },
-    /** Parses an OBJ or OFF file (bytes or text) in the worker. */
+    /** Parses an OBJ, OFF, PLY or STL file (bytes or text) in the worker. */
     loadMesh: (data, format = 'auto', limits = {}) => create('loadMesh', [data, format, limits]),
     /** A mesh from flat arrays, built in the worker. */
     meshFromArrays: (positions, indices, limits = {}) => create('meshFromArrays', [positions, indices, limits]),

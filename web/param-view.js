@@ -25,6 +25,7 @@ import { SEAM_COLOR, checkerboardCanvas, drawLayout } from './uv-layout.js';
 import { isCancelled } from './requests.js';
 import { parameterizationHint, renderHint } from './hints.js';
 import { download } from './image-export.js';
+import { glbFromGeometry } from './mesh-files.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -303,6 +304,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     $('param-button').disabled = !hasMesh;
     $('compare-button').disabled = !hasMesh || hooks.paramError?.category === 'topology';
     $('export-obj-button').disabled = !shown;
+    $('export-glb-button').disabled = !shown;
     $('export-png-button').disabled = !shown;
     $('export-svg-button').disabled = !shown;
   }
@@ -425,9 +427,26 @@ export function createParamView({ session, view, surface, pathSource }) {
     try {
       // A cut or filled mesh: a vt per corner uv, so the seam splits in the file too.
       const { text } = await session.request('exportObj', { uv: reply.cut === 'disk' ? reply.uv : reply.cornerUv });
-      download(new Blob([text], { type: 'text/plain' }), `${baseName()}-${reply.boundary}-${reply.weights}-uv.obj`);
+      download(new Blob([text], { type: 'text/plain' }), `${exportName(reply)}.obj`);
     } catch (err) {
       if (!isCancelled(err)) showNote(`Could not export the OBJ: ${err.message}`, 'error');
+    }
+  }
+
+  /** The export's file name: the mesh, its boundary and its weights ("lion-measured-shape-preserving"). */
+  function exportName(reply) {
+    return `${baseName()}-${reply.boundary}-${reply.weights}`;
+  }
+
+  /** The textured surface (the seam-split twin of a cut mesh) as GLB, through three's GLTFExporter. */
+  async function exportGlb() {
+    if (!shown || !surface.mesh) return;
+    const name = exportName(shown.reply);
+    try {
+      const buffer = await glbFromGeometry(shown.split ?? surface.mesh.geometry, name);
+      download(new Blob([buffer], { type: 'model/gltf-binary' }), `${name}.glb`);
+    } catch (err) {
+      showNote(`Could not export the GLB: ${err.message}`, 'error');
     }
   }
 
@@ -518,6 +537,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     $(id).addEventListener('change', () => optionsChanged());
   }
   $('export-obj-button').addEventListener('click', () => exportObj());
+  $('export-glb-button').addEventListener('click', () => exportGlb());
   $('texture-select').addEventListener('change', () => updateTexture());
   $('texture-input').addEventListener('change', (event) => {
     const [file] = event.target.files;

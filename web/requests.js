@@ -7,9 +7,10 @@
 //
 // Requests (request(type, payload, onProgress) resolves with the reply, rejects with an Error whose
 // `category` is the core's, or 'cancelled' after cancel()):
-//   'sample' { name }, 'file' { name, bytes: ArrayBuffer }   → { type: 'mesh', mesh (the WorkerMesh,
+//   'sample' { name }, 'file' { name, bytes: ArrayBuffer } (OBJ, OFF by the core; STL, PLY, glTF/GLB by
+//        three's loaders, welded: mesh-files.js)   → { type: 'mesh', mesh (the WorkerMesh,
 //        for adopt()), label, positions: Float32Array, indices: Uint32Array, normals: Float32Array (the
-//        core's area-weighted unit vertex normals), info, timeMs }
+//        core's area-weighted unit vertex normals), info, timeMs, note (a file read by three: what was merged or left out, or empty) }
 //   'paths' { source, targets }  → mesh.straightestPaths()'s fields + { type: 'paths', targetPositions:
 //        Float32Array, timeMs }. source: a SurfacePoint or 'auto'; targets: 'boundary' |
 //        Array<SurfacePoint | 'boundary'> (a 'boundary' entry is every vertex of the longest boundary
@@ -53,6 +54,8 @@
 // stops before its next one. The adopted mesh is rebuilt in the new worker by restore().
 
 import { createStraightestWorker } from 'straightest/worker';
+import { meshFromBufferGeometry } from 'straightest/three';
+import { geometryFromFile, threeFormatOf } from './mesh-files.js';
 
 export function isCancelled(err) {
   return err?.category === 'cancelled';
@@ -183,6 +186,14 @@ export function createRequests({ observer = null } = {}) {
 
     async file({ name, bytes }, progress, step) {
       const start = performance.now();
+      if (threeFormatOf(name)) {
+        // STL, PLY, glTF: three's loaders here, then the positions welded into a mesh in the worker.
+        const { geometry, note } = await step(() => geometryFromFile(name, bytes));
+        const made = await step(() => meshFromBufferGeometry(worker, geometry, { weld: true }));
+        geometry.dispose();
+        const reply = await meshReply(made, name, start, progress, step);
+        return { ...reply, note };
+      }
       const format = await step(() => worker.formatFromFileName(name));
       // One synchronous call in the worker: no progress inside it ('load' is 0 before and 1 after).
       const made = await step(() => worker.loadMesh(new Uint8Array(bytes), format));

@@ -66,7 +66,8 @@ export function createSession({ observer, display }) {
       clearError();
       hooks.lastError = null;
       displayed = origin;
-      status = `${reply.label}: ${reply.info.vertices} vertices, ${reply.info.faces} faces ` +
+      status = `${reply.label}${reply.note ? ` (${reply.note})` : ''}: ${reply.info.vertices} vertices, ` +
+        `${reply.info.faces} faces ` +
         `(${reply.timeMs.toFixed(0)} ms in the worker)`;
       setStatus(status);
       await display.showPaths(); // sets the state ('ready' once the paths are drawn)

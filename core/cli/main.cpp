@@ -89,7 +89,8 @@ std::string usage() {
          "      --to N,N,...           target vertices (default: every vertex)\n"
          "      --points               exact only: each target's shortest path (polyline)\n"
          "\n"
-         "MESH is an .obj or .off file, sample:NAME for a built-in sample (" +
+         "MESH is an .obj, .off, .ply or .stl file (PLY and STL ascii or binary; STL corners are welded),\n"
+         "sample:NAME for a built-in sample (" +
          choiceList(sampleNames(), ", ", ", ") +
          "), or\n"
          "heightfield:N for the mountain relief on an N × N grid (heightfield:1000 has 1M vertices).\n"
@@ -100,6 +101,7 @@ std::string usage() {
          "  --max-vertices N, --max-faces N   refuse larger meshes (defaults 50M / 100M)\n"
          "  --progress       progress lines on stderr: STAGE PERCENT (param and paths)\n"
          "  -h, --help       this text\n"
+         "  --version        print the version (package.json's) and exit\n"
          "\n"
          "exit codes: 0 success, 2 bad input or usage, 1 internal error\n";
 }
@@ -191,10 +193,11 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--progress") o.progress = true;
     else if (a == "-o" || a == "--output") o.output = value();
     else if (a == "-h" || a == "--help") o.command = "help";
+    else if (a == "--version") o.command = "version";
     else if (a.size() > 1 && a[0] == '-') throw UsageError{"unknown option '" + a + "'"};
     else positional.push_back(a);
   }
-  if (o.command == "help") return o;
+  if (o.command == "help" || o.command == "version") return o;
   if (positional.empty()) throw UsageError{"missing COMMAND"};
   o.command = positional[0];
   if (o.command != "info" && o.command != "paths" && o.command != "param" && o.command != "shoot" &&
@@ -455,6 +458,10 @@ int main(int argc, char** argv) {
   }
   if (o.command == "help") {
     std::cout << usage();
+    return 0;
+  }
+  if (o.command == "version") {
+    std::cout << "straightest " << STRAIGHTEST_VERSION << "\n";  // package.json's version, through CMake
     return 0;
   }
   Expected<int> exitCode = guarded([&]() -> Expected<int> {

@@ -1,6 +1,6 @@
 // Reading a mesh (declared in mesh_io.hpp): the format from a name or from the bytes themselves, the
-// file read into memory, then the OBJ or OFF reader and TriMesh::build. The readers live in
-// obj_reader.cpp and off_reader.cpp, the writer in obj_writer.cpp.
+// file read into memory, then the OBJ, OFF, PLY or STL reader and TriMesh::build. The readers live in
+// obj_reader.cpp, off_reader.cpp, ply_reader.cpp and stl_reader.cpp, the writer in obj_writer.cpp.
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -9,6 +9,8 @@
 
 #include "obj_reader.hpp"
 #include "off_reader.hpp"
+#include "ply_reader.hpp"
+#include "stl_reader.hpp"
 #include "straightest/mesh_io.hpp"
 #include "text_scan.hpp"
 
@@ -29,8 +31,33 @@ bool looksBinary(std::string_view bytes) {
   return false;
 }
 
-/// OFF when the first token (after comments and blank lines) is an OFF keyword, otherwise OBJ.
+MeshFormat detectTextFormat(std::string_view bytes);
+
+/// UTF-16 text: a byte-order mark, or ASCII with a NUL after (or before) each character.
+bool looksUtf16(std::string_view bytes) {
+  if (bytes.size() >= 2 && ((bytes[0] == '\xFF' && bytes[1] == '\xFE') || (bytes[0] == '\xFE' && bytes[1] == '\xFF')))
+    return true;
+  const size_t n = std::min<size_t>(bytes.size(), 64) & ~size_t{1};
+  if (n < 4) return false;
+  for (int zeroAt : {0, 1}) {
+    bool pattern = true;
+    for (size_t i = 0; i < n && pattern; i += 2)
+      pattern = bytes[i + zeroAt] == 0 && bytes[i + 1 - zeroAt] != 0 &&
+                static_cast<unsigned char>(bytes[i + 1 - zeroAt]) < 0x80;
+    if (pattern) return true;
+  }
+  return false;
+}
+
+/// The binary formats by their signatures, then OFF by its keyword, otherwise OBJ.
 MeshFormat detectFormat(std::string_view bytes) {
+  if (looksLikePly(bytes)) return MeshFormat::Ply;
+  if (looksLikeBinaryStl(bytes) || looksLikeAsciiStl(bytes)) return MeshFormat::Stl;
+  return detectTextFormat(bytes);
+}
+
+/// OFF when the first token (after comments and blank lines) is an OFF keyword, otherwise OBJ.
+MeshFormat detectTextFormat(std::string_view bytes) {
   MeshFormat format = MeshFormat::Obj;
   text::forEachLine(bytes, [&](int64_t, std::string_view line) {
     text::Tokens t;
@@ -49,20 +76,31 @@ Expected<MeshFormat> parseMeshFormat(std::string_view name) {
   const std::string n = lower(name);
   if (n == "obj") return MeshFormat::Obj;
   if (n == "off") return MeshFormat::Off;
+  if (n == "ply") return MeshFormat::Ply;
+  if (n == "stl") return MeshFormat::Stl;
   if (n == "auto" || n.empty()) return MeshFormat::Auto;
-  return Error{ErrorCode::UnsupportedFormat, "unknown mesh format " + text::quoted(name) + " (use obj, off or auto)"};
+  return Error{ErrorCode::UnsupportedFormat,
+               "unknown mesh format " + text::quoted(name) + " (use obj, off, ply, stl or auto)"};
 }
 
 MeshFormat meshFormatFromFileName(std::string_view name) {
   const std::string extension = lower(name.size() >= 4 ? name.substr(name.size() - 4) : std::string_view());
-  return extension == ".obj" ? MeshFormat::Obj : extension == ".off" ? MeshFormat::Off : MeshFormat::Auto;
+  for (const auto& [suffix, format] : {std::pair{".obj", MeshFormat::Obj}, std::pair{".off", MeshFormat::Off},
+                                       std::pair{".ply", MeshFormat::Ply}, std::pair{".stl", MeshFormat::Stl}})
+    if (extension == suffix) return format;
+  return MeshFormat::Auto;
 }
 
 Expected<PolygonSoup> parsePolygonSoup(std::string_view bytes, MeshFormat format, const BuildLimits& limits) {
   if (bytes.empty()) return Error{ErrorCode::Empty, "file is empty"};
-  if (looksBinary(bytes))
-    return Error{ErrorCode::UnsupportedFormat, "file contains binary data; expected a text OBJ or OFF mesh"};
   if (format == MeshFormat::Auto) format = detectFormat(bytes);
+  if (format == MeshFormat::Ply) return readPly(bytes, limits);
+  if (format == MeshFormat::Stl) return readStl(bytes, limits);
+  if (looksUtf16(bytes)) return Error{ErrorCode::UnsupportedFormat, "UTF-16 text is not supported: save as UTF-8"};
+  if (looksBinary(bytes))
+    return Error{ErrorCode::UnsupportedFormat,
+                 "file contains binary data that is neither a binary PLY nor a binary STL; expected an OBJ, OFF, "
+                 "PLY or STL mesh"};
   return format == MeshFormat::Off ? readOff(bytes, limits) : readObj(bytes, limits);
 }
 
@@ -70,7 +108,7 @@ Expected<TriMesh> loadMesh(std::string_view bytes, MeshFormat format, const Buil
   auto soup = parsePolygonSoup(bytes, format, limits);
   if (!soup) return soup.error();
   const int64_t polygons = soup.value().polygonsTriangulated;
-  std::vector<std::string> notes;
+  std::vector<std::string> notes = std::move(soup.value().notes);
   if (polygons > 0) notes.push_back(std::to_string(polygons) + " polygons with more than 3 corners were triangulated");
   return TriMesh::build(std::move(soup.value().positions), std::move(soup.value().triangles), limits, std::move(notes));
 }

@@ -1,29 +1,50 @@
 // The OBJ writer (declared in mesh_io.hpp): a mesh, and optionally one texture coordinate per vertex,
-// as OBJ text. Coordinates are written with 17 significant digits, so reading the file back gives
-// exactly the same doubles; vertices keep the mesh's order, so `vt` k belongs to vertex k. With a uv per
+// as OBJ text. Each coordinate is written with the fewest significant digits (15, 16 or 17) that read
+// back as exactly the same double (`0.3346`, not `0.33460000000000001`): the shortest that round-trips
+// whenever it has 15 digits or fewer (any decimal of ≤ 15 digits survives a trip through a double), else
+// the closest 16- or 17-digit one. (std::to_chars for double would do it, but Emscripten 3.1.6's libc++
+// lacks it.) vertices keep the mesh's order, so `vt` k belongs to vertex k. With a uv per
 // face corner (a cut mesh's map) each distinct uv is one `vt`, in the order faces first use it.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <unordered_map>
 
 #include "straightest/mesh_io.hpp"
 
 namespace straightest {
+namespace {
+
+/// The shortest of %.15g, %.16g, %.17g that strtod reads back as x (the last always does).
+void appendNumber(std::string& out, double x) {
+  char text[40];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (digits == 17 || !std::isfinite(x) || std::strtod(text, nullptr) == x) break;
+  }
+  out += text;
+}
+
+void appendLine(std::string& out, const char* keyword, std::initializer_list<double> values) {
+  out += keyword;
+  for (double v : values) {
+    out += ' ';
+    appendNumber(out, v);
+  }
+  out += '\n';
+}
+
+}  // namespace
 
 std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv) {
   std::string out = "# written by straightest\n";
   char line[160];
-  for (const Vec3& p : mesh.positions()) {
-    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
-    out += line;
-  }
+  for (const Vec3& p : mesh.positions()) appendLine(out, "v", {p.x, p.y, p.z});
   if (uv)
-    for (const Vec2& t : *uv) {
-      std::snprintf(line, sizeof line, "vt %.17g %.17g\n", t.x, t.y);
-      out += line;
-    }
+    for (const Vec2& t : *uv) appendLine(out, "vt", {t.x, t.y});
   for (const Triangle& t : mesh.triangles()) {
     if (uv)
       std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1,
@@ -37,10 +58,7 @@ std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv) {
 std::string writeObjWithCornerUv(const TriMesh& mesh, const std::vector<Vec2>& cornerUv) {
   std::string out = "# written by straightest (a vt per distinct corner uv: seams split)\n";
   char line[160];
-  for (const Vec3& p : mesh.positions()) {
-    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
-    out += line;
-  }
+  for (const Vec3& p : mesh.positions()) appendLine(out, "v", {p.x, p.y, p.z});
   // Distinct by exact value (bit pattern, with +0 and −0 as one): the copies of a vertex on one side of
   // a seam carry the very same doubles, the two sides different ones.
   struct Key {
@@ -67,10 +85,7 @@ std::string writeObjWithCornerUv(const TriMesh& mesh, const std::vector<Vec2>& c
     for (int k = 0; k < 3; ++k) {
       const Vec2& t = cornerUv[3 * f + k];
       const auto [it, added] = index.emplace(Key{bits(t.x), bits(t.y)}, static_cast<int32_t>(index.size()) + 1);
-      if (added) {
-        std::snprintf(line, sizeof line, "vt %.17g %.17g\n", t.x, t.y);
-        out += line;
-      }
+      if (added) appendLine(out, "vt", {t.x, t.y});
       vt[3 * f + k] = it->second;
     }
   }

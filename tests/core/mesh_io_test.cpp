@@ -30,10 +30,12 @@ TEST(FormatNames, AreCaseInsensitiveAndUnknownOnesAreRefused) {
   EXPECT_EQ(parseMeshFormat("off").value(), MeshFormat::Off);
   EXPECT_EQ(parseMeshFormat("Auto").value(), MeshFormat::Auto);
   EXPECT_EQ(parseMeshFormat("").value(), MeshFormat::Auto);
-  auto bad = parseMeshFormat("stl");
+  EXPECT_EQ(parseMeshFormat("PLY").value(), MeshFormat::Ply);
+  EXPECT_EQ(parseMeshFormat("stl").value(), MeshFormat::Stl);
+  auto bad = parseMeshFormat("gltf");
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().code, ErrorCode::UnsupportedFormat);
-  EXPECT_NE(bad.error().message.find("'stl'"), std::string::npos) << bad.error().message;
+  EXPECT_NE(bad.error().message.find("'gltf'"), std::string::npos) << bad.error().message;
 }
 
 TEST(FormatNames, FileNameExtensionChoosesTheFormatInAnyCase) {
@@ -43,7 +45,9 @@ TEST(FormatNames, FileNameExtensionChoosesTheFormatInAnyCase) {
   EXPECT_EQ(meshFormatFromFileName("C:\\meshes\\Lion.OFF"), MeshFormat::Off);
   EXPECT_EQ(meshFormatFromFileName("dir.obj/mesh"), MeshFormat::Auto);  // a directory's dot is no extension
   EXPECT_EQ(meshFormatFromFileName(".off"), MeshFormat::Off);
-  EXPECT_EQ(meshFormatFromFileName("mesh.ply"), MeshFormat::Auto);
+  EXPECT_EQ(meshFormatFromFileName("mesh.ply"), MeshFormat::Ply);
+  EXPECT_EQ(meshFormatFromFileName("Part.STL"), MeshFormat::Stl);
+  EXPECT_EQ(meshFormatFromFileName("scene.glb"), MeshFormat::Auto);
   EXPECT_EQ(meshFormatFromFileName("mesh.obj.gz"), MeshFormat::Auto);
   EXPECT_EQ(meshFormatFromFileName("obj"), MeshFormat::Auto);
   EXPECT_EQ(meshFormatFromFileName(""), MeshFormat::Auto);

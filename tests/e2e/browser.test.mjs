@@ -26,6 +26,7 @@ await import('./options.tests.mjs');
 await import('./geoplot.tests.mjs');
 await import('./keyboard.tests.mjs');
 await import('./figure.tests.mjs');
+await import('./formats.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its

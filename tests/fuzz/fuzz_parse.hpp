@@ -1,4 +1,4 @@
-// Shared by fuzz_obj and fuzz_off: parse bytes, check the error or the mesh, round-trip the mesh.
+// Shared by fuzz_obj, fuzz_off, fuzz_ply and fuzz_stl: parse bytes, check the error or the mesh, round-trip the mesh.
 #pragma once
 #include <string>
 #include <string_view>
@@ -46,7 +46,10 @@ inline void checkRoundTrip(const TriMesh& m, const Expected<TriMesh>& again, con
 }
 
 inline void checkParse(std::string_view bytes, MeshFormat format) {
-  const char* where = format == MeshFormat::Obj ? "OBJ" : "OFF";
+  const char* where = format == MeshFormat::Obj   ? "OBJ"
+                      : format == MeshFormat::Off ? "OFF"
+                      : format == MeshFormat::Ply ? "PLY"
+                                                  : "STL";
   auto soup = parsePolygonSoup(bytes, format);
   auto mesh = loadMesh(bytes, format);
   if (!soup.ok()) {

@@ -18,7 +18,7 @@ test('name lists come from the core', () => {
   assert.deepEqual(st.weightKinds, ['shape-preserving', 'mean-value', 'cotan', 'uniform']);
   assert.deepEqual(st.solvers, ['multigrid', 'lu', 'bicgstab']);
   assert.deepEqual(st.distanceMethods, ['heat', 'dijkstra', 'exact']);
-  assert.deepEqual(st.meshFormats, ['obj', 'off', 'auto']);
+  assert.deepEqual(st.meshFormats, ['obj', 'off', 'ply', 'stl', 'auto']);
   assert.ok(st.errorCategories.includes('invalid_argument') && st.errorCategories.includes('internal'));
   // Every listed name is accepted where it is used.
   const mesh = st.sample('face');
@@ -29,7 +29,9 @@ test('name lists come from the core', () => {
 test('formatFromFileName reads the extension in any case', () => {
   assert.equal(st.formatFromFileName('bunny.OBJ'), 'obj');
   assert.equal(st.formatFromFileName('dir/lion.off'), 'off');
-  assert.equal(st.formatFromFileName('mesh.stl'), 'auto');
+  assert.equal(st.formatFromFileName('mesh.stl'), 'stl');
+  assert.equal(st.formatFromFileName('scan.PLY'), 'ply');
+  assert.equal(st.formatFromFileName('scene.glb'), 'auto');
   assert.equal(st.formatFromFileName('noextension'), 'auto');
 });
 

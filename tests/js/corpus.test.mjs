@@ -12,7 +12,7 @@ const expected = JSON.parse(await readFile(new URL('expected.json', dir), 'utf8'
 test(`the malformed corpus (${Object.keys(expected).length} files) is rejected with its categories`, async () => {
   for (const [name, category] of Object.entries(expected)) {
     const bytes = await readFile(new URL(name, dir));
-    const format = /\.(obj|off)$/.exec(name)?.[1] ?? 'auto';
+    const format = /\.(obj|off|ply|stl)$/.exec(name)?.[1] ?? 'auto';
     assert.throws(() => st.loadMesh(bytes, format), (e) => {
       assert.ok(e instanceof Error, `${name}: not an Error`);
       assert.equal(e.category, category, `${name}: ${e.message}`);

@@ -82,8 +82,10 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   st.loadMesh(text);
   st.meshFromArrays(new Float64Array(9), new Uint32Array([0, 1, 2]));
   st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 2], { maxFaces: 1 });
-  // @ts-expect-error STL is not a supported format
   st.loadMesh(bytes, 'stl');
+  st.loadMesh(bytes, 'ply');
+  // @ts-expect-error glTF is read by three's GLTFLoader, not by loadMesh
+  st.loadMesh(bytes, 'gltf');
   // @ts-expect-error a SharedArrayBuffer is refused at run time (toBytes), so the types refuse it too
   st.loadMesh(new SharedArrayBuffer(64));
   // @ts-expect-error a mesh is read from its contents, not from a number
@@ -280,7 +282,7 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const l2Number: number = comparison.rows[0].l2;
   const directions: Float64Array = paths.directions;
   const kinds: ('measured' | 'circle' | 'square' | 'free')[] = st.boundaryKinds;
-  const format: 'obj' | 'off' | 'auto' = st.formatFromFileName('bunny.OBJ');
+  const format: 'obj' | 'off' | 'ply' | 'stl' | 'auto' = st.formatFromFileName('bunny.OBJ');
   mesh.straightestPaths({ targets: ['boundary', 3, { vertex: 4 }] });
   void [loopVertices, normals, bestRow, l2, l2Number, directions, kinds, format];
 

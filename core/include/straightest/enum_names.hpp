@@ -54,6 +54,8 @@ inline constexpr EnumName<ShootStatus> kShootStatusNames[] = {{ShootStatus::Reac
                                                               {ShootStatus::NoExit, "no_exit"}};
 inline constexpr EnumName<MeshFormat> kMeshFormatNames[] = {{MeshFormat::Obj, "obj"},
                                                             {MeshFormat::Off, "off"},
+                                                            {MeshFormat::Ply, "ply"},
+                                                            {MeshFormat::Stl, "stl"},
                                                             {MeshFormat::Auto, "auto"}};
 inline constexpr EnumName<CutMethod> kCutMethodNames[] = {{CutMethod::Disk, "disk"},
                                                           {CutMethod::Fill, "fill"},

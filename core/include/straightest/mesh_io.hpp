@@ -1,7 +1,8 @@
-// mesh_io.hpp — meshes in and out of files: reading OBJ and OFF from a file path or from bytes in
-// memory (the browser hands bytes), choosing the format, and writing OBJ.
+// mesh_io.hpp — meshes in and out of files: reading OBJ, OFF, PLY and STL from a file path or from
+// bytes in memory (the browser hands bytes), choosing the format, and writing OBJ.
 //
-// Both readers are our own (core/src/obj_reader.cpp, core/src/off_reader.cpp): one pass over the bytes,
+// Every reader is our own (core/src/obj_reader.cpp, off_reader.cpp, ply_reader.cpp, stl_reader.cpp;
+// PLY and STL are described in their headers). The text readers make one pass over the bytes,
 // strict about numbers (finite plain decimals, correctly rounded), and every error names its line (and
 // face or vertex). For OBJ only positions and faces are read (`vt`, `vn`, groups and materials are
 // skipped). Polygons are split into triangles (polygon_triangulation.hpp). Hostile input is bounded:
@@ -18,12 +19,12 @@
 
 namespace straightest {
 
-enum class MeshFormat { Auto, Obj, Off };
+enum class MeshFormat { Auto, Obj, Off, Ply, Stl };
 
-/// "obj", "off" or "auto" (case-insensitive; "" is auto) → MeshFormat; anything else → UnsupportedFormat.
+/// "obj", "off", "ply", "stl" or "auto" (case-insensitive; "" is auto) → MeshFormat; anything else → UnsupportedFormat.
 Expected<MeshFormat> parseMeshFormat(std::string_view name);
 
-/// The format a file name (or path) announces: ".obj" → Obj, ".off" → Off (any case), otherwise Auto
+/// The format a file name (or path) announces: ".obj", ".off", ".ply", ".stl" (any case), otherwise Auto
 /// (let the content decide).
 MeshFormat meshFormatFromFileName(std::string_view name);
 
@@ -32,9 +33,12 @@ struct PolygonSoup {
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
   int64_t polygonsTriangulated = 0;  // faces with more than 3 corners that were split
+  std::vector<std::string> notes;    // what the reader changed (e.g. STL triangles dropped by welding)
 };
 
-/// Parses bytes. Auto detects OFF by its header keyword and otherwise reads OBJ.
+/// Parses bytes. Auto detects PLY by its magic line, binary STL by its size (84 + 50 per triangle),
+/// ASCII STL by `solid`, OFF by its header keyword, and otherwise reads OBJ; UTF-16 text and other
+/// binary data are rejected as such.
 Expected<PolygonSoup> parsePolygonSoup(std::string_view bytes, MeshFormat format = MeshFormat::Auto,
                                        const BuildLimits& limits = {});
 
