@@ -43,6 +43,14 @@
 // pass, and a stage the core did not report (e.g. 'solve' when the solver converged within its first
 // check) is completed when a later one starts.
 //
+// Warming up: a fresh WebAssembly module runs its first calls in the engine's baseline code and tiers
+// hot functions up to optimized code in the background as they run, so a module's first
+// parameterization took ~3× its later ones (369 vs 110 ms at 62.5k vertices, in Node) — and a page
+// user often makes exactly one. Right after the worker starts it therefore parameterizes a small
+// built-in sample once, unobserved (no progress panel), while the page shows its first mesh or the
+// user picks a file; the worker serves requests in order, so a request sent meanwhile waits for it
+// (tens of milliseconds). A warm-up that fails or is cancelled is simply dropped.
+//
 // Cancelling: the work runs inside synchronous WASM calls, so the helper terminates its worker and
 // starts a new one; pending calls reject as 'cancelled', and a request that was between two calls
 // stops before its next one. The adopted mesh is rebuilt in the new worker by restore().
@@ -59,6 +67,18 @@ export function categorizedError(message, category) {
 }
 
 const THROTTLE_MS = 50; // at most one intermediate progress update per 50 ms and request
+
+const WARM_UP_SAMPLE = 'face'; // a measured-boundary disk whose parameterization runs every hot loop
+
+/** Parameterizes the warm-up sample once in `target` (a StraightestWorker) and frees it. */
+async function warmUp(target) {
+  const made = await target.sample(WARM_UP_SAMPLE);
+  try {
+    await made.parameterize({ boundary: 'measured' });
+  } finally {
+    made.delete().catch(() => {});
+  }
+}
 
 /**
  * The core's stages of mesh.parameterize() for `boundary`, in order: measured, free and auto trace;
@@ -122,6 +142,7 @@ export function createRequests({ observer = null } = {}) {
   let mesh = null; // the adopted WorkerMesh (the mesh on display)
   let info = null; // its mesh.info()
   let generation = 0; // advances with every cancel: a request of an older one stops at its next call
+  let warming = Promise.resolve(); // the warm-up (settles, never rejects)
 
   function requireMesh() {
     if (!mesh) throw new Error('no mesh is loaded');
@@ -282,7 +303,13 @@ export function createRequests({ observer = null } = {}) {
     /** Starts the worker; resolves with its sample names and the parameterization's boundary kinds. */
     async start() {
       worker = await createStraightestWorker();
+      warming = warmUp(worker).catch(() => {});
       return { samples: worker.sampleNames(), boundaryKinds: worker.boundaryKinds };
+    },
+
+    /** Resolves when the worker's warm-up (see the top of this file) has finished or failed. */
+    warmedUp() {
+      return warming;
     },
 
     /** Runs a request (see the top of this file). */

@@ -2,6 +2,7 @@
 #include "large_buffers.hpp"
 
 #include <cstdint>
+#include <cstdlib>
 
 #if defined(__linux__) && !defined(__EMSCRIPTEN__)
 #include <sys/mman.h>
@@ -12,6 +13,7 @@ namespace straightest::detail {
 void adviseHugePages(const void* data, std::size_t bytes) {
 #if defined(__linux__) && !defined(__EMSCRIPTEN__) && defined(MADV_HUGEPAGE)
   if (data == nullptr || bytes < kLargeBufferBytes) return;
+  if (std::getenv("CW_NO_THP")) return;  // TEMPORARY measurement switch
   constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
   const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHugePage - 1) & ~(kHugePage - 1);
   const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHugePage - 1);
