@@ -83,20 +83,20 @@ std::vector<int32_t> sortRows(CsrMatrix& m) {
   detail::forRowChunks(static_cast<size_t>(m.rows), [&m, &split](size_t begin, size_t end) {
     for (size_t r = begin; r < end; ++r) {
       const int32_t b = m.start[r], e = m.start[r + 1];
-    for (int32_t k = b + 1; k < e; ++k) {
-      const int32_t c = m.col[k];
-      const double v = m.value[k];
-      int32_t q = k;
-      for (; q > b && m.col[q - 1] > c; --q) {
-        m.col[q] = m.col[q - 1];
-        m.value[q] = m.value[q - 1];
+      for (int32_t k = b + 1; k < e; ++k) {
+        const int32_t c = m.col[k];
+        const double v = m.value[k];
+        int32_t q = k;
+        for (; q > b && m.col[q - 1] > c; --q) {
+          m.col[q] = m.col[q - 1];
+          m.value[q] = m.value[q - 1];
+        }
+        m.col[q] = c;
+        m.value[q] = v;
       }
-      m.col[q] = c;
-      m.value[q] = v;
-    }
-    int32_t k = b;
-    while (k < e && m.col[k] < static_cast<int32_t>(r)) ++k;
-    split[r] = k;
+      int32_t k = b;
+      while (k < e && m.col[k] < static_cast<int32_t>(r)) ++k;
+      split[r] = k;
     }
   });
   return split;
