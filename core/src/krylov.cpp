@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 
-#include "large_buffers.hpp"
 #include "row_chunks.hpp"
 #include "solve_progress.hpp"
 
@@ -37,9 +36,7 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
   for (int c = 0; c < 2; ++c)
     if (bNorm2[c] == 0)
       for (size_t i = c; i < m; i += 2) x[i] = 0;  // the exact solution
-  // Work vectors: fresh allocations advised for huge pages before they are first touched.
-  std::vector<double> r, r0, p, v, y, z, s, t;
-  for (std::vector<double>* w : {&r, &r0, &p, &v, &y, &z, &s, &t}) detail::assignLarge(*w, m, 0.0);
+  std::vector<double> r(m), r0(m), p(m, 0.0), v(m, 0.0), y(m), z(m), s(m), t(m);
   A.multiply2(x.data(), t.data());
   const auto rSums = sumRowChunks<2>(n, [&](size_t begin, size_t end, double* sum) {
     double n0 = 0, n1 = 0;

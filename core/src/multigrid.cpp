@@ -12,7 +12,6 @@
 #include <cmath>
 
 #include "eigen_bridge.hpp"
-#include "large_buffers.hpp"
 #include "row_accumulator.hpp"
 #include "row_chunks.hpp"
 #include "solve_progress.hpp"
@@ -146,12 +145,12 @@ Expected<bool> AggregationMultigrid::compute(CsrMatrix A, const Progress& progre
       level.x.resize(2 * static_cast<size_t>(n));
     }
     const bool jacobi = options_.smoother == Smoother::Jacobi;
-    if (jacobi) detail::assignLarge(level.tmp, 2 * static_cast<size_t>(n), 0.0);
+    if (jacobi) level.tmp.resize(2 * static_cast<size_t>(n));
     if (n <= kCoarseSize || levels.size() >= 25) break;
     int32_t count = 0;
     const std::vector<int32_t> agg = aggregate(level.A, diag, count);
     if (count >= n || count == 0) break;                                           // no coarsening possible: stop here
-    if (!jacobi) detail::assignLarge(level.tmp, 2 * static_cast<size_t>(n), 0.0);  // the residual
+    if (!jacobi) level.tmp.resize(2 * static_cast<size_t>(n));  // the residual
     level.P = smoothedProlongator(level.A, level.invDiag, agg, count);
     level.R = transpose(level.P);
     // Galerkin coarse operator Pᵀ (A P), both products by rows.
