@@ -149,7 +149,7 @@ Expected<bool> AggregationMultigrid::compute(CsrMatrix A, const Progress& progre
     if (n <= kCoarseSize || levels.size() >= 25) break;
     int32_t count = 0;
     const std::vector<int32_t> agg = aggregate(level.A, diag, count);
-    if (count >= n || count == 0) break;                                           // no coarsening possible: stop here
+    if (count >= n || count == 0) break;                        // no coarsening possible: stop here
     if (!jacobi) level.tmp.resize(2 * static_cast<size_t>(n));  // the residual
     level.P = smoothedProlongator(level.A, level.invDiag, agg, count);
     level.R = transpose(level.P);
