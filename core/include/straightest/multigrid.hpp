@@ -14,9 +14,9 @@
 // most kCoarseSize unknowns, solved exactly by a sparse LU (Eigen's, hidden in the source). R = Pᵀ is
 // kept (the transpose the Galerkin product needs anyway): the cycle restricts by R's rows, each coarse
 // row on its own, so the restriction runs on all threads (~12 bytes per entry of P). Cycle: V(1, 1)
-// with Gauss–Seidel smoothing, forward before the coarse correction and backward after it (a fixed linear operator, as
-// a Krylov preconditioner must be); at 1M vertices it beat V(2, 2) Gauss–Seidel and V(2, 2) damped
-// Jacobi on time to solution.
+// with Gauss–Seidel smoothing, forward before the coarse correction and backward after it (a fixed
+// linear operator, as a Krylov preconditioner must be); at 1M vertices it beat V(2, 2) Gauss–Seidel
+// and V(2, 2) damped Jacobi on time to solution.
 #pragma once
 #include <cstdint>
 #include <memory>
