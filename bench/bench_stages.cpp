@@ -4,6 +4,9 @@
 // of `repeats` runs per stage and the process's peak memory. Built natively and to WASM from this one
 // source so scripts/bench.mjs can put the two side by side (the refinement runs the same iterations
 // in both: compare per run, or per iteration with free_iterations). Never pass/fail.
+// Before anything else the process loads the mesh once and parameterizes it once: that first call's
+// stages are "cold_stages_ms" (a fresh process natively, a freshly instantiated module in WASM: what a
+// one-shot CLI run or a page's single call meets), with its minor page faults natively.
 //   bench_stages TARGET MESH [REPEATS] [MAX_ITERATIONS]     MESH: a file, heightfield:N or sample:NAME
 #include <algorithm>
 #include <chrono>
@@ -22,12 +25,25 @@
 #ifdef __EMSCRIPTEN__
 #include <emscripten/heap.h>
 static double peakMemoryMB() { return emscripten_get_heap_size() / 1048576.0; }  // memory only grows
+static long minorFaults() { return 0; }
+static double cpuMs() { return 0; }
 #else
 #include <sys/resource.h>
 static double peakMemoryMB() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return u.ru_maxrss / 1024.0;  // KiB on Linux
+}
+static long minorFaults() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
+}
+// User + system time of the process (every thread), which a loaded machine's waiting does not count.
+static double cpuMs() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3;
 }
 #endif
 
@@ -60,6 +76,30 @@ int main(int argc, char** argv) {
   int64_t vertices = 0, faces = 0, paths = 0, reached = 0, crossed = 0;
   double l2 = 0;
   bool bijective = false;
+  // The cold call: the first parameterize of this process (or module instance).
+  Timings cold;
+  long coldFaults = 0, warmFaults = 0;
+  double coldCpu = 0, warmCpu = 0;
+  {
+    auto loaded = open(spec);
+    if (!loaded) {
+      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                  loaded.error().message.c_str());
+      return 2;
+    }
+    ParamOptions options;
+    options.timings = &cold;
+    const long faults = minorFaults();
+    const double cpu = cpuMs();
+    const auto p = parameterize(loaded.value(), options);
+    coldFaults = minorFaults() - faults;
+    coldCpu = cpuMs() - cpu;
+    if (!p) {
+      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                  p.error().message.c_str());
+      return 2;
+    }
+  }
   // Warm-up runs first, not counted: for at least 1.5 s (at least one run). They warm caches and, in
   // WASM, let the engine tier every hot function up from its baseline compiler to the optimizing one
   // (V8 does that in the background, by call counts: one short warm-up run left small meshes measured
@@ -103,7 +143,13 @@ int main(int argc, char** argv) {
     options.source = SurfacePoint::vertex(source);
     Timings pt;
     options.timings = &pt;
+    const long faults = minorFaults();
+    const double cpu = cpuMs();
     const auto p = parameterize(mesh, options);
+    if (r >= 0) {  // the last run's
+      warmFaults = minorFaults() - faults;
+      warmCpu = cpuMs() - cpu;
+    }
     if (!p) {
       std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
                   p.error().message.c_str());
@@ -137,11 +183,19 @@ int main(int argc, char** argv) {
   std::printf(
       "{\"target\":\"%s\",\"mesh\":\"%s\",\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,\"paths\":%lld,"
       "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"free_l2\":%.6f,"
-      "\"free_bijective\":%s,\"free_iterations\":%d,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
+      "\"free_bijective\":%s,\"free_iterations\":%d,\"peak_memory_mb\":%.1f,\"cold_minor_faults\":%ld,"
+      "\"warm_minor_faults\":%ld,\"cold_cpu_ms\":%.1f,\"warm_cpu_ms\":%.1f,\"cold_stages_ms\":{",
       target.c_str(), spec.c_str(), static_cast<long long>(vertices), static_cast<long long>(faces), repeats,
       static_cast<long long>(paths), static_cast<long long>(reached), static_cast<long long>(crossed), l2,
-      bijective ? "true" : "false", freeL2, freeBijective ? "true" : "false", freeIterations, peakMemoryMB());
+      bijective ? "true" : "false", freeL2, freeBijective ? "true" : "false", freeIterations, peakMemoryMB(),
+      coldFaults, warmFaults, coldCpu, warmCpu);
   bool first = true;
+  for (const char* name : {"source", "trace", "boundary", "weights", "solve", "metrics", "total"}) {
+    std::printf("%s\"%s\":%.3f", first ? "" : ",", name, cold[name]);
+    first = false;
+  }
+  std::printf("},\"stages_ms\":{");
+  first = true;
   for (const char* name : {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics",
                            "param_total", "refine", "refine_metrics"}) {
     std::vector<double>& v = stage[name];

@@ -2,7 +2,7 @@
 // as WASM under Node (median of several runs each, one process per mesh and target so peak memory is
 // per mesh), adds the CGAL comparison if scripts/bench-cgal.sh produced it, and writes
 // docs/BENCHMARKS.md. Every number in that file comes from this run.
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { join } from 'node:path';
@@ -109,6 +109,46 @@ if (cgalBig.length) {
 if (targets.length) {
   text += `\n## Targets\n\n| target | measured | goal | |\n|---|---|---|---|\n${targets.join('\n')}\n`;
 }
+// Cold and warm calls: bench_stages parameterizes once before anything else (cold_stages_ms: a fresh
+// process natively, a freshly instantiated module in WASM), then warm-up and median runs; the CLI's
+// one-shot `param` is a fresh process too (its own timings, and /usr/bin/time's system time and page
+// faults where that program exists). CPU time (user + system, natively) is what a loaded machine's
+// waiting does not inflate.
+const coldSides = (process.env.COLD_SIDES ?? '250,1000').split(',').map(Number);
+const ratio = (a, b) => (b > 0 ? (a / b).toFixed(2) : '–');
+let cold = `\n## Cold and warm calls\n\n"cold" = the first measured-boundary parameterization of a fresh process (native) or of a freshly
+instantiated module (WASM), before anything else ran in it; "warm" = the median of the later in-process repeats
+(the Stages table's param_total). CPU = user + system time of that call (native only).
+
+| mesh | target | cold param ms | warm param ms | cold/warm | cold CPU ms | warm CPU ms | CPU cold/warm | cold minor faults | warm minor faults |
+|---|---|---:|---:|---:|---:|---:|---:|---:|---:|
+`;
+for (const { mesh, native, wasm } of results) {
+  for (const r of [native, wasm]) {
+    if (!r.cold_stages_ms) continue;
+    const cpu = r.target === 'native';
+    cold += `| ${name(mesh)} | ${r.target} | ${f(r.cold_stages_ms.total)} | ${f(r.stages_ms.param_total)} | ${ratio(r.cold_stages_ms.total, r.stages_ms.param_total)} | ${cpu ? f(r.cold_cpu_ms) : '–'} | ${cpu ? f(r.warm_cpu_ms) : '–'} | ${cpu ? ratio(r.cold_cpu_ms, r.warm_cpu_ms) : '–'} | ${cpu ? r.cold_minor_faults : '–'} | ${cpu ? r.warm_minor_faults : '–'} |\n`;
+  }
+}
+const timeProgram = existsSync('/usr/bin/time') ? '/usr/bin/time' : null;
+cold += `\nThe CLI's one-shot \`straightest param heightfield:N\` (a fresh process; "param" = its timings' total, loading
+excluded; warm = bench_stages' warm param_total of the same mesh where it ran above):
+
+| mesh | param ms | warm param ms | cold/warm | wall s | user s | system s | minor faults |
+|---|---:|---:|---:|---:|---:|---:|---:|
+`;
+for (const side of coldSides) {
+  const mesh = `heightfield:${side}`;
+  const cli = join(root, 'build/native/straightest');
+  const [cmd, args] = timeProgram ? [timeProgram, ['-f', 'TIME %e %U %S %R', cli]] : [cli, []];
+  const out = spawnSync(cmd, [...args, 'param', mesh], { encoding: 'utf8', maxBuffer: 1 << 28 });
+  const total = JSON.parse(out.stdout).timings_ms?.total ?? NaN;
+  const [wall, user, sys, faults] = (out.stderr.match(/TIME (\S+) (\S+) (\S+) (\S+)/) ?? []).slice(1);
+  const warm = results.find((r) => r.mesh === mesh)?.native.stages_ms.param_total;
+  cold += `| ${mesh} | ${f(total)} | ${warm ? f(warm) : '–'} | ${warm ? ratio(total, warm) : '–'} | ${wall ?? '–'} | ${user ?? '–'} | ${sys ?? '–'} | ${faults ?? '–'} |\n`;
+}
+text += cold;
+
 // Loading files (not the generator): bench_load writes a 1M-vertex height field as OBJ and OFF and
 // times reading it back, natively and as WASM; its table rows are copied as they are.
 const loadSide = Number(process.env.LOAD_SIDE ?? 1000);

@@ -49,6 +49,15 @@
 // pass, and a stage the core did not report (e.g. 'solve' when the solver converged within its first
 // check) is completed when a later one starts.
 //
+// Warming up: a fresh WebAssembly module compiles each function on its first call (in baseline code)
+// and tiers hot ones up to optimized code in the background as they run, so a module's first
+// parameterization costs several times its later ones (in Node at 22.5k vertices: 851 ms of CPU
+// against 125) — and a page user often makes exactly one. So once the worker has been idle for
+// WARM_UP_IDLE_MS (after the page's first mesh and its paths, while the user looks or picks a file),
+// it parameterizes a small built-in sample a few times, unobserved (no progress panel). A request
+// sent meanwhile waits for it (the worker serves requests in order; a fraction of a second); one that
+// fails or is cancelled is dropped. It runs once per worker (not again after a cancel).
+//
 // Cancelling: the work runs inside synchronous WASM calls, so the helper terminates its worker and
 // starts a new one; pending calls reject as 'cancelled', and a request that was between two calls
 // stops before its next one. The adopted mesh is rebuilt in the new worker by restore().
@@ -67,6 +76,20 @@ export function categorizedError(message, category) {
 }
 
 const THROTTLE_MS = 50; // at most one intermediate progress update per 50 ms and request
+
+const WARM_UP_SAMPLE = 'mountain'; // a 2500-vertex height field: every hot loop of a parameterization
+const WARM_UP_CALLS = 3; // measured-boundary parameterizations of it (one left most functions in baseline code)
+const WARM_UP_IDLE_MS = 300;
+
+/** Parameterizes the warm-up sample in `target` (a StraightestWorker) and frees it. */
+async function warmUp(target) {
+  const made = await target.sample(WARM_UP_SAMPLE);
+  try {
+    for (let k = 0; k < WARM_UP_CALLS; k++) await made.parameterize({ boundary: 'measured' });
+  } finally {
+    made.delete().catch(() => {});
+  }
+}
 
 /**
  * The core's stages of mesh.parameterize() for `boundary`, in order: measured, free and auto trace;
@@ -130,6 +153,20 @@ export function createRequests({ observer = null } = {}) {
   let mesh = null; // the adopted WorkerMesh (the mesh on display)
   let info = null; // its mesh.info()
   let generation = 0; // advances with every cancel: a request of an older one stops at its next call
+  let warmUpState = 'waiting'; // 'waiting' for an idle worker, then 'started'
+  let running = 0; // requests in progress
+  let idleTimer = null;
+
+  /** Starts the warm-up (see the top of this file) once the worker has been idle for WARM_UP_IDLE_MS. */
+  function warmUpWhenIdle() {
+    clearTimeout(idleTimer);
+    if (warmUpState !== 'waiting' || running > 0 || !worker) return;
+    idleTimer = setTimeout(() => {
+      if (warmUpState !== 'waiting' || running > 0) return;
+      warmUpState = 'started';
+      warmUp(worker).catch(() => {});
+    }, WARM_UP_IDLE_MS);
+  }
 
   function requireMesh() {
     if (!mesh) throw new Error('no mesh is loaded');
@@ -287,6 +324,8 @@ export function createRequests({ observer = null } = {}) {
   async function run(type, payload, onProgress, handler) {
     const task = observer?.begin(type, payload) ?? null;
     const epoch = generation;
+    running += 1;
+    clearTimeout(idleTimer);
     // Each call to the worker goes through step(): none starts after a cancel.
     const step = (call) => {
       if (epoch !== generation) return Promise.reject(categorizedError('cancelled', 'cancelled'));
@@ -307,6 +346,8 @@ export function createRequests({ observer = null } = {}) {
       return reply;
     } finally {
       task?.end();
+      running -= 1;
+      warmUpWhenIdle();
     }
   }
 
@@ -314,6 +355,7 @@ export function createRequests({ observer = null } = {}) {
     /** Starts the worker; resolves with its sample names and the parameterization's boundary kinds. */
     async start() {
       worker = await createStraightestWorker();
+      warmUpWhenIdle();
       return { samples: worker.sampleNames(), boundaryKinds: worker.boundaryKinds };
     },
 

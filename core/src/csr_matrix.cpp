@@ -1,23 +1,31 @@
 // csr_matrix.cpp — the compressed-row kernels: shape check, two-column product, transpose, matrix
-// product, row sorting, diagonal.
+// product, row sorting, diagonal. The row-wise ones (two-column product, sorting, diagonal) run on all threads
+// (row_chunks.hpp): each row is computed as on one thread, so results do not depend on the count.
 #include "straightest/csr_matrix.hpp"
 
 #include "row_accumulator.hpp"
+#include "row_chunks.hpp"
 
 namespace straightest {
 
 void CsrMatrix::multiply2(const double* x, double* y) const {
-  for (int32_t r = 0; r < rows; ++r) {
-    double s0 = 0, s1 = 0;
-    for (int32_t k = start[r]; k < start[r + 1]; ++k) {
-      const double a = value[k];
-      const int32_t j = col[k];
-      s0 += a * x[2 * j];
-      s1 += a * x[2 * j + 1];
+  // Rows are independent: chunks of them run on all threads, each row summed as on one.
+  const int32_t* rowStart = start.data();
+  const int32_t* column = col.data();
+  const double* entry = value.data();
+  detail::forRowChunks(static_cast<size_t>(rows), [=](size_t begin, size_t end) {
+    for (size_t r = begin; r < end; ++r) {
+      double s0 = 0, s1 = 0;
+      for (int32_t k = rowStart[r]; k < rowStart[r + 1]; ++k) {
+        const double a = entry[k];
+        const int32_t j = column[k];
+        s0 += a * x[2 * j];
+        s1 += a * x[2 * j + 1];
+      }
+      y[2 * r] = s0;
+      y[2 * r + 1] = s1;
     }
-    y[2 * r] = s0;
-    y[2 * r + 1] = s1;
-  }
+  });
 }
 
 bool wellFormed(const CsrMatrix& m) {
@@ -72,31 +80,35 @@ CsrMatrix multiply(const CsrMatrix& a, const CsrMatrix& b, size_t expectedNonZer
 std::vector<int32_t> sortRows(CsrMatrix& m) {
   // Insertion sort: rows are short (a one ring, or a coarse row of a few dozen entries).
   std::vector<int32_t> split(m.rows);
-  for (int32_t r = 0; r < m.rows; ++r) {
-    const int32_t b = m.start[r], e = m.start[r + 1];
-    for (int32_t k = b + 1; k < e; ++k) {
-      const int32_t c = m.col[k];
-      const double v = m.value[k];
-      int32_t q = k;
-      for (; q > b && m.col[q - 1] > c; --q) {
-        m.col[q] = m.col[q - 1];
-        m.value[q] = m.value[q - 1];
+  detail::forRowChunks(static_cast<size_t>(m.rows), [&m, &split](size_t begin, size_t end) {
+    for (size_t r = begin; r < end; ++r) {
+      const int32_t b = m.start[r], e = m.start[r + 1];
+      for (int32_t k = b + 1; k < e; ++k) {
+        const int32_t c = m.col[k];
+        const double v = m.value[k];
+        int32_t q = k;
+        for (; q > b && m.col[q - 1] > c; --q) {
+          m.col[q] = m.col[q - 1];
+          m.value[q] = m.value[q - 1];
+        }
+        m.col[q] = c;
+        m.value[q] = v;
       }
-      m.col[q] = c;
-      m.value[q] = v;
+      int32_t k = b;
+      while (k < e && m.col[k] < static_cast<int32_t>(r)) ++k;
+      split[r] = k;
     }
-    int32_t k = b;
-    while (k < e && m.col[k] < r) ++k;
-    split[r] = k;
-  }
+  });
   return split;
 }
 
 std::vector<double> diagonal(const CsrMatrix& m) {
   std::vector<double> d(m.rows, 0.0);
-  for (int32_t i = 0; i < m.rows; ++i)
-    for (int32_t k = m.start[i]; k < m.start[i + 1]; ++k)
-      if (m.col[k] == i) d[i] += m.value[k];
+  detail::forRowChunks(static_cast<size_t>(m.rows), [&m, &d](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+      for (int32_t k = m.start[i]; k < m.start[i + 1]; ++k)
+        if (m.col[k] == static_cast<int32_t>(i)) d[i] += m.value[k];
+  });
   return d;
 }
 

@@ -1,10 +1,13 @@
-// krylov.cpp — the two-column lockstep BiCGSTAB.
+// krylov.cpp — the two-column lockstep BiCGSTAB. Its vector updates run on all threads in fixed row
+// chunks, and its dot products and norms add per-chunk sums in chunk order (row_chunks.hpp): the
+// iterates are bit-identical for any thread count.
 #include "straightest/krylov.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "row_chunks.hpp"
 #include "solve_progress.hpp"
 
 namespace straightest {
@@ -15,36 +18,56 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
   KrylovStats stats;
   const size_t n = static_cast<size_t>(A.rows);
   const size_t m = 2 * n;
-  // Loops over the interleaved vectors go two entries at a time with one scalar accumulator per
-  // column: an accumulator array indexed by i & 1 lived in memory, which WebAssembly paid dearly for.
-  double bNorm2[2] = {0, 0};
-  for (size_t i = 0; i < m; i += 2) {
-    bNorm2[0] += b[i] * b[i];
-    bNorm2[1] += b[i + 1] * b[i + 1];
-  }
+  // Loops over the interleaved vectors go two entries (one row) at a time with one scalar accumulator
+  // per column: an accumulator array indexed by i & 1 lived in memory, which WebAssembly paid dearly for.
+  using detail::forRowChunks;
+  using detail::sumRowChunks;
+  const double* bv = b.data();
+  const auto bSums = sumRowChunks<2>(n, [bv](size_t begin, size_t end, double* sum) {
+    double n0 = 0, n1 = 0;
+    for (size_t i = 2 * begin; i < 2 * end; i += 2) {
+      n0 += bv[i] * bv[i];
+      n1 += bv[i + 1] * bv[i + 1];
+    }
+    sum[0] = n0;
+    sum[1] = n1;
+  });
+  const double bNorm2[2] = {bSums[0], bSums[1]};
   for (int c = 0; c < 2; ++c)
     if (bNorm2[c] == 0)
       for (size_t i = c; i < m; i += 2) x[i] = 0;  // the exact solution
   std::vector<double> r(m), r0(m), p(m, 0.0), v(m, 0.0), y(m), z(m), s(m), t(m);
   A.multiply2(x.data(), t.data());
-  double rNorm2[2] = {0, 0};
-  for (size_t i = 0; i < m; ++i) r[i] = r0[i] = b[i] - t[i];
-  for (size_t i = 0; i < m; i += 2) {
-    rNorm2[0] += r[i] * r[i];
-    rNorm2[1] += r[i + 1] * r[i + 1];
-  }
+  const auto rSums = sumRowChunks<2>(n, [&](size_t begin, size_t end, double* sum) {
+    double n0 = 0, n1 = 0;
+    for (size_t i = 2 * begin; i < 2 * end; i += 2) {
+      r[i] = r0[i] = b[i] - t[i];
+      r[i + 1] = r0[i + 1] = b[i + 1] - t[i + 1];
+      n0 += r[i] * r[i];
+      n1 += r[i + 1] * r[i + 1];
+    }
+    sum[0] = n0;
+    sum[1] = n1;
+  });
+  double rNorm2[2] = {rSums[0], rSums[1]};
   double r0Norm2[2] = {rNorm2[0], rNorm2[1]};
   double rho[2] = {1, 1}, alpha[2] = {1, 1}, omega[2] = {1, 1};
   bool active[2];
   // Σ u_i w_i per column.
-  auto dot2 = [m](const std::vector<double>& u, const std::vector<double>& w, double out[2]) {
-    double d0 = 0, d1 = 0;
-    for (size_t i = 0; i < m; i += 2) {
-      d0 += u[i] * w[i];
-      d1 += u[i + 1] * w[i + 1];
-    }
-    out[0] = d0;
-    out[1] = d1;
+  auto dot2 = [n](const std::vector<double>& u, const std::vector<double>& w, double out[2]) {
+    const double* uv = u.data();
+    const double* wv = w.data();
+    const auto sums = sumRowChunks<2>(n, [uv, wv](size_t begin, size_t end, double* sum) {
+      double d0 = 0, d1 = 0;
+      for (size_t i = 2 * begin; i < 2 * end; i += 2) {
+        d0 += uv[i] * wv[i];
+        d1 += uv[i + 1] * wv[i + 1];
+      }
+      sum[0] = d0;
+      sum[1] = d1;
+    });
+    out[0] = sums[0];
+    out[1] = sums[1];
   };
   auto relative = [&](int c) { return bNorm2[c] > 0 ? std::sqrt(rNorm2[c] / bNorm2[c]) : 0.0; };
   auto update = [&]() {
@@ -81,10 +104,12 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
     }
     const double w0 = active[0] ? omega[0] : 0.0, w1 = active[1] ? omega[1] : 0.0;
     const double b0 = beta[0], b1 = beta[1];
-    for (size_t i = 0; i < m; i += 2) {
-      p[i] = r[i] + b0 * (p[i] - w0 * v[i]);
-      p[i + 1] = r[i + 1] + b1 * (p[i + 1] - w1 * v[i + 1]);
-    }
+    forRowChunks(n, [&](size_t begin, size_t end) {
+      for (size_t i = 2 * begin; i < 2 * end; i += 2) {
+        p[i] = r[i] + b0 * (p[i] - w0 * v[i]);
+        p[i + 1] = r[i + 1] + b1 * (p[i + 1] - w1 * v[i + 1]);
+      }
+    });
     M(p.data(), y.data());
     A.multiply2(y.data(), v.data());
     dot2(r0, v, dot);
@@ -92,15 +117,19 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
     double sNorm2[2];
     {
       const double al0 = alpha[0], al1 = alpha[1];
-      double n0 = 0, n1 = 0;
-      for (size_t i = 0; i < m; i += 2) {
-        s[i] = r[i] - al0 * v[i];
-        s[i + 1] = r[i + 1] - al1 * v[i + 1];
-        n0 += s[i] * s[i];
-        n1 += s[i + 1] * s[i + 1];
-      }
-      sNorm2[0] = n0;
-      sNorm2[1] = n1;
+      const auto sums = sumRowChunks<2>(n, [&](size_t begin, size_t end, double* sum) {
+        double n0 = 0, n1 = 0;
+        for (size_t i = 2 * begin; i < 2 * end; i += 2) {
+          s[i] = r[i] - al0 * v[i];
+          s[i + 1] = r[i + 1] - al1 * v[i + 1];
+          n0 += s[i] * s[i];
+          n1 += s[i + 1] * s[i + 1];
+        }
+        sum[0] = n0;
+        sum[1] = n1;
+      });
+      sNorm2[0] = sums[0];
+      sNorm2[1] = sums[1];
     }
     // Half-step exit: a column whose s is already small enough takes x += α y and stops here, which
     // often saves the last iteration's second V-cycle.
@@ -121,25 +150,41 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
     }
     M(s.data(), z.data());
     A.multiply2(z.data(), t.data());
-    double tt[2], ts[2];
-    dot2(t, t, tt);
-    dot2(t, s, ts);
+    // t·t and t·s per column in one pass.
+    const auto tSums = sumRowChunks<4>(n, [&](size_t begin, size_t end, double* sum) {
+      double tt0 = 0, tt1 = 0, ts0 = 0, ts1 = 0;
+      for (size_t i = 2 * begin; i < 2 * end; i += 2) {
+        tt0 += t[i] * t[i];
+        tt1 += t[i + 1] * t[i + 1];
+        ts0 += t[i] * s[i];
+        ts1 += t[i + 1] * s[i + 1];
+      }
+      sum[0] = tt0;
+      sum[1] = tt1;
+      sum[2] = ts0;
+      sum[3] = ts1;
+    });
+    const double tt[2] = {tSums[0], tSums[1]}, ts[2] = {tSums[2], tSums[3]};
     for (int c = 0; c < 2; ++c)
       if (active[c]) omega[c] = tt[c] > 0 ? ts[c] / tt[c] : 0.0;
     // Inactive columns (converged before or at the half step) get coefficients 0: x and r stay.
     const double a0 = active[0] ? alpha[0] : 0.0, a1 = active[1] ? alpha[1] : 0.0;
     const double o0 = active[0] ? omega[0] : 0.0, o1 = active[1] ? omega[1] : 0.0;
-    double n0 = 0, n1 = 0;
-    for (size_t i = 0; i < m; i += 2) {
-      x[i] += a0 * y[i] + o0 * z[i];
-      x[i + 1] += a1 * y[i + 1] + o1 * z[i + 1];
-      r[i] = s[i] - o0 * t[i];
-      r[i + 1] = s[i + 1] - o1 * t[i + 1];
-      n0 += r[i] * r[i];
-      n1 += r[i + 1] * r[i + 1];
-    }
-    rNorm2[0] = n0;
-    rNorm2[1] = n1;
+    const auto newSums = sumRowChunks<2>(n, [&](size_t begin, size_t end, double* sum) {
+      double n0 = 0, n1 = 0;
+      for (size_t i = 2 * begin; i < 2 * end; i += 2) {
+        x[i] += a0 * y[i] + o0 * z[i];
+        x[i + 1] += a1 * y[i + 1] + o1 * z[i + 1];
+        r[i] = s[i] - o0 * t[i];
+        r[i + 1] = s[i + 1] - o1 * t[i + 1];
+        n0 += r[i] * r[i];
+        n1 += r[i + 1] * r[i + 1];
+      }
+      sum[0] = n0;
+      sum[1] = n1;
+    });
+    rNorm2[0] = newSums[0];
+    rNorm2[1] = newSums[1];
     for (int c = 0; c < 2; ++c) {
       if (!active[c]) continue;
       if (!std::isfinite(rNorm2[c]) || !std::isfinite(alpha[c]) || !std::isfinite(omega[c])) return stats;

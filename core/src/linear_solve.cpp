@@ -12,6 +12,7 @@
 #include <string>
 
 #include "eigen_bridge.hpp"
+#include "row_chunks.hpp"
 #include "solve_progress.hpp"
 #include "straightest/krylov.hpp"
 #include "straightest/multigrid.hpp"
@@ -82,11 +83,17 @@ bool directSolve(const CsrMatrix& A, const std::vector<double>& rhs, std::vector
 double relativeResidual(const CsrMatrix& A, const std::vector<double>& rhs, const std::vector<double>& x) {
   std::vector<double> Ax(x.size());
   A.multiply2(x.data(), Ax.data());
-  double res2 = 0, b2 = 0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    res2 += (Ax[i] - rhs[i]) * (Ax[i] - rhs[i]);
-    b2 += rhs[i] * rhs[i];
-  }
+  // Per-chunk sums added in chunk order: the same bits for any thread count.
+  const auto sums = detail::sumRowChunks<2>(x.size(), [&](size_t begin, size_t end, double* sum) {
+    double res2 = 0, b2 = 0;
+    for (size_t i = begin; i < end; ++i) {
+      res2 += (Ax[i] - rhs[i]) * (Ax[i] - rhs[i]);
+      b2 += rhs[i] * rhs[i];
+    }
+    sum[0] = res2;
+    sum[1] = b2;
+  });
+  const double res2 = sums[0], b2 = sums[1];
   return b2 > 0 ? std::sqrt(res2 / b2) : std::sqrt(res2);
 }
 

@@ -1,5 +1,10 @@
 // multigrid.cpp — the smoothed-aggregation hierarchy (aggregation, smoothed prolongator, Galerkin
 // coarse operators) and its V-cycle; the coarsest level is factorized by Eigen's SparseLU.
+// Threads (row_chunks.hpp): the cycle's residual, restriction (by the rows of R = Pᵀ, kept from the
+// setup), prolongation and Jacobi steps run in fixed row chunks on all threads, each row computed as on
+// one thread. Gauss–Seidel stays sequential: each row needs the rows just updated before it, and a
+// colouring that would free it changes the smoother (and its convergence) for every thread count, so
+// the V-cycle is the same operator — and the results the same bits — however many threads run it.
 #include "straightest/multigrid.hpp"
 
 #include <Eigen/SparseLU>
@@ -8,6 +13,7 @@
 
 #include "eigen_bridge.hpp"
 #include "row_accumulator.hpp"
+#include "row_chunks.hpp"
 #include "solve_progress.hpp"
 
 namespace straightest {
@@ -16,9 +22,11 @@ struct AggregationMultigrid::Hierarchy {
   struct Level {
     CsrMatrix A;
     CsrMatrix P;                 // prolongator to this level from the next coarser one
+    CsrMatrix R;                 // Pᵀ, the restriction: row c sums its fine rows in ascending order
     std::vector<int32_t> split;  // per row: first entry with column ≥ row (rows are sorted)
     std::vector<double> invDiag;
-    // Work space, two entries per unknown: b and x of the coarser levels' cycles; tmp for Jacobi.
+    // Work space, two entries per unknown: b and x of the coarser levels' cycles; tmp holds the
+    // residual before restriction (and A x in a Jacobi step).
     mutable std::vector<double> b, x, tmp;
   };
   std::vector<Level> levels;
@@ -136,15 +144,18 @@ Expected<bool> AggregationMultigrid::compute(CsrMatrix A, const Progress& progre
       level.b.resize(2 * static_cast<size_t>(n));
       level.x.resize(2 * static_cast<size_t>(n));
     }
-    if (options_.smoother == Smoother::Jacobi) level.tmp.resize(2 * static_cast<size_t>(n));
+    const bool jacobi = options_.smoother == Smoother::Jacobi;
+    if (jacobi) level.tmp.resize(2 * static_cast<size_t>(n));
     if (n <= kCoarseSize || levels.size() >= 25) break;
     int32_t count = 0;
     const std::vector<int32_t> agg = aggregate(level.A, diag, count);
-    if (count >= n || count == 0) break;  // no coarsening possible: stop here
+    if (count >= n || count == 0) break;                        // no coarsening possible: stop here
+    if (!jacobi) level.tmp.resize(2 * static_cast<size_t>(n));  // the residual
     level.P = smoothedProlongator(level.A, level.invDiag, agg, count);
+    level.R = transpose(level.P);
     // Galerkin coarse operator Pᵀ (A P), both products by rows.
     const CsrMatrix AP = multiply(level.A, level.P, level.P.col.size() * 3);
-    A = multiply(transpose(level.P), AP, static_cast<size_t>(count) * 16);
+    A = multiply(level.R, AP, static_cast<size_t>(count) * 16);
     if (!progress(kSolveStage, 1.0 - 0.9 * A.rows / fineRows)) return cancelledError("multigrid setup");
   }
   hierarchy_->coarse.compute(toEigen(levels.back().A));
@@ -196,10 +207,12 @@ void gaussSeidel(const CsrMatrix& A, const std::vector<int32_t>& split, const st
 void jacobi(const CsrMatrix& A, const std::vector<double>& invDiag, const double* b, double* x, double* tmp) {
   constexpr double omega = 2.0 / 3.0;
   A.multiply2(x, tmp);
-  for (int32_t i = 0; i < A.rows; ++i) {
-    x[2 * i] += omega * invDiag[i] * (b[2 * i] - tmp[2 * i]);
-    x[2 * i + 1] += omega * invDiag[i] * (b[2 * i + 1] - tmp[2 * i + 1]);
-  }
+  detail::forRowChunks(static_cast<size_t>(A.rows), [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      x[2 * i] += omega * invDiag[i] * (b[2 * i] - tmp[2 * i]);
+      x[2 * i + 1] += omega * invDiag[i] * (b[2 * i + 1] - tmp[2 * i + 1]);
+    }
+  });
 }
 
 }  // namespace
@@ -226,41 +239,56 @@ void AggregationMultigrid::Hierarchy::cycle(const Options& options, size_t l, co
     else jacobi(level.A, level.invDiag, b, x, level.tmp.data());
   };
   for (int s = 0; s < options.preSweeps; ++s) smooth(true, s == 0);
-  // Residual and restriction in one pass: b_c = Pᵀ (b − A x), scattered through P's rows.
+  // Residual r = b − A x, then restriction b_c = R r by the rows of R: each coarse row sums its fine
+  // rows in ascending order (the sum a scatter through P's rows, row after row, would form).
   const Level& coarser = levels[l + 1];
-  double* bc = coarser.b.data();
-  std::fill(bc, bc + 2 * static_cast<size_t>(coarser.A.rows), 0.0);
   const CsrMatrix& A = level.A;
   const CsrMatrix& P = level.P;
-  for (int32_t i = 0; i < n; ++i) {
-    double r0 = b[2 * i], r1 = b[2 * i + 1];
-    for (int32_t k = A.start[i]; k < A.start[i + 1]; ++k) {
-      const double a = A.value[k];
-      const int32_t j = A.col[k];
-      r0 -= a * x[2 * j];
-      r1 -= a * x[2 * j + 1];
+  const CsrMatrix& R = level.R;
+  double* r = level.tmp.data();
+  detail::forRowChunks(static_cast<size_t>(n), [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      double r0 = b[2 * i], r1 = b[2 * i + 1];
+      for (int32_t k = A.start[i]; k < A.start[i + 1]; ++k) {
+        const double a = A.value[k];
+        const int32_t j = A.col[k];
+        r0 -= a * x[2 * j];
+        r1 -= a * x[2 * j + 1];
+      }
+      r[2 * i] = r0;
+      r[2 * i + 1] = r1;
     }
-    for (int32_t k = P.start[i]; k < P.start[i + 1]; ++k) {
-      const double p = P.value[k];
-      const int32_t c = P.col[k];
-      bc[2 * c] += p * r0;
-      bc[2 * c + 1] += p * r1;
+  });
+  double* bc = coarser.b.data();
+  detail::forRowChunks(static_cast<size_t>(R.rows), [&](size_t begin, size_t end) {
+    for (size_t c = begin; c < end; ++c) {
+      double s0 = 0, s1 = 0;
+      for (int32_t k = R.start[c]; k < R.start[c + 1]; ++k) {
+        const double p = R.value[k];
+        const int32_t i = R.col[k];
+        s0 += p * r[2 * i];
+        s1 += p * r[2 * i + 1];
+      }
+      bc[2 * c] = s0;
+      bc[2 * c + 1] = s1;
     }
-  }
+  });
   double* xc = coarser.x.data();
   cycle(options, l + 1, bc, xc);
   // Coarse correction x += P x_c.
-  for (int32_t i = 0; i < n; ++i) {
-    double s0 = 0, s1 = 0;
-    for (int32_t k = P.start[i]; k < P.start[i + 1]; ++k) {
-      const double p = P.value[k];
-      const int32_t c = P.col[k];
-      s0 += p * xc[2 * c];
-      s1 += p * xc[2 * c + 1];
+  detail::forRowChunks(static_cast<size_t>(n), [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      double s0 = 0, s1 = 0;
+      for (int32_t k = P.start[i]; k < P.start[i + 1]; ++k) {
+        const double p = P.value[k];
+        const int32_t c = P.col[k];
+        s0 += p * xc[2 * c];
+        s1 += p * xc[2 * c + 1];
+      }
+      x[2 * i] += s0;
+      x[2 * i + 1] += s1;
     }
-    x[2 * i] += s0;
-    x[2 * i + 1] += s1;
-  }
+  });
   for (int s = 0; s < options.postSweeps; ++s) smooth(false, false);
 }
 
