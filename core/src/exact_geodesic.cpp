@@ -9,6 +9,8 @@
 #include <utility>
 
 #include "exact_geodesic_queue.hpp"
+#include "exact_geodesic_reference.hpp"
+#include "straightest/geodesic_distance.hpp"
 #include "unfolding.hpp"
 
 namespace straightest {
@@ -46,8 +48,12 @@ struct Window {
 
 class Propagation {
  public:
-  Propagation(const TriMesh& mesh, ExactGeodesics& out)
-      : mesh_(mesh),
+  /// prune = false: the reference (exact_geodesic_reference.hpp): no filter, no shadow cones; windows whose
+  /// least distance exceeds `cap` (an upper bound of every vertex's distance) are dropped instead.
+  Propagation(const TriMesh& mesh, ExactGeodesics& out, bool prune = true, double cap = kInf)
+      : prune_(prune),
+        cap_(cap),
+        mesh_(mesh),
         out_(out),
         len_(unfolding::halfedgeLengths(mesh)),
         pseudo_(mesh.numVertices(), 0),
@@ -202,7 +208,7 @@ class Propagation {
       total += cornerAngle(h);
     }
     double lo = 0, hi = 0;
-    const bool cone = !isSource && !mesh_.isBoundaryVertex(v) && shadowCone(v, total, lo, hi);
+    const bool cone = prune_ && !isSource && !mesh_.isBoundaryVertex(v) && shadowCone(v, total, lo, hi);
     for (const auto& [h, phi] : ring_) {
       const int32_t p = TriMesh::prev(h), o = TriMesh::next(h);
       update(mesh_.head(h), d + len_[h], GeodesicParent{-1, v, Vec2{}});
@@ -240,13 +246,19 @@ class Propagation {
     b0 = std::max(b0, 0.0);
     b1 = std::min(b1, l);
     if (!(b1 - b0 > kMinWindowRel * l)) return;
+    const Vec2 x0{b0, 0}, x1{b1, 0};
+    const double nearest = sigma + unfolding::length(Vec2{std::clamp(image.x, b0, b1), 0} - image);
+    if (!prune_) {
+      if (nearest > cap_) return;
+      ++out_.stats.windows;
+      push(Window{nearest, b0, b1, image, sigma, h, origin});
+      return;
+    }
     if (dominated(h, b0, b1, image, sigma)) {
       ++out_.stats.filtered;
       return;
     }
-    const Vec2 x0{b0, 0}, x1{b1, 0};
     const double f0 = sigma + unfolding::length(image - x0), f1 = sigma + unfolding::length(image - x1);
-    const double nearest = sigma + unfolding::length(Vec2{std::clamp(image.x, b0, b1), 0} - image);
     const double* d = out_.distances.data();
     const int32_t tail = mesh_.tail(h), head = mesh_.head(h);
     auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
@@ -342,7 +354,7 @@ class Propagation {
     const Vec2 a{0, 0}, b{l, 0}, c = unfolding::oppositeCorner(len_, h);
     const Vec2& image = w.image;
     const int32_t vc = mesh_.head(nextH);
-    if (useless(w, c, vc)) return;
+    if (prune_ && useless(w, c, vc)) return;
     // Where the ray from the image through c crosses the axis.
     const double depth = c.y - image.y;
     const double xc = depth > 0 ? image.x + (c.x - image.x) * (-image.y) / depth : c.x;
@@ -371,6 +383,8 @@ class Propagation {
     }
   }
 
+  const bool prune_;
+  const double cap_;
   const TriMesh& mesh_;
   ExactGeodesics& out_;
   std::vector<double> len_;
@@ -397,6 +411,28 @@ Expected<ExactGeodesics> exactGeodesics(const TriMesh& mesh, const SurfacePoint&
     return out;
   });
 }
+
+namespace detail {
+
+Expected<ExactGeodesics> exactGeodesicsUnpruned(const TriMesh& mesh, const SurfacePoint& source) {
+  return guarded([&]() -> Expected<ExactGeodesics> {
+    auto valid = validateSurfacePoint(mesh, source);
+    if (!valid) return valid.error();
+    // Every vertex is within its graph distance; a window farther than all of them improves none, nor do
+    // the windows it would make (distances grow along rays).
+    double cap = 0;
+    for (double d : dijkstraDistances(mesh, valid.value()))
+      if (std::isfinite(d)) cap = std::max(cap, d);
+    ExactGeodesics out;
+    out.source = valid.value();
+    Propagation propagation(mesh, out, /*prune=*/false, cap * (1 + 1e-9));
+    auto done = propagation.run(out.source, {});
+    if (!done) return done.error();
+    return out;
+  });
+}
+
+}  // namespace detail
 
 std::vector<double> exactGeodesicDistances(const TriMesh& mesh, const SurfacePoint& source) {
   auto field = exactGeodesics(mesh, source);
