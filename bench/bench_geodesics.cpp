@@ -66,10 +66,10 @@ void exactRow(const char* target, const Mesh& m, double& lastMs) {
     ++counted;
   }
   std::printf("| %s | %s | %d | %.1f | %.1f | %.2f | %lld | %.1f | %lld | %lld | %.4f | %lld |\n", target,
-              m.name.c_str(), m.mesh.numVertices(), ms, cpu, m.mesh.numVertices() / cpu, static_cast<long long>(f.stats.windows),
-              static_cast<double>(f.stats.windows) / m.mesh.numVertices(), static_cast<long long>(f.stats.maxQueue),
-              static_cast<long long>(f.stats.pseudoSources), counted ? sumRatio / counted : 0.0,
-              static_cast<long long>(above));
+              m.name.c_str(), m.mesh.numVertices(), ms, cpu, m.mesh.numVertices() / cpu,
+              static_cast<long long>(f.stats.windows), static_cast<double>(f.stats.windows) / m.mesh.numVertices(),
+              static_cast<long long>(f.stats.maxQueue), static_cast<long long>(f.stats.pseudoSources),
+              counted ? sumRatio / counted : 0.0, static_cast<long long>(above));
 }
 
 void shootRow(const char* target, const Mesh& m) {
@@ -165,7 +165,8 @@ int main(int argc, char** argv) {
       "count of exact ÷ Dijkstra above 1 are a sanity check)\n\n");
   std::printf(
       "| target | mesh | vertices | ms | CPU ms | k vertices/CPU s | windows | windows/vertex | queue peak | "
-      "pseudo-sources | mean exact/graph | exact > graph |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+      "pseudo-sources | mean exact/graph | exact > graph "
+      "|\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   std::vector<Mesh> meshes;
   for (const std::string& f : files) {
     auto m = loadMeshFile(f);

@@ -1,8 +1,8 @@
 // Bench-only: our exact geodesic distances (window propagation, exact_geodesic.hpp) against CGAL's
 // Surface_mesh_shortest_path, from the default source to every vertex of each mesh named on the command
-// line (same vertices, same faces): the largest relative difference and both times (wall and processor). Prints a markdown table;
-// never pass/fail. CGAL runs are skipped above --cgal-max-vertices (default 20000: CGAL's time and memory grow
-// fast; see scripts/bench-cgal.sh).
+// line (same vertices, same faces): the largest relative difference and both times (wall and processor). Prints a
+// markdown table; never pass/fail. CGAL runs are skipped above --cgal-max-vertices (default 20000: CGAL's time and
+// memory grow fast; see scripts/bench-cgal.sh).
 //   exact_vs_cgal [--cgal-max-vertices N] MESH.off ...
 #include <CGAL/Surface_mesh_shortest_path.h>
 
@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
   }
   std::printf(
       "| mesh | vertices | ours ms | ours CPU ms | windows | queue peak | CGAL ms | CGAL CPU ms | CGAL ÷ ours | "
-      "CGAL ÷ ours (CPU) | max relative difference | vertex |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+      "CGAL ÷ ours (CPU) | max relative difference | vertex "
+      "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
       "\n");
   for (const std::string& file : files) {
     const std::string name = file.substr(file.find_last_of('/') + 1);
