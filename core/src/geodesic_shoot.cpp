@@ -43,12 +43,23 @@ double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
   return norm(p - (a + e * t));
 }
 
+/// A hint to start loading two cache lines (a no-op where the compiler has no prefetch).
+inline void prefetch(const void* a, const void* b) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(a);
+  __builtin_prefetch(b);
+#else
+  (void)a;
+  (void)b;
+#endif
+}
+
 Error invalid(const std::string& message) { return Error{ErrorCode::InvalidArgument, message}; }
 
 class Walk {
  public:
   Walk(const TriMesh& mesh, GeodesicShot& shot, const ShootOptions& options, const Progress& progress)
-      : mesh_(mesh), shot_(shot), progress_(progress), report_(progress_, "shoot") {
+      : mesh_(mesh), shot_(shot), progress_(progress), report_(progress_, "shoot"), keep_(options.keepPoints) {
     const double perEdge = std::min(shot.requestedLength / mesh.meanEdgeLength(), 1e15);
     maxSteps_ = options.maxSteps > 0
                     ? options.maxSteps
@@ -59,11 +70,16 @@ class Walk {
   /// Maps the tangent vector `tangent` (in the plane of normal n) into a face around the source and walks.
   Expected<bool> run(const Vec3& tangent, const Vec3& n) {
     const SurfacePoint& s = shot_.source;
-    shot_.points.reserve(256);
-    shot_.positions.reserve(256);
+    if (keep_) {
+      shot_.points.reserve(256);
+      shot_.positions.reserve(256);
+    }
     shot_.points.push_back(s);
     shot_.positions.push_back(position(mesh_, s));
-    p_ = shot_.positions.back();
+    p_ = last_ = before_ = shot_.positions.back();
+    lastPoint_ = s;
+    trackMiss_ = isFinite(shot_.target);
+    if (trackMiss_) shot_.missDistance = norm(shot_.target - p_);
     bool along = false;  // the start runs along an edge to vertex alongTo
     int32_t alongTo = -1, alongFace = -1;
     if (s.kind == SurfacePoint::Kind::Face) {
@@ -156,12 +172,19 @@ class Walk {
     leaveVertex(v, h, std::max(angle, 0.0));
   }
 
+  /// The walk's next point: its segment's length and the closest approach to a target counted, the point
+  /// kept when the polyline is (keepPoints).
   void record(const SurfacePoint& sp, const Vec3& x) {
-    shot_.length += norm(x - shot_.positions.back());
-    shot_.points.push_back(sp);
-    shot_.positions.push_back(x);
+    shot_.length += norm(x - last_);
+    if (trackMiss_) shot_.missDistance = std::min(shot_.missDistance, segmentDistance(shot_.target, last_, x));
+    if (keep_) {
+      shot_.points.push_back(sp);
+      shot_.positions.push_back(x);
+    }
     ++shot_.facesCrossed;
-    p_ = x;
+    before_ = last_;
+    last_ = p_ = x;
+    lastPoint_ = sp;
   }
 
   void arriveAtVertex(int32_t v) { record(SurfacePoint::vertex(v), mesh_.position(v)); }
@@ -178,7 +201,7 @@ class Walk {
     for (int k = 0; k < 3; ++k)
       if (mesh_.tail(3 * f + k) == v) hv = 3 * f + k;
     const Vec3& pv = mesh_.position(v);
-    Vec3 back = shot_.positions[shot_.positions.size() - 2] - pv;
+    Vec3 back = before_ - pv;
     if (!(norm(back) > 0)) back = -d_;
     const Vec3 u = mesh_.position(mesh_.head(hv)) - pv;
     const double alpha = std::clamp(signedAngle(u, back, mesh_.faceNormal(f)), 0.0, cornerAngle(mesh_, hv));
@@ -189,8 +212,12 @@ class Walk {
   }
 
   Expected<bool> finish() {
-    shot_.end = shot_.points.back();
-    shot_.endPosition = shot_.positions.back();
+    shot_.end = lastPoint_;
+    shot_.endPosition = last_;
+    if (!keep_ && shot_.points.size() == 1 && shot_.facesCrossed > 0) {
+      shot_.points.push_back(lastPoint_);
+      shot_.positions.push_back(last_);
+    }
     return true;
   }
 
@@ -213,24 +240,32 @@ class Walk {
       const int32_t first = 3 * face_;
       int32_t exit = -1;
       double exitS = kInf, exitT = 0;
+      // Triple products [x, y, n] as x · (y × n): d × n once per face, e × n once per edge considered.
+      const Vec3 dn = cross(d_, n);
       auto consider = [&](int32_t h) {
         const int32_t k = h - first;
         const Vec3 a = mesh_.position(adjacency.corners[k]);
-        const Vec3 e = mesh_.position(adjacency.corners[k == 2 ? 0 : k + 1]) - a;
-        const double den = dot(cross(d_, e), n);
+        const Vec3 en = cross(mesh_.position(adjacency.corners[k == 2 ? 0 : k + 1]) - a, n);
+        const double den = dot(d_, en);
         if (!(den > 0)) return;  // the ray does not leave through this edge
-        const double s = dot(cross(a - p_, e), n) / den;
+        const Vec3 ap = a - p_;
+        const double inverse = 1 / den;
+        const double s = dot(ap, en) * inverse;
         if (s < exitS) {
           exitS = s;
-          exitT = dot(cross(a - p_, d_), n) / den;
+          exitT = dot(ap, dn) * inverse;
           exit = h;
         }
       };
       if (skip_ >= 0) {
         // Entered through skip_: the ray leaves through the edge on the side of the opposite corner it passes.
         const int32_t nextH = TriMesh::next(skip_), prevH = TriMesh::prev(skip_);
+        // The walk is bound by memory latency (faces all over the mesh): start loading both faces it may
+        // enter next while this one is worked out.
+        for (int32_t beyond : {adjacency.twins[nextH - first], adjacency.twins[prevH - first]})
+          if (beyond >= 0) prefetch(&mesh_.adjacency(TriMesh::face(beyond)), &mesh_.faceNormal(TriMesh::face(beyond)));
         const Vec3 c = mesh_.position(adjacency.corners[(skip_ - first + 2) % 3]);
-        consider(dot(cross(d_, c - p_), n) > 0 ? nextH : prevH);
+        consider(dot(c - p_, dn) < 0 ? nextH : prevH);
         if (exit < 0) {  // rounding at the corner: let both edges compete
           consider(nextH);
           consider(prevH);
@@ -255,11 +290,12 @@ class Walk {
       }
       const int32_t exitK = exit - first;
       const int32_t tail = adjacency.corners[exitK], head = adjacency.corners[exitK == 2 ? 0 : exitK + 1];
-      const double edgeLength = norm(mesh_.position(head) - mesh_.position(tail));
+      const Vec3 edge = mesh_.position(head) - mesh_.position(tail);
+      const double edgeLength2 = dot(edge, edge), tolerance2 = vertexTolerance_ * vertexTolerance_;
       const double t = std::clamp(exitT, 0.0, 1.0);
-      const int32_t vertex = t * edgeLength <= vertexTolerance_         ? tail
-                             : (1 - t) * edgeLength <= vertexTolerance_ ? head
-                                                                        : -1;
+      const int32_t vertex = t * t * edgeLength2 <= tolerance2               ? tail
+                             : (1 - t) * (1 - t) * edgeLength2 <= tolerance2 ? head
+                                                                             : -1;
       if (vertex >= 0) {
         arriveAtVertex(vertex);
         if (!passVertex(vertex, face_)) return finish();
@@ -274,10 +310,10 @@ class Walk {
         return finish();
       }
       // Unfold: keep the components along the edge and across it (into the next face).
-      const Vec3 u = normalized(mesh_.position(head) - mesh_.position(tail));
       const int32_t next = TriMesh::face(twin);
-      // (A rotation about the edge: the length stays 1 up to rounding, renormalized now and then.)
-      d_ = u * dot(d_, u) + cross(mesh_.faceNormal(next), u) * dot(d_, cross(n, u));
+      // (A rotation about the edge e: d = e (d·e)/|e|² + (n×e)(d·(n×e))/|e|² becomes the same with the next
+      // face's normal; the length stays 1 up to rounding, renormalized now and then.)
+      d_ = (edge * dot(d_, edge) + cross(mesh_.faceNormal(next), edge) * dot(d_, cross(n, edge))) / edgeLength2;
       if ((step & 63) == 0) d_ = normalized(d_);
       face_ = next;
       skip_ = twin;
@@ -302,8 +338,11 @@ class Walk {
   ThrottledProgress report_;
   int64_t maxSteps_ = 0;
   double vertexTolerance_ = 0;
+  bool keep_ = true, trackMiss_ = false;
   int32_t face_ = -1, skip_ = -1, only_ = -1;
   Vec3 p_, d_;
+  Vec3 last_, before_;  // the last point recorded, and the one before it (the segment into a vertex)
+  SurfacePoint lastPoint_;
 };
 
 /// Validates the source and the length; the source snapped as the tracer snaps its own.
@@ -400,13 +439,7 @@ Expected<GeodesicShot> shootGeodesicToward(const TriMesh& mesh, const SurfacePoi
     shot.target = target;
     if (straightest < kInf) shot.straightestDistance = straightest;
     auto result = shoot(mesh, std::move(shot), *tangent, base.normal, options, progress);
-    if (!result) return result;
-    GeodesicShot& out = result.value();
-    double miss = norm(target - out.positions.front());
-    for (size_t i = 1; i < out.positions.size(); ++i)
-      miss = std::min(miss, segmentDistance(target, out.positions[i - 1], out.positions[i]));
-    out.missDistance = miss;
-    return result;
+    return result;  // the walk measured missDistance as it went
   });
 }
 

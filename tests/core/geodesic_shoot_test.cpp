@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geodesic_surfaces.hpp"
@@ -165,6 +166,35 @@ TEST(GeodesicShoot, OnAConeMissesADestinationTheCuttingPlaneReaches) {
   const GeodesicShot p = shootGeodesicToward(plane, SurfacePoint::vertex(5 * 11 + 5), SurfacePoint::vertex(2)).value();
   EXPECT_NEAR(p.missDistance, 0.0, 1e-12);
   EXPECT_NEAR(norm(p.endPosition - plane.position(2)), 0.0, 1e-12);
+}
+
+TEST(GeodesicShoot, WithoutThePolylineWalksTheSameWay) {
+  // keepPoints = false keeps the source and the end only; the walk, its length, end, status and the miss
+  // distance (measured as it goes) are those of the full polyline.
+  const TriMesh mesh = makeHeightField(20);
+  const SurfacePoint s = SurfacePoint::vertex(10 * 20 + 10);
+  for (int32_t d : {0, 19, 7 * 20 + 3, 399, 15 * 20 + 12}) {
+    ShootOptions lean;
+    lean.keepPoints = false;
+    const GeodesicShot full = shootGeodesicToward(mesh, s, SurfacePoint::vertex(d), 30.0).value();
+    const GeodesicShot bare = shootGeodesicToward(mesh, s, SurfacePoint::vertex(d), 30.0, lean).value();
+    EXPECT_EQ(bare.status, full.status);
+    EXPECT_EQ(bare.facesCrossed, full.facesCrossed);
+    EXPECT_EQ(bare.vertexPassings, full.vertexPassings);
+    EXPECT_EQ(bare.length, full.length);
+    EXPECT_EQ(bare.missDistance, full.missDistance);
+    EXPECT_EQ(norm(bare.endPosition - full.endPosition), 0.0);
+    ASSERT_EQ(bare.positions.size(), 2u);
+    EXPECT_EQ(norm(bare.positions.back() - full.positions.back()), 0.0);
+    // The miss distance is the polyline's closest approach.
+    double miss = norm(full.target - full.positions.front());
+    for (size_t i = 1; i < full.positions.size(); ++i) {
+      const Vec3 e = full.positions[i] - full.positions[i - 1];
+      const double t = std::clamp(dot(full.target - full.positions[i - 1], e) / dot(e, e), 0.0, 1.0);
+      miss = std::min(miss, norm(full.target - (full.positions[i - 1] + e * t)));
+    }
+    EXPECT_NEAR(full.missDistance, miss, 1e-12);
+  }
 }
 
 TEST(GeodesicShoot, StopsAtTheBoundary) {

@@ -10,8 +10,11 @@
 // boundary vertices, so those become pseudo-sources once their distance is known, and emit windows of
 // their own. Without the trimming of MMP, windows would multiply; ICH's filter drops a new window when
 // one of the three corners of the face it came through already offers a shorter route to every point
-// of it (d(corner) + |corner − x| < σ + |image − x|); the queue's peak stayed at 0.8–1.5 windows per vertex
-// on the meshes measured, 300–250k vertices (see docs/ARCHITECTURE.md).
+// of it (d(corner) + |corner − x| < σ + |image − x|), or when the last window created on the same edge is
+// shorter at every point of it (a cheap exact test: the difference of two such distances is monotone
+// between two known points); the queue's peak stayed at 0.8–1.5 windows per vertex on the meshes measured,
+// 300–250k vertices (see docs/ARCHITECTURE.md). The number of windows grows like n^1.5 on bumpy meshes:
+// each saddle's shadow is a pencil of its own that splits at every vertex it meets.
 // Unreferenced vertices and other components get +inf. Cost: O(windows · log(queue)).
 #pragma once
 #include <cstdint>

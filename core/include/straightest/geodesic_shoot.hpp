@@ -48,6 +48,9 @@ struct ShootOptions {
   // source). shootGeodesicToward passes the base normal; a caller shooting many times from one source can
   // compute basePlane once and pass it here.
   std::optional<Vec3> tangentNormal;
+  // false: `points` and `positions` hold the source and the end only (the length, status, end and miss
+  // distance are the same), for a caller that shoots many times and wants no polylines.
+  bool keepPoints = true;
 };
 
 struct GeodesicShot {

@@ -1,0 +1,60 @@
+// The pruned window propagation against the unpruned reference (private: core/src/exact_geodesic_reference.hpp):
+// the filter through the faces' corners, dropping windows beaten by their edge's last one and the saddles'
+// shadow cones keep every vertex's distance, on bumpy height fields (most vertices are saddles there) and a
+// cone, from vertices, edge points and face points; and they do prune.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../../core/src/exact_geodesic_reference.hpp"
+#include "geodesic_surfaces.hpp"
+#include "straightest/exact_geodesic.hpp"
+#include "straightest/samples.hpp"
+
+namespace straightest {
+namespace {
+
+/// The largest relative difference between the pruned and the unpruned distances, and the window counts.
+struct Comparison {
+  double worst = 0;
+  int64_t pruned = 0, unpruned = 0;
+};
+
+Comparison compare(const TriMesh& mesh, const SurfacePoint& source) {
+  const ExactGeodesics pruned = exactGeodesics(mesh, source).value();
+  const ExactGeodesics reference = detail::exactGeodesicsUnpruned(mesh, source).value();
+  Comparison c{0, pruned.stats.windows, reference.stats.windows};
+  for (int32_t v = 0; v < mesh.numVertices(); ++v) {
+    const double a = pruned.distances[v], b = reference.distances[v];
+    EXPECT_EQ(std::isfinite(a), std::isfinite(b)) << v;
+    if (!std::isfinite(a) || !std::isfinite(b) || b == 0) continue;
+    c.worst = std::max(c.worst, std::fabs(a - b) / b);
+  }
+  return c;
+}
+
+TEST(ExactGeodesicReference, PruningKeepsTheDistancesOnHeightFields) {
+  for (int n : {8, 11, 14}) {
+    const TriMesh mesh = makeHeightField(n);
+    const int32_t middle = (n / 2) * n + n / 2;
+    for (const SurfacePoint& s : {SurfacePoint::vertex(middle), SurfacePoint::vertex(1), SurfacePoint::edge(7, 0.37),
+                                  SurfacePoint::face(mesh.numFaces() / 3, {0.2, 0.5, 0.3})}) {
+      const Comparison c = compare(mesh, s);
+      EXPECT_LE(c.worst, 1e-12) << "height field " << n << ", source index " << s.index;
+      EXPECT_LT(c.pruned, c.unpruned);
+    }
+  }
+}
+
+TEST(ExactGeodesicReference, PruningKeepsTheDistancesOnACone) {
+  const testing::Cone cone = testing::cone(6, 1.0, 1.0, 6);
+  for (int32_t source : {cone.apex, int32_t(20), int32_t(41)}) {
+    const Comparison c = compare(cone.mesh, SurfacePoint::vertex(source));
+    EXPECT_LE(c.worst, 1e-12) << "source " << source;
+    EXPECT_LE(c.pruned, c.unpruned);  // from the apex nothing overlaps: nothing to prune
+  }
+}
+
+}  // namespace
+}  // namespace straightest
