@@ -137,7 +137,7 @@ class ThreadPool {
 
  private:
   void workerLoop() {
-    inWorker() = true;
+    insideLoop() = true;
     std::uint64_t seen = 0;
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
@@ -156,8 +156,9 @@ class ThreadPool {
   }
 
  public:
-  /// True on the pool's own threads (a parallelFor inside a chunk runs serially there).
-  static bool& inWorker() {
+  /// True on the pool's own threads, and on a calling thread while its loop runs: a parallelFor inside
+  /// a chunk runs serially (the pool is taken, and the caller already holds `busy`).
+  static bool& insideLoop() {
     thread_local bool flag = false;
     return flag;
   }
@@ -194,7 +195,7 @@ bool parallelFor(std::size_t count, std::size_t grain, const Body& body, const P
   const std::size_t chunks = chunkCount(count, grain);
   const int threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threadCount()), chunks));
 #if STRAIGHTEST_HAS_THREADS
-  if (threads <= 1 || ThreadPool::inWorker()) return serialFor(count, grain, body, progress, stage);
+  if (threads <= 1 || ThreadPool::insideLoop()) return serialFor(count, grain, body, progress, stage);
   ThreadPool& workers = pool();
   std::unique_lock<std::mutex> busy(workers.busy, std::try_to_lock);
   if (!busy.owns_lock()) return serialFor(count, grain, body, progress, stage);
@@ -216,8 +217,17 @@ bool parallelFor(std::size_t count, std::size_t grain, const Body& body, const P
   };
   if (!report(0.0)) return false;  // the stage's start, before any chunk runs
   workers.start(job);
-  while (job.runOne()) reportDone();
-  workers.finish(job, reportDone);
+  try {
+    ThreadPool::insideLoop() = true;
+    while (job.runOne()) reportDone();
+    ThreadPool::insideLoop() = false;
+    workers.finish(job, reportDone);
+  } catch (...) {  // the progress callback threw: no worker may outlive the job on this stack
+    job.stop = true;
+    ThreadPool::insideLoop() = false;
+    workers.finish(job, [] {});
+    throw;
+  }
   if (job.error) std::rethrow_exception(job.error);
   if (cancelled) return false;
   return report(1.0);

@@ -2,14 +2,18 @@
 // whole parameterization give bit-identical results with 1, 2 and 4 threads; progress is monotone and
 // reported on the calling thread only; a cancelled threaded trace returns Cancelled and leaves the pool
 // usable.
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "../../core/src/parallel_for.hpp"
 
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/interior_weights.hpp"
@@ -88,6 +92,50 @@ TEST(Threads, CountIsProcessWideWithZeroForEveryCore) {
   if (!kThreads) {
     EXPECT_EQ(hardwareThreads(), 1);
   }
+}
+
+TEST(Threads, ParallelForRunsEveryChunkOnceWithItsOwnRange) {
+  for (int threads : {1, 2, 4}) {
+    const ThreadCountScope scope(threads);
+    const size_t count = 1003, grain = 10;  // 101 chunks, the last one of 3
+    std::vector<int> runs(detail::chunkCount(count, grain), 0);
+    std::vector<int> covered(count, 0);
+    const bool done = detail::parallelFor(count, grain, [&](size_t chunk, size_t begin, size_t end) {
+      ++runs[chunk];
+      EXPECT_EQ(begin, chunk * grain);
+      EXPECT_EQ(end, std::min(count, begin + grain));
+      for (size_t i = begin; i < end; ++i) ++covered[i];
+    });
+    EXPECT_TRUE(done);
+    EXPECT_EQ(runs, std::vector<int>(runs.size(), 1));
+    EXPECT_EQ(covered, std::vector<int>(count, 1));
+    EXPECT_TRUE(detail::parallelFor(0, grain, [](size_t, size_t, size_t) { ADD_FAILURE(); }));
+  }
+}
+
+TEST(Threads, NestedLoopsRunAndExceptionsReachTheCaller) {
+  const ThreadCountScope scope(kThreads ? 3 : 1);
+  // A loop inside a chunk (on a worker or on the calling thread) runs serially there.
+  std::vector<long> sums(40, 0);
+  detail::parallelFor(sums.size(), 1, [&](size_t chunk, size_t, size_t) {
+    detail::parallelFor(100, 7, [&](size_t, size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) sums[chunk] += static_cast<long>(i);
+    });
+  });
+  EXPECT_EQ(sums, std::vector<long>(sums.size(), 4950));
+  // A chunk that throws: the exception comes out of parallelFor on the calling thread, and the pool
+  // runs the next loop in full.
+  std::atomic<int> ran{0};
+  EXPECT_THROW(detail::parallelFor(64, 1,
+                                   [&](size_t chunk, size_t, size_t) {
+                                     ++ran;
+                                     if (chunk == 5) throw std::runtime_error("chunk 5");
+                                   }),
+               std::runtime_error);
+  EXPECT_GE(ran.load(), 6);
+  ran = 0;
+  EXPECT_TRUE(detail::parallelFor(64, 1, [&](size_t, size_t, size_t) { ++ran; }));
+  EXPECT_EQ(ran.load(), 64);
 }
 
 TEST(Threads, PathBatchesAreBitIdentical) {
