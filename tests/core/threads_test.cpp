@@ -4,6 +4,7 @@
 // usable.
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
 #include <mutex>
 #include <optional>
@@ -288,6 +289,37 @@ TEST(Threads, CancelledThreadedTraceLeavesThePoolUsable) {
     // The pool runs the next batch in full, as a single thread would.
     expectSameBatch(reference, traceAll(mesh, {AllBoundaryVertices{}}, true));
   }
+}
+
+TEST(Threads, CancelFromAnotherThreadStopsAThreadedTrace) {
+  if (!kThreads) GTEST_SKIP() << "no second thread in a WebAssembly build without pthreads";
+  const TriMesh mesh = makeHeightField(200);
+  const ThreadCountScope scope(kThreads ? 2 : 1);
+  const SurfacePoint source = SurfacePoint::vertex(defaultSource(mesh).value());
+  const auto targets = resolveTargets(mesh, {AllBoundaryVertices{}}).value();
+  // A user's cancel button: another thread sets the flag that the progress callback reads. The callback
+  // waits, once chunks are running (its second call), until that thread has pressed it.
+  std::atomic<bool> cancel{false};
+  std::mutex mutex;
+  std::condition_variable pressed;
+  int calls = 0;
+  std::thread button([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    cancel = true;
+    pressed.notify_all();
+  });
+  const Progress progress([&](const char*, double) {
+    if (++calls == 2) {
+      std::unique_lock<std::mutex> lock(mutex);
+      pressed.wait(lock, [&] { return cancel.load(); });
+    }
+    return !cancel.load() || calls < 2;
+  });
+  const auto batch = traceStraightestPaths(mesh, source, targets, TraceOptions{false}, progress);
+  button.join();
+  ASSERT_FALSE(batch.ok());
+  EXPECT_EQ(batch.error().code, ErrorCode::Cancelled);
+  EXPECT_EQ(calls, 2);  // no call after the one that said stop
 }
 
 }  // namespace
