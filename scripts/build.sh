@@ -2,7 +2,8 @@
 # Builds the native library, CLI and tests (build/native) and/or the WASM module and tests
 # (build/wasm), then copies the module into the npm package (wasm/dist); `sanitize` builds the native
 # tests with ASan + UBSan (build/sanitize); `module` builds only the WASM module the npm package ships
-# (npm run build:wasm: no tests, no benchmarks). Usage: build.sh native|wasm|module|sanitize|all
+# (npm run build:wasm: no tests, no benchmarks); `tsan` builds the threaded loops' tests with ThreadSanitizer
+# (build/tsan). Usage: build.sh native|wasm|module|sanitize|tsan|all
 # The native build treats warnings as errors (STRAIGHTEST_WERROR): npm test and CI run through here, so a
 # new warning fails there instead of scrolling by; a hand-made `cmake --preset native` keeps them warnings.
 source "$(dirname "$0")/common.sh"
@@ -14,6 +15,10 @@ fi
 if [ "$target" = sanitize ]; then
   cmake --preset sanitize >/dev/null
   cmake --build --preset sanitize --target core_tests straightest
+fi
+if [ "$target" = tsan ]; then  # ThreadSanitizer: the core and the threaded loops' tests only
+  cmake --preset tsan >/dev/null
+  cmake --build --preset tsan
 fi
 if [ "$target" = wasm ] || [ "$target" = module ] || [ "$target" = all ]; then
   cmake --preset wasm >/dev/null

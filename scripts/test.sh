@@ -5,6 +5,7 @@
 #   native   — native build (warnings are errors) + ctest (GoogleTest suite + CLI contract)
 #   wasm     — WASM build + ctest running the same GoogleTest sources under Node
 #   sanitize — the native suite again under AddressSanitizer + UndefinedBehaviorSanitizer
+#   tsan     — the threaded loops' tests (tests/core/threads_test.cpp) under ThreadSanitizer
 #   fuzz     — every libFuzzer harness (tests/fuzz): its saved regression inputs, then a smoke run of
 #              FUZZ_SECONDS (default 30) seconds each with libFuzzer seed FUZZ_SEED (default 1, so
 #              every run starts from the same inputs); one result per harness
@@ -12,7 +13,7 @@
 #   browser  — the page in headless Chromium (tests/e2e)
 # Exits non-zero if any layer fails. Set LAYERS="native wasm" to run a subset.
 source "$(dirname "$0")/common.sh"
-LAYERS="${LAYERS:-lint native wasm sanitize fuzz js browser}"
+LAYERS="${LAYERS:-lint native wasm sanitize tsan fuzz js browser}"
 LOG_DIR="$ROOT/build/test-logs"
 mkdir -p "$LOG_DIR"
 
@@ -53,7 +54,7 @@ run_layer() {  # name command... ; output to console and log; sets LAST_RC
 for layer in $LAYERS; do
   t=$(now_ms)
   case "$layer" in
-    native|wasm|sanitize)
+    native|wasm|sanitize|tsan)
       run_layer "$layer-build" bash scripts/build.sh "$layer"
       if [ "$LAST_RC" -ne 0 ]; then record "$layer" 0 1 "$(elapsed "$t")"; continue; fi
       echo "$layer build: $(elapsed "$t") s"
