@@ -23,6 +23,7 @@ useBrowser({ onExit: removeBigGrid });
 // After useBrowser: their tests use the shared browser.
 await import('./camera.tests.mjs');
 await import('./options.tests.mjs');
+await import('./threads.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
