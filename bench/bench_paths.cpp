@@ -1,15 +1,19 @@
 // Benchmark: straightest paths from the default source to every boundary vertex on generated height
 // fields (the mountain relief at 10k, 100k and 1M vertices). Prints a table; never pass/fail.
 // The same source builds natively and to WASM (run under Node), so the two columns are comparable.
+//   bench_paths [TARGET] [REPEATS] [--threads N,N,...]   one row per thread count (default: every core),
+//   the counts measured in turn within each repeat so that the machine's load weighs on them alike.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
+#include "straightest/threads.hpp"
 
 using namespace straightest;
 using Clock = std::chrono::steady_clock;
@@ -18,14 +22,31 @@ static double ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
+/// "1,2" → {1, 2}; 0 = every core.
+static std::vector<int> threadCounts(const std::string& list) {
+  std::vector<int> counts;
+  for (size_t at = 0; at <= list.size();) {
+    const size_t comma = std::min(list.find(',', at), list.size());
+    counts.push_back(std::max(0, std::atoi(list.substr(at, comma - at).c_str())));
+    at = comma + 1;
+  }
+  return counts;
+}
+
 int main(int argc, char** argv) {
-  const char* target = argc > 1 ? argv[1] : "native";
-  const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
+  std::vector<const char*> positional;
+  std::vector<int> counts = {0};
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--threads" && i + 1 < argc) counts = threadCounts(argv[++i]);
+    else positional.push_back(argv[i]);
+  }
+  const char* target = positional.size() > 0 ? positional[0] : "native";
+  const int repeats = positional.size() > 1 ? std::max(1, std::atoi(positional[1])) : 5;
   std::printf(
-      "| target | vertices | boundary paths | reached | faces crossed | build ms | source ms | trace ms (median of %d) "
-      "| M faces/s |\n",
+      "| target | threads | vertices | boundary paths | reached | faces crossed | build ms | source ms | trace ms "
+      "(median of %d) | M faces/s |\n",
       repeats);
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : {100, 317, 1000}) {
     const auto t0 = Clock::now();
     const TriMesh mesh = makeHeightField(n);
@@ -33,22 +54,29 @@ int main(int argc, char** argv) {
     const int32_t source = defaultSource(mesh).value();
     const auto t2 = Clock::now();
     const auto targets = boundaryTargets(mesh);
-    std::vector<double> traceMs;
+    std::vector<std::vector<double>> traceMs(counts.size());
     int64_t crossed = 0, reached = 0;
     for (int r = 0; r < repeats; ++r) {
-      Timings timings;
-      const PathBatch batch =
-          traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets, TraceOptions{false, 0, &timings}).value();
-      traceMs.push_back(timings["trace"]);
-      crossed = 0;
-      for (int64_t c : batch.facesCrossed) crossed += c;
-      reached = summarize(batch).reached;
+      for (size_t c = 0; c < counts.size(); ++c) {
+        setThreadCount(counts[c]);
+        Timings timings;
+        const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), targets,
+                                                      TraceOptions{false, 0, &timings})
+                                    .value();
+        traceMs[c].push_back(timings["trace"]);
+        crossed = 0;
+        for (int64_t f : batch.facesCrossed) crossed += f;
+        reached = summarize(batch).reached;
+      }
     }
-    std::sort(traceMs.begin(), traceMs.end());
-    const double median = traceMs[traceMs.size() / 2];
-    std::printf("| %s | %d | %zu | %lld | %lld | %.0f | %.0f | %.2f | %.1f |\n", target, mesh.numVertices(),
-                targets.size(), static_cast<long long>(reached), static_cast<long long>(crossed), ms(t0, t1),
-                ms(t1, t2), median, crossed / median / 1000.0);
+    for (size_t c = 0; c < counts.size(); ++c) {
+      std::sort(traceMs[c].begin(), traceMs[c].end());
+      const double median = traceMs[c][traceMs[c].size() / 2];
+      setThreadCount(counts[c]);
+      std::printf("| %s | %d | %d | %zu | %lld | %lld | %.0f | %.0f | %.2f | %.1f |\n", target, threadCount(),
+                  mesh.numVertices(), targets.size(), static_cast<long long>(reached), static_cast<long long>(crossed),
+                  ms(t0, t1), ms(t1, t2), median, crossed / median / 1000.0);
+    }
   }
   return 0;
 }

@@ -4,7 +4,10 @@
 // of `repeats` runs per stage and the process's peak memory. Built natively and to WASM from this one
 // source so scripts/bench.mjs can put the two side by side (the refinement runs the same iterations
 // in both: compare per run, or per iteration with free_iterations). Never pass/fail.
-//   bench_stages TARGET MESH [REPEATS] [MAX_ITERATIONS]     MESH: a file, heightfield:N or sample:NAME
+//   bench_stages TARGET MESH [REPEATS] [MAX_ITERATIONS] [--threads N,N,...]
+//   MESH: a file, heightfield:N or sample:NAME. --threads: one JSON line per thread count (default: one,
+//   every core; 1 = the single-threaded path), the counts run in turn within each repeat so that the
+//   machine's load weighs on them alike.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -18,6 +21,7 @@
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
+#include "straightest/threads.hpp"
 
 #ifdef __EMSCRIPTEN__
 #include <emscripten/heap.h>
@@ -44,22 +48,42 @@ static Expected<TriMesh> open(const std::string& spec) {
   return loadMeshFile(spec);
 }
 
-int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_stages TARGET MESH [REPEATS] [MAX_ITERATIONS]\n");
-    return 2;
+/// "1,2" → {1, 2}; 0 = every core.
+static std::vector<int> threadCounts(const std::string& list) {
+  std::vector<int> counts;
+  for (size_t at = 0; at <= list.size();) {
+    const size_t comma = std::min(list.find(',', at), list.size());
+    counts.push_back(std::max(0, std::atoi(list.substr(at, comma - at).c_str())));
+    at = comma + 1;
   }
-  const std::string target = argv[1], spec = argv[2];
-  const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
-  FreeBoundaryOptions free;
-  if (argc > 4) free.maxIterations = std::max(1, std::atoi(argv[4]));
-  double freeL2 = 0;
+  return counts;
+}
+
+/// What one thread count measured: each stage's times and the results they gave.
+struct Measured {
+  double freeL2 = 0, l2 = 0;
   int32_t freeIterations = 0;
-  bool freeBijective = false;
+  bool freeBijective = false, bijective = false;
   std::map<std::string, std::vector<double>> stage;
   int64_t vertices = 0, faces = 0, paths = 0, reached = 0, crossed = 0;
-  double l2 = 0;
-  bool bijective = false;
+};
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args;
+  std::vector<int> counts = {0};
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--threads" && i + 1 < argc) counts = threadCounts(argv[++i]);
+    else args.push_back(argv[i]);
+  }
+  if (args.size() < 2) {
+    std::fprintf(stderr, "usage: bench_stages TARGET MESH [REPEATS] [MAX_ITERATIONS] [--threads N,N,...]\n");
+    return 2;
+  }
+  const std::string target = args[0], spec = args[1];
+  const int repeats = args.size() > 2 ? std::max(1, std::atoi(args[2].c_str())) : 3;
+  FreeBoundaryOptions free;
+  if (args.size() > 3) free.maxIterations = std::max(1, std::atoi(args[3].c_str()));
+  std::vector<Measured> measured(counts.size());
   // Warm-up runs first, not counted: for at least 1.5 s (at least one run). They warm caches and, in
   // WASM, let the engine tier every hot function up from its baseline compiler to the optimizing one
   // (V8 does that in the background, by call counts: one short warm-up run left small meshes measured
@@ -67,88 +91,96 @@ int main(int argc, char** argv) {
   int warmups = 0;
   const auto warmStart = Clock::now();
   for (int r = -1; r < repeats; ++r) {
-    auto t = Clock::now();
-    auto loaded = open(spec);
-    if (!loaded) {
-      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
-                  loaded.error().message.c_str());
-      return 2;
+    for (size_t c = 0; c < counts.size(); ++c) {
+      setThreadCount(counts[c]);
+      Measured& m = measured[c];
+      std::map<std::string, std::vector<double>>& stage = m.stage;
+      auto t = Clock::now();
+      auto loaded = open(spec);
+      if (!loaded) {
+        std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                    loaded.error().message.c_str());
+        return 2;
+      }
+      const TriMesh mesh = std::move(loaded).value();
+      const double loadMs = msSince(t);
+      if (r >= 0) stage["load"].push_back(loadMs);
+      m.vertices = mesh.numVertices();
+      m.faces = mesh.numFaces();
+      t = Clock::now();
+      const int32_t source = defaultSource(mesh).value();
+      const double sourceMs = msSince(t);
+      t = Clock::now();
+      const BasePlane base = basePlane(mesh, SurfacePoint::vertex(source));
+      const double baseMs = msSince(t);
+      (void)base;
+      Timings traceTimings;
+      const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh),
+                                                    TraceOptions{false, 0, &traceTimings})
+                                  .value();
+      if (r >= 0) {
+        stage["source"].push_back(sourceMs);
+        stage["base_plane"].push_back(baseMs);
+        stage["traces"].push_back(traceTimings["prepare"] + traceTimings["trace"]);
+      }
+      m.paths = static_cast<int64_t>(batch.status.size());
+      m.reached = summarize(batch).reached;
+      m.crossed = 0;
+      for (int64_t f : batch.facesCrossed) m.crossed += f;
+      ParamOptions options;
+      options.source = SurfacePoint::vertex(source);
+      Timings pt;
+      options.timings = &pt;
+      const auto p = parameterize(mesh, options);
+      if (!p) {
+        std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                    p.error().message.c_str());
+        return 2;
+      }
+      m.l2 = p.value().metrics.l2;
+      m.bijective = p.value().metrics.bijective;
+      // The free boundary from this map (parameterize with boundary free does the same when it is bijective).
+      Timings ft;
+      const auto refined = refineParameterization(mesh, p.value(), free, {}, &ft);
+      if (!refined) {
+        std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
+                    refined.error().message.c_str());
+        return 2;
+      }
+      m.freeL2 = refined.value().metrics.l2;
+      m.freeIterations = refined.value().iterations;
+      m.freeBijective = refined.value().metrics.bijective;
+      if (r < 0) continue;
+      stage["boundary"].push_back(pt["boundary"]);
+      stage["weights"].push_back(pt["weights"]);
+      stage["solve"].push_back(pt["solve"]);
+      stage["metrics"].push_back(pt["metrics"]);
+      stage["param_total"].push_back(pt["total"]);
+      stage["refine"].push_back(ft["refine"]);
+      stage["refine_metrics"].push_back(ft["metrics"]);
     }
-    const TriMesh mesh = std::move(loaded).value();
-    const double loadMs = msSince(t);
-    if (r >= 0) stage["load"].push_back(loadMs);
-    vertices = mesh.numVertices();
-    faces = mesh.numFaces();
-    t = Clock::now();
-    const int32_t source = defaultSource(mesh).value();
-    const double sourceMs = msSince(t);
-    t = Clock::now();
-    const BasePlane base = basePlane(mesh, SurfacePoint::vertex(source));
-    const double baseMs = msSince(t);
-    (void)base;
-    Timings traceTimings;
-    const PathBatch batch = traceStraightestPaths(mesh, SurfacePoint::vertex(source), boundaryTargets(mesh),
-                                                  TraceOptions{false, 0, &traceTimings})
-                                .value();
-    if (r >= 0) {
-      stage["source"].push_back(sourceMs);
-      stage["base_plane"].push_back(baseMs);
-      stage["traces"].push_back(traceTimings["prepare"] + traceTimings["trace"]);
-    }
-    paths = static_cast<int64_t>(batch.status.size());
-    reached = summarize(batch).reached;
-    crossed = 0;
-    for (int64_t c : batch.facesCrossed) crossed += c;
-    ParamOptions options;
-    options.source = SurfacePoint::vertex(source);
-    Timings pt;
-    options.timings = &pt;
-    const auto p = parameterize(mesh, options);
-    if (!p) {
-      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
-                  p.error().message.c_str());
-      return 2;
-    }
-    l2 = p.value().metrics.l2;
-    bijective = p.value().metrics.bijective;
-    // The free boundary from this map (parameterize with boundary free does the same when it is bijective).
-    Timings ft;
-    const auto refined = refineParameterization(mesh, p.value(), free, {}, &ft);
-    if (!refined) {
-      std::printf("{\"target\":\"%s\",\"mesh\":\"%s\",\"error\":\"%s\"}\n", target.c_str(), spec.c_str(),
-                  refined.error().message.c_str());
-      return 2;
-    }
-    freeL2 = refined.value().metrics.l2;
-    freeIterations = refined.value().iterations;
-    freeBijective = refined.value().metrics.bijective;
-    if (r < 0) {
-      if (++warmups < 200 && msSince(warmStart) < 1500) --r;  // stay in the warm-up
-      continue;
-    }
-    stage["boundary"].push_back(pt["boundary"]);
-    stage["weights"].push_back(pt["weights"]);
-    stage["solve"].push_back(pt["solve"]);
-    stage["metrics"].push_back(pt["metrics"]);
-    stage["param_total"].push_back(pt["total"]);
-    stage["refine"].push_back(ft["refine"]);
-    stage["refine_metrics"].push_back(ft["metrics"]);
+    if (r < 0 && ++warmups < 200 && msSince(warmStart) < 1500) --r;  // stay in the warm-up
   }
-  std::printf(
-      "{\"target\":\"%s\",\"mesh\":\"%s\",\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,\"paths\":%lld,"
-      "\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"free_l2\":%.6f,"
-      "\"free_bijective\":%s,\"free_iterations\":%d,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
-      target.c_str(), spec.c_str(), static_cast<long long>(vertices), static_cast<long long>(faces), repeats,
-      static_cast<long long>(paths), static_cast<long long>(reached), static_cast<long long>(crossed), l2,
-      bijective ? "true" : "false", freeL2, freeBijective ? "true" : "false", freeIterations, peakMemoryMB());
-  bool first = true;
-  for (const char* name : {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics",
-                           "param_total", "refine", "refine_metrics"}) {
-    std::vector<double>& v = stage[name];
-    std::sort(v.begin(), v.end());
-    std::printf("%s\"%s\":%.3f", first ? "" : ",", name, v[v.size() / 2]);
-    first = false;
+  for (size_t c = 0; c < counts.size(); ++c) {
+    Measured& m = measured[c];
+    setThreadCount(counts[c]);
+    std::printf(
+        "{\"target\":\"%s\",\"mesh\":\"%s\",\"threads\":%d,\"vertices\":%lld,\"faces\":%lld,\"repeats\":%d,"
+        "\"paths\":%lld,\"reached\":%lld,\"faces_crossed\":%lld,\"l2\":%.6f,\"bijective\":%s,\"free_l2\":%.6f,"
+        "\"free_bijective\":%s,\"free_iterations\":%d,\"peak_memory_mb\":%.1f,\"stages_ms\":{",
+        target.c_str(), spec.c_str(), threadCount(), static_cast<long long>(m.vertices),
+        static_cast<long long>(m.faces), repeats, static_cast<long long>(m.paths), static_cast<long long>(m.reached),
+        static_cast<long long>(m.crossed), m.l2, m.bijective ? "true" : "false", m.freeL2,
+        m.freeBijective ? "true" : "false", m.freeIterations, peakMemoryMB());
+    bool first = true;
+    for (const char* name : {"load", "source", "base_plane", "traces", "boundary", "weights", "solve", "metrics",
+                             "param_total", "refine", "refine_metrics"}) {
+      std::vector<double>& v = m.stage[name];
+      std::sort(v.begin(), v.end());
+      std::printf("%s\"%s\":%.3f", first ? "" : ",", name, v[v.size() / 2]);
+      first = false;
+    }
+    std::printf("}}\n");
   }
-  std::printf("}}\n");
   return 0;
 }

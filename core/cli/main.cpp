@@ -26,6 +26,7 @@
 #include "straightest/result_fields.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
+#include "straightest/threads.hpp"
 
 using namespace straightest;
 using straightest::cli::json;
@@ -99,6 +100,7 @@ std::string usage() {
          "  --json-errors    report errors as {\"error\": ..., \"category\": ...} on stdout\n"
          "  --max-vertices N, --max-faces N   refuse larger meshes (defaults 50M / 100M)\n"
          "  --progress       progress lines on stderr: STAGE PERCENT (param and paths)\n"
+         "  --threads N      threads to use (default: every core; 1 = the single-threaded path)\n"
          "  -h, --help       this text\n"
          "\n"
          "exit codes: 0 success, 2 bad input or usage, 1 internal error\n";
@@ -114,6 +116,7 @@ struct Options {
   bool toGiven = false;  // shoot / distances:
   std::string method = "exact", direction, toward;
   std::optional<double> length;
+  int threads = 0;  // 0: every hardware thread
 };
 
 struct UsageError {
@@ -189,6 +192,8 @@ Options parseArgs(int argc, char** argv) {
           std::min<int64_t>(parseCount(a, value()), std::numeric_limits<int32_t>::max()));
     else if (a == "--time-budget-ms") o.free.timeBudgetMs = parsePositive(a, value());
     else if (a == "--progress") o.progress = true;
+    else if (a == "--threads")
+      o.threads = static_cast<int>(std::min<int64_t>(parseCount(a, value()), std::numeric_limits<int>::max()));
     else if (a == "-o" || a == "--output") o.output = value();
     else if (a == "-h" || a == "--help") o.command = "help";
     else if (a.size() > 1 && a[0] == '-') throw UsageError{"unknown option '" + a + "'"};
@@ -457,6 +462,7 @@ int main(int argc, char** argv) {
     std::cout << usage();
     return 0;
   }
+  setThreadCount(o.threads);
   Expected<int> exitCode = guarded([&]() -> Expected<int> {
     const Stopwatch load;
     auto mesh = openMesh(o);

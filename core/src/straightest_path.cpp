@@ -9,6 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
+
+#include "parallel_for.hpp"
 
 namespace straightest {
 
@@ -511,45 +515,76 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
                                           const Progress& progress) {
   Stopwatch time;
   PathBatch batch;
-  StraightestPathTracer tracer(mesh, source, options);
+  // A tracer keeps per-walk state: each thread takes its own from this stack (a walk's result does not
+  // depend on the walks its tracer made before), so at most threadCount() tracers ever exist.
+  std::mutex idleMutex;
+  std::vector<std::unique_ptr<StraightestPathTracer>> idle;
+  idle.push_back(std::make_unique<StraightestPathTracer>(mesh, source, options));
   batch.source = source;
-  batch.base = tracer.base();
+  batch.base = idle.back()->base();
   batch.targets = std::move(targets);
   const size_t n = batch.targets.size();
-  batch.targetPositions.reserve(n);
-  batch.status.reserve(n);
-  batch.length.reserve(n);
-  batch.facesCrossed.reserve(n);
-  batch.reversed.reserve(n);
-  batch.otherArcLength.reserve(n);
-  batch.directions.reserve(n);
-  batch.offsets.reserve(n + 1);
-  batch.offsets.push_back(0);
-  batch.otherOffsets.reserve(n + 1);
-  batch.otherOffsets.push_back(0);
+  batch.targetPositions.resize(n);
+  batch.status.resize(n);
+  batch.length.resize(n);
+  batch.facesCrossed.resize(n);
+  batch.reversed.resize(n);
+  batch.otherArcLength.resize(n);
+  batch.directions.resize(n);
+  // Targets in chunks: the per-target values go straight to their slots; the points of each chunk to
+  // its own buffer, joined in target order at the end (the batch is the same for any thread count).
+  constexpr size_t kTargetsPerChunk = 8;  // small: progress moves by chunks
+  const size_t chunks = detail::chunkCount(n, kTargetsPerChunk);
+  std::vector<std::vector<Vec3>> chunkPoints(chunks), chunkOtherPoints(chunks);
+  std::vector<int64_t> pointCount(n), otherPointCount(n);
   record(options.timings, "prepare", time.lap());
-  const size_t step = std::max<size_t>(1, n / 100);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (size_t i = 0; i < n; ++i) {
-    if (i % step == 0 && !report(progress, "trace", static_cast<double>(i) / n))
-      return cancelledError("straightest paths");
-    const StraightestPath& path = tracer.trace(batch.targets[i]);
-    batch.status.push_back(path.status);
-    batch.length.push_back(path.length);
-    batch.facesCrossed.push_back(path.facesCrossed);
-    batch.reversed.push_back(path.reversed);
-    batch.otherArcLength.push_back(path.otherArcLength);
-    const Vec3 D = position(mesh, batch.targets[i]);
-    batch.targetPositions.push_back(D);
-    const auto direction = inPlaneDirection(batch.base, D);
-    batch.directions.push_back(direction ? *direction : Vec3{nan, nan, nan});
-    batch.points.insert(batch.points.end(), path.positions.begin(), path.positions.end());
-    batch.offsets.push_back(static_cast<int64_t>(batch.points.size()));
-    batch.otherPoints.insert(batch.otherPoints.end(), path.otherPositions.begin(), path.otherPositions.end());
-    batch.otherOffsets.push_back(static_cast<int64_t>(batch.otherPoints.size()));
-  }
+  auto traceChunk = [&](size_t chunk, size_t begin, size_t end) {
+    std::unique_ptr<StraightestPathTracer> tracer;
+    {
+      std::lock_guard<std::mutex> lock(idleMutex);
+      if (!idle.empty()) {
+        tracer = std::move(idle.back());
+        idle.pop_back();
+      }
+    }
+    if (!tracer) tracer = std::make_unique<StraightestPathTracer>(mesh, source, options);
+    for (size_t i = begin; i < end; ++i) {
+      const StraightestPath& path = tracer->trace(batch.targets[i]);
+      batch.status[i] = path.status;
+      batch.length[i] = path.length;
+      batch.facesCrossed[i] = path.facesCrossed;
+      batch.reversed[i] = path.reversed;
+      batch.otherArcLength[i] = path.otherArcLength;
+      const Vec3 D = position(mesh, batch.targets[i]);
+      batch.targetPositions[i] = D;
+      const auto direction = inPlaneDirection(batch.base, D);
+      batch.directions[i] = direction ? *direction : Vec3{nan, nan, nan};
+      chunkPoints[chunk].insert(chunkPoints[chunk].end(), path.positions.begin(), path.positions.end());
+      pointCount[i] = static_cast<int64_t>(path.positions.size());
+      chunkOtherPoints[chunk].insert(chunkOtherPoints[chunk].end(), path.otherPositions.begin(),
+                                     path.otherPositions.end());
+      otherPointCount[i] = static_cast<int64_t>(path.otherPositions.size());
+    }
+    std::lock_guard<std::mutex> lock(idleMutex);
+    idle.push_back(std::move(tracer));
+  };
+  if (!detail::parallelFor(n, kTargetsPerChunk, traceChunk, progress, "trace"))
+    return cancelledError("straightest paths");
+  auto join = [n](std::vector<std::vector<Vec3>>& parts, const std::vector<int64_t>& counts, std::vector<Vec3>& points,
+                  std::vector<int64_t>& offsets) {
+    offsets.resize(n + 1);
+    offsets[0] = 0;
+    for (size_t i = 0; i < n; ++i) offsets[i + 1] = offsets[i] + counts[i];
+    points.reserve(static_cast<size_t>(offsets[n]));
+    for (std::vector<Vec3>& part : parts) {
+      points.insert(points.end(), part.begin(), part.end());
+      std::vector<Vec3>().swap(part);
+    }
+  };
+  join(chunkPoints, pointCount, batch.points, batch.offsets);
+  join(chunkOtherPoints, otherPointCount, batch.otherPoints, batch.otherOffsets);
   record(options.timings, "trace", time.lap());
-  report(progress, "trace", 1.0);
   return batch;
 }
 

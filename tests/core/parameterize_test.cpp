@@ -8,6 +8,7 @@
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
+#include "straightest/threads.hpp"
 #include "test_meshes.hpp"
 #include "test_util.hpp"
 
@@ -445,8 +446,12 @@ TEST(Progress, ParameterizationReportsEveryStageAndCanBeCancelled) {
 TEST(Progress, CancellingATraceBatchIsACancelledErrorAtTheNextCheck) {
   const TriMesh mesh = makeHeightField(40);
   int calls = 0;
+  // One thread: with more, how many checks the calling thread makes depends on how the chunks were
+  // shared (threads_test.cpp specifies the threaded cancel).
+  setThreadCount(1);
   auto batch = traceStraightestPaths(mesh, SurfacePoint::vertex(defaultSource(mesh).value()), boundaryTargets(mesh),
                                      TraceOptions{false}, [&](const char*, double) { return ++calls < 10; });
+  setThreadCount(0);
   ASSERT_FALSE(batch.ok());
   EXPECT_EQ(batch.error().code, ErrorCode::Cancelled);
   EXPECT_EQ(calls, 10);  // stopped at the check that said no, not later

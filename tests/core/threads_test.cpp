@@ -1,0 +1,290 @@
+// The threaded loops (threads.hpp): traces to many targets, interior weights, stretch metrics and a
+// whole parameterization give bit-identical results with 1, 2 and 4 threads; progress is monotone and
+// reported on the calling thread only; a cancelled threaded trace returns Cancelled and leaves the pool
+// usable.
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../../core/src/parallel_for.hpp"
+
+#include "straightest/geodesic_distance.hpp"
+#include "straightest/interior_weights.hpp"
+#include "straightest/parameterize.hpp"
+#include "straightest/samples.hpp"
+#include "straightest/straightest_path.hpp"
+#include "straightest/texture_stretch.hpp"
+#include "straightest/threads.hpp"
+
+namespace straightest {
+namespace {
+
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+constexpr bool kThreads = false;  // a WebAssembly build without pthreads: always one thread
+#else
+constexpr bool kThreads = true;
+#endif
+
+/// Sets the process-wide thread count for one scope, then restores the default.
+struct ThreadCountScope {
+  explicit ThreadCountScope(int count) { setThreadCount(count); }
+  ~ThreadCountScope() { setThreadCount(0); }
+};
+
+/// Equal bit for bit (NaN included, which == would call different).
+template <class T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Runs `compute` with 1, 2 and 4 threads and checks every result against the first with `same`.
+template <class Compute, class Same>
+void expectSameForThreadCounts(Compute compute, Same same) {
+  std::vector<decltype(compute())> results;
+  for (int threads : {1, 2, 4}) {
+    const ThreadCountScope scope(threads);
+    results.push_back(compute());
+  }
+  for (size_t k = 1; k < results.size(); ++k) same(results[0], results[k]);
+}
+
+void expectSameBatch(const PathBatch& a, const PathBatch& b) {
+  EXPECT_TRUE(sameBits(a.targetPositions, b.targetPositions));
+  EXPECT_TRUE(sameBits(a.status, b.status));
+  EXPECT_TRUE(sameBits(a.length, b.length));
+  EXPECT_TRUE(sameBits(a.facesCrossed, b.facesCrossed));
+  EXPECT_TRUE(sameBits(a.reversed, b.reversed));
+  EXPECT_TRUE(sameBits(a.otherArcLength, b.otherArcLength));
+  EXPECT_TRUE(sameBits(a.directions, b.directions));
+  EXPECT_TRUE(sameBits(a.points, b.points));
+  EXPECT_TRUE(sameBits(a.offsets, b.offsets));
+  EXPECT_TRUE(sameBits(a.otherPoints, b.otherPoints));
+  EXPECT_TRUE(sameBits(a.otherOffsets, b.otherOffsets));
+}
+
+PathBatch traceAll(const TriMesh& mesh, std::vector<TargetSpec> specs, bool keepPoints, const Progress& progress = {}) {
+  const SurfacePoint source = SurfacePoint::vertex(defaultSource(mesh).value());
+  auto targets = resolveTargets(mesh, specs);
+  EXPECT_TRUE(targets.ok());
+  auto batch = traceStraightestPaths(mesh, source, targets.value(), TraceOptions{keepPoints}, progress);
+  EXPECT_TRUE(batch.ok());
+  return batch ? std::move(batch).value() : PathBatch{};
+}
+
+TEST(Threads, CountIsProcessWideWithZeroForEveryCore) {
+  const ThreadCountScope scope(3);
+  EXPECT_EQ(threadCount(), kThreads ? 3 : 1);
+  setThreadCount(0);
+  EXPECT_EQ(threadCount(), hardwareThreads());
+  setThreadCount(-5);
+  EXPECT_EQ(threadCount(), hardwareThreads());
+  setThreadCount(1000);
+  EXPECT_EQ(threadCount(), kThreads ? 64 : 1);
+  EXPECT_GE(hardwareThreads(), 1);
+  if (!kThreads) {
+    EXPECT_EQ(hardwareThreads(), 1);
+  }
+}
+
+TEST(Threads, ParallelForRunsEveryChunkOnceWithItsOwnRange) {
+  for (int threads : {1, 2, 4}) {
+    const ThreadCountScope scope(threads);
+    const size_t count = 1003, grain = 10;  // 101 chunks, the last one of 3
+    std::vector<int> runs(detail::chunkCount(count, grain), 0);
+    std::vector<int> covered(count, 0);
+    const bool done = detail::parallelFor(count, grain, [&](size_t chunk, size_t begin, size_t end) {
+      ++runs[chunk];
+      EXPECT_EQ(begin, chunk * grain);
+      EXPECT_EQ(end, std::min(count, begin + grain));
+      for (size_t i = begin; i < end; ++i) ++covered[i];
+    });
+    EXPECT_TRUE(done);
+    EXPECT_EQ(runs, std::vector<int>(runs.size(), 1));
+    EXPECT_EQ(covered, std::vector<int>(count, 1));
+    EXPECT_TRUE(detail::parallelFor(0, grain, [](size_t, size_t, size_t) { ADD_FAILURE(); }));
+  }
+}
+
+TEST(Threads, NestedLoopsRunAndExceptionsReachTheCaller) {
+  const ThreadCountScope scope(kThreads ? 3 : 1);
+  // A loop inside a chunk (on a worker or on the calling thread) runs serially there.
+  std::vector<long> sums(40, 0);
+  detail::parallelFor(sums.size(), 1, [&](size_t chunk, size_t, size_t) {
+    detail::parallelFor(100, 7, [&](size_t, size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) sums[chunk] += static_cast<long>(i);
+    });
+  });
+  EXPECT_EQ(sums, std::vector<long>(sums.size(), 4950));
+  // A chunk that throws: the exception comes out of parallelFor on the calling thread, and the pool
+  // runs the next loop in full.
+  std::atomic<int> ran{0};
+  EXPECT_THROW(detail::parallelFor(64, 1,
+                                   [&](size_t chunk, size_t, size_t) {
+                                     ++ran;
+                                     if (chunk == 5) throw std::runtime_error("chunk 5");
+                                   }),
+               std::runtime_error);
+  EXPECT_GE(ran.load(), 6);
+  ran = 0;
+  EXPECT_TRUE(detail::parallelFor(64, 1, [&](size_t, size_t, size_t) { ++ran; }));
+  EXPECT_EQ(ran.load(), 64);
+}
+
+TEST(Threads, PathBatchesAreBitIdentical) {
+  // All boundaries of a relief with holes (several loops), the whole boundary of a saddle with points,
+  // and every vertex of a closed sphere (both arcs walked, other arcs kept).
+  const TriMesh holes = makeSample("holes").value();
+  const TriMesh saddle = makeSample("saddle").value();
+  const TriMesh sphere = makeSample("sphere").value();
+  const TriMesh relief = makeHeightField(150);
+  std::vector<TargetSpec> everyVertex;
+  for (int32_t v = 0; v < sphere.numVertices(); ++v) everyVertex.push_back(SurfacePoint::vertex(v));
+  struct Case {
+    const TriMesh* mesh;
+    std::vector<TargetSpec> targets;
+    bool keepPoints;
+  };
+  const std::vector<Case> cases = {{&holes, {AllBoundaryVertices{}}, true},
+                                   {&saddle, {BoundaryVertices{}}, true},
+                                   {&relief, {AllBoundaryVertices{}}, false},
+                                   {&sphere, everyVertex, true}};
+  for (const Case& c : cases) {
+    expectSameForThreadCounts([&] { return traceAll(*c.mesh, c.targets, c.keepPoints); },
+                              [](const PathBatch& a, const PathBatch& b) { expectSameBatch(a, b); });
+  }
+  // Not vacuous: the relief's traces reach their targets, over many chunks of targets.
+  const PathBatch batch = traceAll(relief, {AllBoundaryVertices{}}, false);
+  EXPECT_GT(batch.status.size(), 500u);
+  EXPECT_EQ(summarize(batch).reached, static_cast<int64_t>(batch.status.size()));
+}
+
+TEST(Threads, InteriorWeightsAreBitIdentical) {
+  const TriMesh mesh = makeHeightField(150);  // 22500 vertices: several chunks of rows
+  for (WeightKind kind : {WeightKind::Uniform, WeightKind::ShapePreserving, WeightKind::MeanValue, WeightKind::Cotan}) {
+    expectSameForThreadCounts([&] { return interiorWeights(mesh, kind); },
+                              [](const InteriorWeights& a, const InteriorWeights& b) {
+                                EXPECT_TRUE(sameBits(a.rows, b.rows));
+                                EXPECT_TRUE(sameBits(a.weights.start, b.weights.start));
+                                EXPECT_TRUE(sameBits(a.weights.col, b.weights.col));
+                                EXPECT_TRUE(sameBits(a.weights.value, b.weights.value));
+                                EXPECT_EQ(a.uniformFallbacks, b.uniformFallbacks);
+                              });
+  }
+  // Each row is a convex combination of the vertex's ring (shape-preserving weights on a relief).
+  const InteriorWeights W = interiorWeights(mesh, WeightKind::ShapePreserving);
+  EXPECT_EQ(W.weights.rows, static_cast<int32_t>(W.rows.size()));
+  for (int32_t r = 0; r < W.weights.rows; ++r) {
+    double sum = 0;
+    for (int32_t k = W.weights.start[r]; k < W.weights.start[r + 1]; ++k) sum += W.weights.value[k];
+    ASSERT_NEAR(sum, 1, 1e-12);
+  }
+}
+
+TEST(Threads, StretchMetricsAreBitIdentical) {
+  const TriMesh mesh = makeHeightField(150);  // 44402 faces: several chunks of faces
+  std::vector<Vec2> uv;
+  for (const Vec3& p : mesh.positions()) uv.push_back({p.x + 0.3 * p.y * p.y, p.y});  // sheared, not isometric
+  std::vector<Vec2> folded = uv;
+  folded[mesh.numVertices() / 2 + 10] = {-5, -5};  // folds a few faces
+  for (const auto* map : {&uv, &folded}) {
+    expectSameForThreadCounts([&] { return textureStretch(mesh, *map); },
+                              [](const StretchMetrics& a, const StretchMetrics& b) {
+                                EXPECT_TRUE(sameBits(a.l2, b.l2));
+                                EXPECT_TRUE(sameBits(a.linf, b.linf));
+                                EXPECT_TRUE(sameBits(a.areaDistortionMean, b.areaDistortionMean));
+                                EXPECT_TRUE(sameBits(a.areaDistortionMax, b.areaDistortionMax));
+                                EXPECT_TRUE(sameBits(a.angleDistortionMean, b.angleDistortionMean));
+                                EXPECT_TRUE(sameBits(a.angleDistortionMax, b.angleDistortionMax));
+                                EXPECT_EQ(a.flipped, b.flipped);
+                                EXPECT_EQ(a.degenerate, b.degenerate);
+                                EXPECT_EQ(a.overlaps, b.overlaps);
+                                EXPECT_TRUE(sameBits(a.faceStretch, b.faceStretch));
+                              });
+  }
+  EXPECT_TRUE(textureStretch(mesh, uv).bijective);
+  EXPECT_GT(textureStretch(mesh, folded).flipped, 0);
+}
+
+TEST(Threads, WholeParameterizationsAreBitIdentical) {
+  const TriMesh relief = makeHeightField(120);
+  const TriMesh saddle = makeSample("saddle").value();
+  auto same = [](const Parameterization& a, const Parameterization& b) {
+    EXPECT_TRUE(sameBits(a.uv, b.uv));
+    EXPECT_TRUE(sameBits(a.boundaryPolygon, b.boundaryPolygon));
+    EXPECT_TRUE(sameBits(a.metrics.l2, b.metrics.l2));
+    EXPECT_TRUE(sameBits(a.metrics.faceStretch, b.metrics.faceStretch));
+    EXPECT_EQ(a.iterations, b.iterations);
+    EXPECT_EQ(a.boundary, b.boundary);
+  };
+  for (const auto& [mesh, boundary] :
+       {std::pair{&relief, std::optional{BoundaryKind::Measured}}, std::pair{&saddle, std::optional<BoundaryKind>{}}}) {
+    ParamOptions options;
+    options.boundary = boundary;
+    expectSameForThreadCounts(
+        [&] {
+          auto p = parameterize(*mesh, options);
+          EXPECT_TRUE(p.ok());
+          EXPECT_TRUE(p && p.value().metrics.bijective);
+          return p ? std::move(p).value() : Parameterization{};
+        },
+        same);
+  }
+}
+
+TEST(Threads, ProgressIsMonotoneAndOnTheCallingThread) {
+  const TriMesh mesh = makeHeightField(200);  // 796 targets: 25 chunks
+  for (int threads : {1, 2, 4}) {
+    const ThreadCountScope scope(threads);
+    std::mutex mutex;  // only needed if the contract were broken (a call from another thread)
+    std::vector<std::pair<std::thread::id, double>> calls;
+    const Progress progress([&](const char*, double fraction) {
+      std::lock_guard<std::mutex> lock(mutex);
+      calls.emplace_back(std::this_thread::get_id(), fraction);
+      return true;
+    });
+    traceAll(mesh, {AllBoundaryVertices{}}, false, progress);
+    ASSERT_GE(calls.size(), 2u);  // the start and the end at least
+    EXPECT_EQ(calls.front().second, 0.0);
+    EXPECT_EQ(calls.back().second, 1.0);
+    for (size_t k = 0; k < calls.size(); ++k) {
+      EXPECT_EQ(calls[k].first, std::this_thread::get_id());
+      if (k > 0) {
+        EXPECT_GE(calls[k].second, calls[k - 1].second);
+      }
+    }
+  }
+}
+
+TEST(Threads, CancelledThreadedTraceLeavesThePoolUsable) {
+  const TriMesh mesh = makeHeightField(200);
+  const PathBatch reference = [&] {
+    const ThreadCountScope scope(1);
+    return traceAll(mesh, {AllBoundaryVertices{}}, true);
+  }();
+  const ThreadCountScope scope(kThreads ? 4 : 1);
+  const SurfacePoint source = SurfacePoint::vertex(defaultSource(mesh).value());
+  const auto targets = resolveTargets(mesh, {AllBoundaryVertices{}}).value();
+  // Before any chunk, then at the next call: while chunks run, or at the end when the other threads
+  // took every chunk meanwhile (a cancel at 1.0 is a cancel too).
+  for (int cancelAtCall : {1, 2}) {
+    int calls = 0;
+    const Progress cancel([&](const char*, double) { return ++calls < cancelAtCall; });
+    const auto cancelled = traceStraightestPaths(mesh, source, targets, TraceOptions{}, cancel);
+    SCOPED_TRACE(::testing::Message() << "cancel at call " << cancelAtCall << ", calls " << calls);
+    ASSERT_FALSE(cancelled.ok());
+    EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled);
+    // The pool runs the next batch in full, as a single thread would.
+    expectSameBatch(reference, traceAll(mesh, {AllBoundaryVertices{}}, true));
+  }
+}
+
+}  // namespace
+}  // namespace straightest
