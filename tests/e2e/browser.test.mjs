@@ -589,6 +589,8 @@ function routeWorkerToTooLarge(context) {
     (url) => url.pathname === '/wasm/worker-entry.js' && url.search === '',
     (route) => route.fulfill({
       contentType: 'text/javascript',
+      // As the server's own responses: a worker script without COEP does not load in an isolated page.
+      headers: { 'Cross-Origin-Embedder-Policy': 'require-corp' },
       body: `import ${JSON.stringify(`data:text/javascript,${encodeURIComponent(prelude)}`)};\nimport './worker-entry.js?real';\n`,
     }),
   );
