@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Builds the native library, CLI and tests (build/native) and/or the WASM module and tests
 # (build/wasm), then copies the module into the npm package (wasm/dist); `sanitize` builds the native
-# tests with ASan + UBSan (build/sanitize); `module` builds only the WASM module the npm package ships
-# (npm run build:wasm: no tests, no benchmarks); `tsan` builds the threaded loops' tests with ThreadSanitizer
+# tests with ASan + UBSan (build/sanitize); `module` builds only the WASM modules the npm package ships
+# (npm run build:wasm, npm start: no tests, no benchmarks): the single-threaded one and the threaded one
+# (pthreads, in wasm/dist/threads/), which the page uses under npm start's server (cross-origin
+# isolated) and the package in Node; `tsan` builds the threaded loops' tests with ThreadSanitizer
 # (build/tsan). Usage: build.sh native|wasm|module|sanitize|tsan|all
 # The native build treats warnings as errors (STRAIGHTEST_WERROR): npm test and CI run through here, so a
 # new warning fails there instead of scrolling by; a hand-made `cmake --preset native` keeps them warnings.
@@ -22,9 +24,18 @@ if [ "$target" = tsan ]; then  # ThreadSanitizer: the core and the threaded loop
 fi
 if [ "$target" = wasm ] || [ "$target" = module ] || [ "$target" = all ]; then
   cmake --preset wasm >/dev/null
-  if [ "$target" = module ]; then cmake --build --preset wasm --target straightest_wasm; else cmake --build --preset wasm; fi
-  mkdir -p wasm/dist
+  if [ "$target" = module ]; then
+    cmake --build --preset wasm --target straightest_wasm straightest_wasm_threads
+  else
+    cmake --build --preset wasm
+  fi
+  mkdir -p wasm/dist/threads
   cp build/wasm/straightest-core.mjs build/wasm/straightest-core.wasm wasm/dist/
+  # The threaded module's pthread worker script is CommonJS (Node runs it with require): its directory
+  # says so, since the package's "type" is "module".
+  cp build/wasm/straightest-core-threads.mjs build/wasm/straightest-core-threads.wasm \
+    build/wasm/straightest-core-threads.worker.js wasm/dist/threads/
+  echo '{ "type": "commonjs" }' > wasm/dist/threads/package.json
   # straightest/inline's copy of the module, as base64 in an ES module
   node scripts/embed-wasm.mjs wasm/dist/straightest-core.wasm wasm/dist/straightest-core-embedded.js
 fi

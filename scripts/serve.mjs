@@ -1,7 +1,9 @@
 #!/usr/bin/env node
 // Static file server for the straightest web page: serves the repository root on 127.0.0.1 so the
 // page (/web/index.html), the npm package (/wasm/...) and three.js (/node_modules/three/...) share
-// one origin. No dependencies (node:http only). `/` redirects to /web/index.html.
+// one origin. No dependencies (node:http only). `/` redirects to /web/index.html. Every response
+// carries COOP/COEP (ISOLATION_HEADERS), so the page and its workers are cross-origin isolated and
+// share memory: the package then runs its threaded WebAssembly module.
 //
 //   node scripts/serve.mjs [--port N]      (or PORT=N; default 8080)
 //
@@ -38,8 +40,15 @@ function mimeType(filePath) {
   return MIME_TYPES[path.extname(filePath).toLowerCase()] ?? 'application/octet-stream';
 }
 
+// Cross-origin isolation (crossOriginIsolated, SharedArrayBuffer): this origin only, in windows and
+// in what it embeds; everything the page loads is same-origin, so nothing needs a CORP header.
+export const ISOLATION_HEADERS = {
+  'Cross-Origin-Opener-Policy': 'same-origin',
+  'Cross-Origin-Embedder-Policy': 'require-corp',
+};
+
 function send(res, status, body, headers = {}) {
-  res.writeHead(status, { 'Content-Type': 'text/plain; charset=utf-8', ...headers });
+  res.writeHead(status, { 'Content-Type': 'text/plain; charset=utf-8', ...ISOLATION_HEADERS, ...headers });
   res.end(body);
 }
 
@@ -67,7 +76,7 @@ function handle(root, req, res) {
   // Keep the raw path: `new URL` would silently collapse `..` segments, hiding traversal attempts.
   const rawPath = (req.url ?? '/').split(/[?#]/, 1)[0];
   if (rawPath === '/' || rawPath === '') {
-    res.writeHead(302, { Location: '/web/index.html' });
+    res.writeHead(302, { Location: '/web/index.html', ...ISOLATION_HEADERS });
     res.end();
     return;
   }
@@ -79,7 +88,7 @@ function handle(root, req, res) {
   fs.stat(filePath, (err, stat) => {
     if (!err && stat.isDirectory()) {
       if (!rawPath.endsWith('/')) {
-        res.writeHead(301, { Location: rawPath + '/' });
+        res.writeHead(301, { Location: rawPath + '/', ...ISOLATION_HEADERS });
         res.end();
         return;
       }
@@ -91,6 +100,7 @@ function handle(root, req, res) {
       return;
     }
     res.writeHead(200, {
+      ...ISOLATION_HEADERS,
       'Content-Type': mimeType(filePath),
       'Content-Length': stat.size,
       'Cache-Control': 'no-cache',

@@ -21,6 +21,7 @@
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
+#include "straightest/threads.hpp"
 
 using emscripten::val;
 using namespace straightest;
@@ -379,4 +380,7 @@ EMSCRIPTEN_BINDINGS(straightest) {
   emscripten::function("nameLists", &nameLists);
   emscripten::function("formatFromFileName", &formatOfFileName);
   emscripten::function("heapUsedBytes", &heapUsedBytes);
+  // The process-wide thread count (threads.hpp); in the single-threaded module it stays 1.
+  emscripten::function("setThreadCount", &setThreadCount);
+  emscripten::function("threadCount", &threadCount);
 }

@@ -517,6 +517,11 @@ export class Straightest {
   sampleNames(): string[];
   /** A built-in sample mesh; an unknown name throws 'invalid_argument'. */
   sample(name: SampleName): Mesh;
+  /**
+   * The threads the core runs on: 1 in the single-threaded module, else the count asked for (or every core).
+   * Assignable from 1 up to the count the module was loaded with; other values throw 'invalid_argument'.
+   */
+  threads: number;
   /** Bytes of WASM memory reserved (grows, never shrinks). */
   readonly memoryBytes: number;
   /** Bytes currently allocated inside WASM memory. */
@@ -545,13 +550,19 @@ export class Straightest {
   formatFromFileName(name: string): MeshFormat;
 }
 
-/** Where createStraightest gets the WebAssembly module (by default the .wasm next to the package's JS). */
+/** Which module createStraightest loads and where from (by default the .wasm files under wasm/dist/). */
 export interface CreateOptions {
-  /** URL of straightest-core.wasm when it is not served next to the module (bundlers, CDNs). */
+  /**
+   * Threads for the core (default 0: every core; capped at 64). More than one loads the threaded module
+   * where memory can be shared with workers (Node; pages and workers that are crossOriginIsolated), the
+   * single-threaded one elsewhere; 1 always loads the single-threaded one. Results do not depend on it.
+   */
+  threads?: number;
+  /** URL of straightest-core.wasm when it is not served next to the module; loads the single-threaded module. */
   wasmUrl?: string | URL;
-  /** Emscripten's locateFile hook. */
+  /** Emscripten's locateFile hook (name: 'straightest-core.wasm' or 'straightest-core-threads.wasm'). */
   locateFile?: (name: string, scriptDirectory: string) => string;
-  /** The .wasm bytes, to skip fetching. */
+  /** The single-threaded module's .wasm bytes, to skip fetching; loads that module. */
   wasmBinary?: ArrayBuffer | Uint8Array;
 }
 

@@ -3,9 +3,8 @@
 // out of WASM memory once, and meshes must be delete()d or `using`-disposed (a FinalizationRegistry
 // frees forgotten ones eventually). This file is the entry for browsers, bundlers and Node alike: it
 // imports nothing from Node.
-import createStraightestModule from './dist/straightest-core.mjs';
 import { StraightestError } from './straightest-error.js';
-import { checkWasm, readWasm, wasmLocation } from './load-wasm.js';
+import { startModule } from './load-module.js';
 
 export { StraightestError };
 
@@ -227,11 +226,13 @@ export class Mesh {
 export class Straightest {
   #module;
   #names;
+  #loadedThreads; // the threads the module was started for: its workers
 
   constructor(token, module) {
     if (token !== internal) throw new TypeError('Straightest has no public constructor: use await createStraightest()');
     this.#module = module;
     this.#names = module.nameLists();
+    this.#loadedThreads = module.threadCount();
   }
 
   /** The trace statuses, in the core's order: 'reached' is the only success. */
@@ -283,28 +284,43 @@ export class Straightest {
   /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face': disks; 'holes', 'sphere', 'torus'). */
   sample(name) { return new Mesh(internal, unwrap(this.#module.sample(String(name))).mesh); }
 
-  /** Bytes of WASM memory currently reserved (grows, never shrinks). */
-  get memoryBytes() { return this.#module.HEAPU8.length; }
+  /**
+   * How many threads the core runs on: 1 in the single-threaded module, the count asked for (or every
+   * core) in the threaded one.
+   */
+  get threads() { return this.#module.threadCount(); }
+
+  /**
+   * Changes the thread count for later calls, from 1 to the count the module was loaded with (its Web
+   * Workers are started at load time); anything else throws StraightestError 'invalid_argument'.
+   */
+  set threads(count) {
+    if (!Number.isInteger(count) || count < 1 || count > this.#loadedThreads) {
+      throw new StraightestError(`threads must be a whole number from 1 to ${this.#loadedThreads} (the count this module `
+        + `was loaded with), got ${count}`, 'invalid_argument');
+    }
+    this.#module.setThreadCount(count);
+  }
+
+  /** Bytes of WASM memory currently reserved (grows, never shrinks; shared memory may grow on any thread). */
+  get memoryBytes() { return (this.#module.wasmMemory?.buffer ?? this.#module.HEAPU8).byteLength; }
 
   /** Bytes currently allocated inside WASM memory (returns to its baseline when meshes are deleted). */
   get heapUsedBytes() { return this.#module.heapUsedBytes(); }
 }
 
 /**
- * Loads the WebAssembly module. Options: `wasmUrl` (where the .wasm is served, for bundlers and
- * CDNs), `locateFile(name, scriptDirectory)` (Emscripten's hook), or `wasmBinary` (the bytes
- * themselves). By default the .wasm next to this file (wasm/dist/), read from disk for a file: URL in
- * Node (also under jsdom) and fetched otherwise. A module that cannot be loaded — not found, not
+ * Loads the WebAssembly module. Options: `threads` (how many threads the core may use: default every
+ * core; 1 loads the single-threaded module; more than one loads the threaded module where memory can
+ * be shared with workers — Node, and cross-origin isolated pages — and the single-threaded one
+ * elsewhere: st.threads says which), `wasmUrl` (where the single-threaded .wasm is served, for
+ * bundlers and CDNs), `locateFile(name, scriptDirectory)` (Emscripten's hook, for either module's
+ * .wasm), or `wasmBinary` (the single-threaded module's bytes themselves; wasmUrl and wasmBinary load
+ * that module). By default the .wasm files under wasm/dist/, read from disk for a file: URL in Node
+ * (also under jsdom) and fetched otherwise. A module that cannot be loaded — not found, not
  * WebAssembly, or refused by the runtime — rejects with StraightestError 'io' naming the URL and what
  * came back.
  */
 export async function createStraightest(options = {}) {
-  const url = options.wasmBinary ? null : wasmLocation(options, new URL('./dist/straightest-core.wasm', import.meta.url));
-  const wasmBinary = options.wasmBinary ? checkWasm(new Uint8Array(options.wasmBinary), 'wasmBinary') : await readWasm(url);
-  try {
-    return new Straightest(internal, await createStraightestModule({ wasmBinary, printErr: () => {} }));
-  } catch (error) {
-    const from = url ? `from ${url}` : 'given as wasmBinary';
-    throw new StraightestError(`the WebAssembly module ${from} could not be started: ${error?.message ?? error}`, 'io', { cause: error });
-  }
+  return new Straightest(internal, await startModule(options));
 }

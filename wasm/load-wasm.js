@@ -5,22 +5,25 @@
 // browser bundle never sees them.
 import { StraightestError } from './straightest-error.js';
 
-const WASM_FILE = 'straightest-core.wasm';
 const MAGIC = [0x00, 0x61, 0x73, 0x6d]; // "\0asm"
 
-/** The URL to load the module from: options.wasmUrl, options.locateFile(name, directory), or the default. */
+/**
+ * The URL to load the module from: options.wasmUrl, options.locateFile(name, directory) (name: the
+ * default URL's file name, e.g. 'straightest-core.wasm'), or the default.
+ */
 export function wasmLocation(options, defaultUrl) {
   if (options.wasmUrl) return String(options.wasmUrl);
-  if (options.locateFile) return String(options.locateFile(WASM_FILE, new URL('.', defaultUrl).href));
+  const name = defaultUrl.pathname.slice(defaultUrl.pathname.lastIndexOf('/') + 1);
+  if (options.locateFile) return String(options.locateFile(name, new URL('.', defaultUrl).href));
   return defaultUrl.href;
 }
 
-function isNode() {
+export function isNode() {
   return typeof globalThis.process?.versions?.node === 'string';
 }
 
 /** Node's own module `name`, imported at run time only (bundlers leave a computed specifier alone). */
-function nodeModule(name) {
+export function nodeModule(name) {
   return import(/* @vite-ignore */ /* webpackIgnore: true */ `node:${name}`);
 }
 

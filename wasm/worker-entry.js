@@ -4,8 +4,9 @@
 //
 // Protocol (every request has an `id`; exactly one final reply echoes it; 'progress' may come before):
 //   → { id, type: 'init', options }                      ← { id, type: 'result', value: names }
-//        options: createStraightest's (wasmUrl, wasmBinary); the worker's own default otherwise;
+//        options: createStraightest's (threads, wasmUrl, wasmBinary); the worker's own default otherwise;
 //        names: the module's name lists ({ sampleNames, boundaryKinds, weightKinds, … }, see NAME_LISTS)
+//        and `threads` (the threads the module runs on)
 //   → { id, type: 'module', method, args }                ← { id, type: 'result', value }
 //        a Straightest method that makes no mesh: 'formatFromFileName'
 //   → { id, type: 'create', mesh, method, args }         ← { id, type: 'result', value: MeshInfo }
@@ -48,7 +49,7 @@ async function handle(request) {
   switch (type) {
     case 'init':
       straightest = await createStraightest(request.options ?? {});
-      return Object.fromEntries([['sampleNames', straightest.sampleNames()],
+      return Object.fromEntries([['sampleNames', straightest.sampleNames()], ['threads', straightest.threads],
         ...NAME_LISTS.map((name) => [name, straightest[name]])]);
     case 'module':
       if (!MODULE_METHODS.has(request.method)) throw new TypeError(`unknown module method '${request.method}'`);

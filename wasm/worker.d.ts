@@ -51,6 +51,8 @@ export class WorkerMesh {
 export interface StraightestWorker {
   /** Names of the built-in sample meshes. */
   sampleNames(): string[];
+  /** The threads the worker's module runs on (Straightest's `threads`; read when the worker started). */
+  readonly threads: number;
   /** The trace statuses, in the core's order (as Straightest's; read once when the worker started). */
   readonly traceStatuses: Straightest['traceStatuses'];
   /** The boundary kinds, in the core's order. */
@@ -84,7 +86,7 @@ export interface StraightestWorker {
 }
 
 /** createStraightestWorker's options: where the worker and the WebAssembly module come from. */
-export interface WorkerCreateOptions extends Pick<CreateOptions, 'wasmUrl' | 'wasmBinary'> {
+export interface WorkerCreateOptions extends Pick<CreateOptions, 'threads' | 'wasmUrl' | 'wasmBinary'> {
   /** Makes the module worker (running the package's wasm/worker-entry.js); called again after each cancel. */
   createWorker?: () => Worker;
 }

@@ -47,7 +47,8 @@ function defaultWorker() {
 /**
  * Starts the worker. options: `createWorker` (() => a module Worker running the package's
  * wasm/worker-entry.js, for bundlers that do not bundle `new Worker(new URL(…))` themselves; called
- * again after each cancel), plus createStraightest's `wasmUrl` / `wasmBinary`, handed to the worker.
+ * again after each cancel), plus createStraightest's `threads` / `wasmUrl` / `wasmBinary`, handed to the
+ * worker (the threaded module runs there when the worker is cross-origin isolated).
  */
 export async function createStraightestWorker(options = {}) {
   const { createWorker = defaultWorker, ...loadOptions } = options;
@@ -159,6 +160,7 @@ export async function createStraightestWorker(options = {}) {
     /** Names of the built-in sample meshes. */
     sampleNames: () => list('sampleNames'),
     /** The name lists of Straightest (read once when the worker started). */
+    get threads() { return names.threads; },
     get traceStatuses() { return list('traceStatuses'); },
     get boundaryKinds() { return list('boundaryKinds'); },
     get polygonBoundaryKinds() { return list('polygonBoundaryKinds'); },

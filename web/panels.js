@@ -37,6 +37,11 @@ export function setStatus(text) {
   $('status').textContent = text;
 }
 
+/** The threads the worker's WebAssembly module runs on, in the info panel. */
+export function showThreads(threads) {
+  $('info-threads').textContent = threads > 1 ? `${threads} (WebAssembly threads)` : '1 (single-threaded WebAssembly)';
+}
+
 /** Fills the info panel from mesh.info(); label: the sample or file name. */
 export function showInfo(info, label) {
   $('info-source').textContent = label ? `— ${label}` : '';

@@ -352,11 +352,14 @@ export function createRequests({ observer = null } = {}) {
   }
 
   return {
-    /** Starts the worker; resolves with its sample names and the parameterization's boundary kinds. */
+    /**
+     * Starts the worker; resolves with its sample names, the parameterization's boundary kinds and the
+     * threads its WebAssembly module runs on (more than 1 when the page is cross-origin isolated).
+     */
     async start() {
       worker = await createStraightestWorker();
       warmUpWhenIdle();
-      return { samples: worker.sampleNames(), boundaryKinds: worker.boundaryKinds };
+      return { samples: worker.sampleNames(), boundaryKinds: worker.boundaryKinds, threads: worker.threads };
     },
 
     /** Runs a request (see the top of this file). */

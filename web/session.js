@@ -12,7 +12,7 @@
 
 import { hooks, setState } from './test-hooks.js';
 import { latest } from './latest.js';
-import { clearError, setStatus, showError } from './panels.js';
+import { clearError, setStatus, showError, showThreads } from './panels.js';
 import { categorizedError, createRequests, isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
@@ -156,6 +156,8 @@ export function createSession({ observer, display }) {
       const { samples } = ready;
       hooks.samples = samples;
       boundaryKinds = ready.boundaryKinds;
+      hooks.threads = ready.threads;
+      showThreads(ready.threads);
       const select = $('sample-select');
       select.replaceChildren(...samples.map((name) => new Option(name, name)));
       select.value = samples.includes('mountain') ? 'mountain' : samples[0];

@@ -7,6 +7,7 @@ export const hooks = {
   // paths are drawn.
   state: 'loading',
   samples: [], // the sample names the worker offers
+  threads: 0, // the threads the worker's WebAssembly module runs on (1: the single-threaded module)
   lastInfo: null, // mesh.info() of the mesh on display
   lastError: null, // { message, category } of the last error shown in the error panel
   renders: 0, // frames rendered

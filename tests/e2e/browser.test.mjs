@@ -27,6 +27,7 @@ await import('./geoplot.tests.mjs');
 await import('./keyboard.tests.mjs');
 await import('./figure.tests.mjs');
 await import('./formats.tests.mjs');
+await import('./threads.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
@@ -593,6 +594,8 @@ function routeWorkerToTooLarge(context) {
     (url) => url.pathname === '/wasm/worker-entry.js' && url.search === '',
     (route) => route.fulfill({
       contentType: 'text/javascript',
+      // As the server's own responses: a worker script without COEP does not load in an isolated page.
+      headers: { 'Cross-Origin-Embedder-Policy': 'require-corp' },
       body: `import ${JSON.stringify(`data:text/javascript,${encodeURIComponent(prelude)}`)};\nimport './worker-entry.js?real';\n`,
     }),
   );
