@@ -129,7 +129,7 @@ for (const target of ['native', 'wasm']) {
     : [process.execPath, ['--no-experimental-fetch', join(root, 'build/wasm/bench_load.js')]];
   const out = execFileSync(cmd, [...args, target, String(loadSide), String(repeats), loadDir], { encoding: 'utf8', maxBuffer: 1 << 26 });
   for (const line of out.split('\n').filter((l) => l.startsWith('| ') && !l.startsWith('| target'))) {
-    const [, format, vertices, mb, loadMs, loadRate, parseMs, parseRate] = line.split('|').map((c) => c.trim());
+    const [, , format, vertices, mb, loadMs, loadRate, parseMs, parseRate] = line.split('|').map((c) => c.trim());
     loadRows.push({ target, format, vertices: Number(vertices), mb: Number(mb), loadMs: Number(loadMs), loadRate, parseMs, parseRate });
   }
 }
