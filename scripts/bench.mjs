@@ -3,10 +3,10 @@
 // per mesh), adds the CGAL comparison if scripts/bench-cgal.sh produced it, and writes
 // docs/BENCHMARKS.md. Every number in that file comes from this run.
 import { execFileSync, spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const repeats = Number(process.env.REPEATS ?? 3);
@@ -149,18 +149,72 @@ for (const side of coldSides) {
 }
 text += cold;
 
-// Loading files (not the generator): bench_load writes a 1M-vertex height field as OBJ and OFF and
-// times reading it back, natively and as WASM; its table rows are copied as they are.
+// Loading files (not the generator): bench_load writes a 1M-vertex height field as OBJ and OFF into
+// build/bench/load and times reading it back natively and as WASM (the C++ reading the file under
+// Node); the npm package's st.loadMesh times what a Node user runs (readFileSync + loadMesh); `wc -w`
+// on the same files is the reference for "reading the bytes once" (median of the same repeats).
 const loadSide = Number(process.env.LOAD_SIDE ?? 1000);
-const loadRows = ['native', 'wasm'].flatMap((target) => {
+const loadDir = join(root, 'build/bench/load');
+mkdirSync(loadDir, { recursive: true });
+const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+const timeMs = (fn) => {
+  const t = performance.now();
+  fn();
+  return performance.now() - t;
+};
+const loadRows = [];
+for (const target of ['native', 'wasm']) {
   const [cmd, args] = target === 'native'
     ? [join(root, 'build/native/bench_load'), []]
     : [process.execPath, ['--no-experimental-fetch', join(root, 'build/wasm/bench_load.js')]];
-  const out = execFileSync(cmd, [...args, target, String(loadSide), String(repeats)], { encoding: 'utf8', maxBuffer: 1 << 26 });
-  return out.split('\n').filter((line) => line.startsWith('| ') && !line.startsWith('| target'));
-});
-const loadHeader = '| target | format | vertices | MB | load file ms | MB/s | parse only ms | MB/s |\n|---|---|---:|---:|---:|---:|---:|---:|';
-text += `\n## Loading files (bench_load)\n\n"load file" reads, parses and builds the TriMesh; "parse only" reads bytes already in memory.\n\n${loadHeader}\n${loadRows.join('\n')}\n`;
+  const out = execFileSync(cmd, [...args, target, String(loadSide), String(repeats), loadDir], { encoding: 'utf8', maxBuffer: 1 << 26 });
+  for (const line of out.split('\n').filter((l) => l.startsWith('| ') && !l.startsWith('| target'))) {
+    const [, , format, vertices, mb, loadMs, loadRate, parseMs, parseRate] = line.split('|').map((c) => c.trim());
+    loadRows.push({ target, format, vertices: Number(vertices), mb: Number(mb), loadMs: Number(loadMs), loadRate, parseMs, parseRate });
+  }
+}
+const { createStraightest } = await import(pathToFileURL(join(root, 'wasm/index.js')).href);
+const st = await createStraightest();
+const wcMs = {};
+for (const format of ['obj', 'off']) {
+  const path = join(loadDir, `heightfield.${format}`);
+  const ms = [];
+  for (let r = -1; r < repeats; r++) {
+    const t = timeMs(() => st.loadMesh(readFileSync(path), format).delete());
+    if (r >= 0) ms.push(t);
+  }
+  const native = loadRows.find((row) => row.target === 'native' && row.format === format);
+  const loadMs = median(ms);
+  loadRows.push({ ...native, target: 'npm (Node)', loadMs, loadRate: (native.mb / loadMs * 1e3).toFixed(0), parseMs: '–', parseRate: '–' });
+  wcMs[format] = median(Array.from({ length: repeats }, () => timeMs(() => execFileSync('wc', ['-w', path]))));
+}
+rmSync(loadDir, { recursive: true, force: true });
+const loadNative = (format) => loadRows.find((row) => row.target === 'native' && row.format === format).loadMs;
+text += `\n## Loading files
+
+From files (not the built-in generator): a ${loadSide} × ${loadSide} height field written as OBJ and OFF (\`%.17g\`
+coordinates). "load file" reads the file, parses it and builds the TriMesh (\`loadMeshFile\`; under Node the
+WASM module reads the file through NODERAWFS); "parse only" reads bytes already in memory; "npm (Node)" is
+\`st.loadMesh(readFileSync(file))\` through the package. \`wc -w\` on the same file is the reference for reading
+the bytes once. Median of ${repeats} runs, after one warm-up.
+
+| target | format | vertices | MB | load file ms | MB/s | × wc -w | parse only ms | MB/s |
+|---|---|---:|---:|---:|---:|---:|---:|---:|
+${loadRows.map((r) => `| ${r.target} | ${r.format} | ${r.vertices} | ${r.mb} | ${f(r.loadMs)} | ${r.loadRate} | ${(r.loadMs / wcMs[r.format]).toFixed(2)} | ${r.parseMs} | ${r.parseRate} |`).join('\n')}
+| \`wc -w\` | obj | | | ${f(wcMs.obj)} | | 1.00 | | |
+| \`wc -w\` | off | | | ${f(wcMs.off)} | | 1.00 | | |
+
+| target | measured | goal | |
+|---|---|---|---|
+${['obj', 'off'].map((format) => {
+  const ratio = loadNative(format) / wcMs[format];
+  return `| native ${format} load ÷ \`wc -w\` | ${ratio.toFixed(2)} | ≤ 2 | ${ratio <= 2 ? 'met' : '**missed**'} |`;
+}).join('\n')}
+${['wasm', 'npm (Node)'].flatMap((target) => ['obj', 'off'].map((format) => {
+  const ratio = loadRows.find((r) => r.target === target && r.format === format).loadMs / loadNative(format);
+  return `| ${target} ${format} load ÷ native | ${ratio.toFixed(2)} | ≤ 1.5 | ${ratio <= 1.5 ? 'met' : '**missed**'} |`;
+})).join('\n')}
+`;
 
 const cgalFile = join(root, 'build/bench/cgal.md');
 if (existsSync(cgalFile)) {

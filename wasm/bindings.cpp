@@ -309,11 +309,19 @@ Expected<val> meshResult(Expected<TriMesh>&& mesh) {
   return o;
 }
 
-val loadMeshBytes(const std::string& bytes, const std::string& formatName, const val& options) {
+/// `bytes` is a Uint8Array (index.js's toBytes). It is copied once, from the JS array straight into
+/// the module's memory (a std::string parameter copies twice: into Embind's transfer buffer, then into
+/// the string), and read in place from there.
+val loadMeshBytes(const val& bytes, const std::string& formatName, const val& options) {
   return respond([&]() -> Expected<val> {
     auto format = parseMeshFormat(formatName);
     if (!format) return format.error();
-    return meshResult(loadMesh(bytes, format.value(), limitsFrom(options)));
+    const size_t size = bytes["length"].as<size_t>();
+    std::unique_ptr<char[]> content(new char[size]);
+    // Nothing allocates between making the view and filling it, so the view stays valid (growing the
+    // memory would detach it).
+    val(emscripten::typed_memory_view(size, reinterpret_cast<unsigned char*>(content.get()))).call<void>("set", bytes);
+    return meshResult(loadMesh(std::string_view(content.get(), size), format.value(), limitsFrom(options)));
   });
 }
 

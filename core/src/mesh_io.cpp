@@ -4,8 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <memory>
 
 #include "obj_reader.hpp"
 #include "off_reader.hpp"
@@ -114,21 +115,26 @@ Expected<TriMesh> loadMesh(std::string_view bytes, MeshFormat format, const Buil
 }
 
 Expected<TriMesh> loadMeshFile(const std::string& path, const BuildLimits& limits) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{ErrorCode::Io, "cannot open '" + path + "': " + std::strerror(errno)};
-  // Read in blocks (streaming the rdbuf into a stringstream goes character by character: ~1 ms per
-  // 100 KB natively and several times that in WASM).
-  std::string content;
-  in.seekg(0, std::ios::end);
-  if (const std::streamoff size = in.tellg(); size > 0) content.reserve(static_cast<size_t>(size));
-  in.seekg(0, std::ios::beg);
-  std::vector<char> block(1 << 20);
-  while (in) {
-    in.read(block.data(), static_cast<std::streamsize>(block.size()));
-    content.append(block.data(), static_cast<size_t>(in.gcount()));
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) return Error{ErrorCode::Io, "cannot open '" + path + "': " + std::strerror(errno)};
+  // The whole file into one uninitialized buffer, read straight into it: one fread when the size is
+  // known (a stream would copy every block once more, and a string would zero the buffer first), in
+  // doubling steps when it is not (a pipe).
+  long size = std::fseek(file.get(), 0, SEEK_END) == 0 ? std::ftell(file.get()) : -1;
+  if (size < 0 || std::fseek(file.get(), 0, SEEK_SET) != 0) size = 0;
+  size_t capacity = static_cast<size_t>(size) + 1, length = 0;  // +1: a known size is confirmed by reading 0 more
+  std::unique_ptr<char[]> content(new char[capacity]);          // too large: bad_alloc, which the edges map (guarded)
+  for (;;) {
+    length += std::fread(content.get() + length, 1, capacity - length, file.get());
+    if (length < capacity) break;
+    std::unique_ptr<char[]> larger(new char[2 * capacity]);
+    std::memcpy(larger.get(), content.get(), length);
+    content = std::move(larger);
+    capacity *= 2;
   }
-  if (in.bad()) return Error{ErrorCode::Io, "cannot read '" + path + "'"};
-  return loadMesh(content, meshFormatFromFileName(path), limits);
+  if (std::ferror(file.get())) return Error{ErrorCode::Io, "cannot read '" + path + "'"};
+  file.reset();
+  return loadMesh(std::string_view(content.get(), length), meshFormatFromFileName(path), limits);
 }
 
 }  // namespace straightest

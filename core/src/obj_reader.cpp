@@ -1,9 +1,10 @@
 // The OBJ reader (see obj_reader.hpp): one pass over the bytes, one line at a time.
 //
-// Each `v` and `f` line is first read by a fast path that accepts only the common, unambiguous form
-// (plain decimals, integer indices). Anything else on the line — and every error — goes to the strict
-// reading of that one line, which decides exactly what is wrong and words the error, so both paths
-// accept the same files and give the same numbers.
+// Each `v` and `f` line is first read in place, straight from the bytes, by a fast path that accepts
+// only the common, unambiguous form (keyword first, plain decimals, integer indices, nothing after
+// them): no line split, no token copies, no allocation per line. Anything else on the line — and
+// every error — goes to the strict reading of that one line, which decides exactly what is wrong and
+// words the error, so both paths accept the same files and give the same numbers.
 //
 // Faces may refer to vertices defined later in the file, so an index past the vertices read so far
 // is checked once the file ends (its polygon is triangulated then, into triangles reserved in
@@ -30,13 +31,12 @@ namespace straightest {
 namespace {
 
 using text::isDigit;
+using text::isInlineSpace;
 using text::NumberStatus;
 using text::parseError;
 using text::quoted;
 
 bool isBlank(char c) { return c == ' ' || c == '\t'; }  // what delimits a keyword
-/// Separates tokens inside a line (a line holds no '\n' or '\r').
-bool isInlineSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
 bool endsToken(char c) { return isInlineSpace(c) || c == '#'; }
 
 /// True when some number on the line has an exponent of more than 4 digits ("1e-2147483648").
@@ -52,18 +52,13 @@ bool longExponent(std::string_view line) {
   return false;
 }
 
-/// The common coordinate (text::readCommonDecimal) with an exponent of at most 4 digits. Anything
-/// else returns false for the strict reading to judge.
+/// Longer exponents are refused (see the file comment).
+constexpr int kMaxExponentDigits = 4;
+
+/// The common coordinate (text::readDecimalInPlace) with an exponent of at most 4 digits, as the
+/// whole token [first, last). Anything else returns false for the strict reading to judge.
 bool readCommonCoordinate(const char* first, const char* last, double& out) {
-  if (!text::readCommonDecimal(first, last, out)) return false;
-  const char* mantissa = first + (*first == '+' || *first == '-' ? 1 : 0);
-  const char* exponent = last;
-  while (exponent > mantissa && isDigit(exponent[-1])) --exponent;
-  if (last - exponent > 4 && exponent > mantissa) {  // trailing digits are an exponent's after an 'e'
-    const char* marker = exponent - (exponent[-1] == '+' || exponent[-1] == '-' ? 1 : 0);
-    if (marker > mantissa && (marker[-1] == 'e' || marker[-1] == 'E')) return false;
-  }
-  return true;
+  return text::readDecimalInPlace(first, last, out, kMaxExponentDigits) && first == last;
 }
 
 struct DeferredFace {
@@ -80,6 +75,20 @@ class ObjReader {
     int64_t line = 0;
     for (const char* p = text_.data(); p < end;) {
       ++line;
+      // The common lines, "v x y z" and "f a b c ..." with the keyword first, are read straight from the
+      // bytes without finding the line's end first (nearly every line of a large file).
+      if (p + 1 < end && p[1] == ' ') {
+        const char* next = nullptr;
+        if (*p == 'v') {
+          next = readVertexInPlace(p + 2, end);
+        } else if (*p == 'f' && (next = readFaceInPlace(p + 2, end))) {
+          addFace(line);
+        }
+        if (next) {
+          p = next;
+          continue;
+        }
+      }
       const char* e = text_.data() + text::lineEnd(text_, static_cast<size_t>(p - text_.data()));
       const char* keyword = p;
       while (keyword < e && isBlank(*keyword)) ++keyword;
@@ -101,6 +110,47 @@ class ObjReader {
   }
 
  private:
+  /// "x y z" and the line's end: the vertex is added and the next line's start returned; nullptr
+  /// (nothing added) for anything else, which the line-by-line reading below then judges.
+  const char* readVertexInPlace(const char* p, const char* end) {
+    double c[3];
+    for (double& x : c) {
+      p = text::skipInlineSpace(p, end);
+      if (!text::readDecimalInPlace(p, end, x, kMaxExponentDigits)) return nullptr;
+    }
+    const char* next = text::nextLineAt(text::skipInlineSpace(p, end), end);
+    if (next) soup_.positions.push_back({c[0], c[1], c[2]});
+    return next;
+  }
+
+  /// Corners (as readCommonFace reads them) up to the line's end, no comment: polygon_ holds them and
+  /// the next line's start is returned; nullptr for anything else.
+  const char* readFaceInPlace(const char* p, const char* end) {
+    polygon_.clear();
+    const int64_t vertices = static_cast<int64_t>(soup_.positions.size());
+    for (;;) {
+      p = text::skipInlineSpace(p, end);
+      if (const char* next = text::nextLineAt(p, end)) return polygon_.size() >= 3 ? next : nullptr;
+      const bool negative = *p == '-';
+      if (*p == '-' || *p == '+') ++p;
+      const char* digits = p;
+      int64_t index = 0;
+      for (; p < end && isDigit(*p); ++p) {
+        if (p - digits == 18) return nullptr;
+        index = index * 10 + (*p - '0');
+      }
+      if (p == digits) return nullptr;
+      if (p < end && *p == '/') {
+        while (p < end && !endsToken(*p) && *p != '\n' && *p != '\r') ++p;
+      }
+      if (p < end && !isInlineSpace(*p) && *p != '\n' && *p != '\r') return nullptr;  // a comment, or not an index
+      if (negative) index = -index;
+      const int64_t resolved = index > 0 ? index - 1 : vertices + index;
+      if (index == 0 || resolved < 0 || resolved > std::numeric_limits<int32_t>::max()) return nullptr;
+      polygon_.push_back(static_cast<int32_t>(resolved));
+    }
+  }
+
   bool readCommonVertex(const char* p, const char* e) {
     double c[3];
     for (double& x : c) {

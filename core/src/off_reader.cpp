@@ -1,4 +1,6 @@
-// The OFF reader (see off_reader.hpp): a line-based state machine — keyword, counts, vertices, faces.
+// The OFF reader (see off_reader.hpp): a line-based state machine — keyword, counts, vertices, faces —
+// whose common vertex and face lines are read in place from the bytes (one pass, nothing allocated
+// per line); every other line, and every error, goes through the state machine's strict reading.
 #include "off_reader.hpp"
 
 #include <optional>
@@ -8,7 +10,6 @@
 
 namespace straightest {
 
-using text::forEachLine;
 using text::NumberStatus;
 using text::parseDouble;
 using text::parseError;
@@ -20,60 +21,31 @@ using text::Tokens;
 
 namespace {
 
-// The fast path for the common vertex line ("x y z") and face line ("k i1 ... ik"): anything else on
-// the line, and every error, is left to the state machine's own reading, which gives the same result
-// for what the fast path accepts.
-bool isInlineSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-const char* skipSpace(const char* p, const char* e) {
-  while (p < e && isInlineSpace(*p)) ++p;
-  return p;
-}
-const char* tokenEnd(const char* p, const char* e) {
-  while (p < e && !isInlineSpace(*p) && *p != '#') ++p;
-  return p;
-}
-bool onlyCommentLeft(const char* p, const char* e) {
-  p = skipSpace(p, e);
-  return p == e || *p == '#';
-}
+// The fast path for the common vertex line ("x y z") and face line ("k i1 ... ik"), read in place
+// straight from the bytes: anything else on the line (a comment, a colour, a normal), and every error,
+// is left to the state machine's own reading of that line, which gives the same result for what the
+// fast path accepts. Each returns where the next line starts, or nullptr (and adds nothing).
 
-/// An unsigned integer token of 1 to 18 digits at p (after blanks); p moves past it.
-bool readCommonInteger(const char*& p, const char* e, int64_t& out) {
-  p = skipSpace(p, e);
-  const char* digits = p;
-  out = 0;
-  for (; p < e && text::isDigit(*p); ++p) {
-    if (p - digits == 18) return false;
-    out = out * 10 + (*p - '0');
-  }
-  return p > digits && (p == e || isInlineSpace(*p) || *p == '#');
-}
-
-bool readCommonVertex(std::string_view line, Vec3& out) {
-  const char* p = line.data();
-  const char* e = p + line.size();
+const char* readVertexInPlace(const char* p, const char* end, Vec3& out) {
   double c[3];
   for (double& x : c) {
-    const char* token = skipSpace(p, e);
-    p = tokenEnd(token, e);
-    if (!text::readCommonDecimal(token, p, x)) return false;
+    p = text::skipInlineSpace(p, end);
+    if (!text::readDecimalInPlace(p, end, x)) return nullptr;
   }
   out = {c[0], c[1], c[2]};
-  return onlyCommentLeft(p, e);
+  return text::nextLineAt(text::skipInlineSpace(p, end), end);
 }
 
-bool readCommonFace(std::string_view line, int64_t vertices, std::vector<int32_t>& polygon) {
-  const char* p = line.data();
-  const char* e = p + line.size();
+const char* readFaceInPlace(const char* p, const char* end, int64_t vertices, std::vector<int32_t>& polygon) {
   int64_t corners = 0;
-  if (!readCommonInteger(p, e, corners) || corners < 3) return false;
+  if (!text::readCountInPlace(p = text::skipInlineSpace(p, end), end, corners) || corners < 3) return nullptr;
   polygon.clear();
   for (int64_t k = 0; k < corners; ++k) {
     int64_t index = 0;
-    if (!readCommonInteger(p, e, index) || index >= vertices) return false;
+    if (!text::readCountInPlace(p = text::skipInlineSpace(p, end), end, index) || index >= vertices) return nullptr;
     polygon.push_back(static_cast<int32_t>(index));
   }
-  return onlyCommentLeft(p, e);
+  return text::nextLineAt(text::skipInlineSpace(p, end), end);
 }
 
 }  // namespace
@@ -126,19 +98,9 @@ Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) 
     }
   };
 
-  forEachLine(text, [&](int64_t line, std::string_view raw) {
+  // One line, read strictly: the header, the counts, and any vertex or face line the fast path left.
+  auto readLine = [&](int64_t line, std::string_view raw) {
     consumed += raw.size() + 1;
-    Vec3 position;
-    if (stage == Stage::Vertices && extraPerVertex == 0 && readCommonVertex(raw, position)) {
-      soup.positions.push_back(position);
-      if (static_cast<int64_t>(soup.positions.size()) == nv) stage = nf > 0 ? Stage::Faces : Stage::Done;
-      return true;
-    }
-    if (stage == Stage::Faces && readCommonFace(raw, nv, polygon)) {
-      addPolygon();
-      if (++facesRead == nf) stage = Stage::Done;
-      return true;
-    }
     tokenize(stripComment(raw), tokens);
     if (tokens.count == 0) return true;
     auto& items = tokens.items;
@@ -246,7 +208,33 @@ Expected<PolygonSoup> readOff(std::string_view text, const BuildLimits& limits) 
         return false;
     }
     return true;
-  });
+  };
+
+  const char* const end = text.data() + text.size();
+  int64_t line = 0;
+  for (const char* p = text.data(); p < end;) {
+    ++line;
+    const char* next = nullptr;
+    if (stage == Stage::Vertices && extraPerVertex == 0) {
+      Vec3 position;
+      if ((next = readVertexInPlace(p, end, position))) {
+        soup.positions.push_back(position);
+        if (static_cast<int64_t>(soup.positions.size()) == nv) stage = nf > 0 ? Stage::Faces : Stage::Done;
+      }
+    } else if (stage == Stage::Faces && (next = readFaceInPlace(p, end, nv, polygon))) {
+      addPolygon();
+      if (++facesRead == nf) stage = Stage::Done;
+    }
+    if (next) {
+      p = next;
+      continue;
+    }
+    const size_t at = static_cast<size_t>(p - text.data());
+    const size_t lineEnd = text::lineEnd(text, at);
+    if (!readLine(line, text.substr(at, lineEnd - at))) break;
+    p = text.data() + lineEnd;
+    if (p < end) p += (*p == '\r' && p + 1 < end && p[1] == '\n') ? 2 : 1;
+  }
   if (error) return *error;
   switch (stage) {
     case Stage::Header: return Error{ErrorCode::Empty, "file is empty (no OFF header)"};

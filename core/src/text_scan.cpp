@@ -85,14 +85,29 @@ NumberStatus parseDouble(std::string_view token, double& out) {
   return NumberStatus::Ok;
 }
 
-bool readCommonDecimal(const char* first, const char* last, double& out) {
-  const size_t length = static_cast<size_t>(last - first);
-  if (length == 0 || length > kMaxNumberChars) return false;
+bool readDecimalInPlace(const char*& p, const char* end, double& out, int maxExponentDigits) {
+  const char* first = p;
+  if (first == end) return false;
   const char* number = first + (*first == '+' ? 1 : 0);  // from_chars takes no '+'
   const char* mantissa = number + (*first == '-' ? 1 : 0);
-  if (mantissa == last || !(isDigit(*mantissa) || *mantissa == '.')) return false;
-  const auto result = fast_float::from_chars(number, last, out);
-  return result.ec == std::errc() && result.ptr == last && std::isfinite(out);
+  if (mantissa >= end || !(isDigit(*mantissa) || *mantissa == '.')) return false;
+  // from_chars stops at the first byte that cannot continue a number, so the whole token is the
+  // number exactly when a delimiter follows where it stopped.
+  const auto result = fast_float::from_chars(number, end, out);
+  const char* last = result.ptr;
+  if (result.ec != std::errc() || !std::isfinite(out) || static_cast<size_t>(last - first) > kMaxNumberChars)
+    return false;
+  if (last < end && !(isInlineSpace(*last) || *last == '#' || *last == '\n' || *last == '\r')) return false;
+  if (maxExponentDigits > 0) {
+    const char* exponent = last;  // trailing digits are an exponent's when an 'e' (and a sign) precede them
+    while (exponent > mantissa && isDigit(exponent[-1])) --exponent;
+    if (last - exponent > maxExponentDigits && exponent > mantissa) {
+      const char* marker = exponent - (exponent[-1] == '+' || exponent[-1] == '-' ? 1 : 0);
+      if (marker > mantissa && (marker[-1] == 'e' || marker[-1] == 'E')) return false;
+    }
+  }
+  p = last;
+  return true;
 }
 
 bool parseInt64(std::string_view token, int64_t& out) {

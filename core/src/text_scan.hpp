@@ -72,10 +72,45 @@ enum class NumberStatus { Ok, NotANumber, NonFinite, TooLong };
 /// non-decimal form such as "0x1p3" is acceptable).
 NumberStatus parseDouble(std::string_view token, double& out);
 
-/// The readers' fast path for the common coordinate: [first, last) is a plain decimal of at most 64
-/// characters that starts, after one optional sign, with a digit or '.', and reads as a finite
-/// double. Then `out` is exactly what parseDouble gives; otherwise false (parseDouble decides).
-bool readCommonDecimal(const char* first, const char* last, double& out);
+// In-place reading for the readers' fast paths: a line of the common form is read straight from the
+// bytes (no line split, no token copies); each function returns false, or nullptr, when the bytes are
+// not of that form, and the caller then reads the line strictly.
+
+/// Space, tab, vertical tab and form feed: what separates tokens inside a line.
+inline bool isInlineSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+inline const char* skipInlineSpace(const char* p, const char* end) {
+  while (p < end && isInlineSpace(*p)) ++p;
+  return p;
+}
+
+/// If `p` is at the end of a line (the end of the text, "\n", "\r\n" or a lone "\r"), where the next
+/// line starts; otherwise nullptr.
+inline const char* nextLineAt(const char* p, const char* end) {
+  if (p == end) return end;
+  if (*p == '\n') return p + 1;
+  if (*p == '\r') return p + ((p + 1 < end && p[1] == '\n') ? 2 : 1);
+  return nullptr;
+}
+
+/// The common coordinate read in place: the token at `p` (no leading blanks) is a plain decimal of at
+/// most 64 characters that starts, after one optional sign, with a digit or '.', reads as a finite
+/// double, and ends at a blank, '#', a line end or the end of the text. Then `p` moves past it and
+/// `out` is exactly what parseDouble gives; otherwise false (parseDouble decides). With
+/// `maxExponentDigits`, an exponent of more digits is refused too.
+bool readDecimalInPlace(const char*& p, const char* end, double& out, int maxExponentDigits = 0);
+
+/// An unsigned integer of 1 to 18 digits at `p` (no leading blanks), followed by a blank, '#', a
+/// line end or the end of the text; `p` moves past it.
+inline bool readCountInPlace(const char*& p, const char* end, int64_t& out) {
+  const char* digits = p;
+  int64_t value = 0;
+  for (; p < end && isDigit(*p); ++p) {
+    if (p - digits == 18) return false;
+    value = value * 10 + (*p - '0');
+  }
+  out = value;
+  return p > digits && (p == end || isInlineSpace(*p) || *p == '#' || *p == '\n' || *p == '\r');
+}
 
 /// A whole token as a signed integer of at most 18 digits (so it never overflows int64).
 bool parseInt64(std::string_view token, int64_t& out);

@@ -19,6 +19,25 @@ std::string str(const Vec3& p) {
 
 Error err(ErrorCode code, const std::string& message) { return Error{code, message}; }
 
+/// The connected components of the faces, joined across each edge's two halfedges (mate).
+int32_t countComponents(const std::vector<int32_t>& mate) {
+  std::vector<int32_t> parent(mate.size() / 3);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int32_t f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];  // path halving
+    return f;
+  };
+  int32_t components = static_cast<int32_t>(parent.size());
+  for (size_t h = 0; h < mate.size(); ++h) {
+    if (mate[h] < static_cast<int32_t>(h)) continue;  // each edge once (and boundary halfedges never)
+    const int32_t a = root(static_cast<int32_t>(h / 3)), b = root(mate[h] / 3);
+    if (a == b) continue;
+    parent[std::max(a, b)] = std::min(a, b);
+    --components;
+  }
+  return components;
+}
+
 }  // namespace
 
 Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triangle> triangles,
@@ -56,40 +75,47 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   }
 
   // Group halfedges by undirected edge: bucket by the smaller endpoint (counting sort), then sort
-  // each small bucket by the larger endpoint.
+  // each small bucket by the larger endpoint. A bucket entry is the key (larger endpoint << 32 |
+  // halfedge), so the sort compares plain integers in place instead of looking up each halfedge's
+  // endpoints again (the order is the same: by the larger endpoint, then by halfedge).
   const int32_t nh = static_cast<int32_t>(3 * nf);
   auto tailOf = [&](int32_t h) { return triangles[h / 3][h % 3]; };
   auto headOf = [&](int32_t h) { return triangles[h / 3][(h % 3 + 1) % 3]; };
   std::vector<int32_t> bucketStart(nv + 1, 0);
-  for (int32_t h = 0; h < nh; ++h) ++bucketStart[std::min(tailOf(h), headOf(h)) + 1];
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) ++bucketStart[std::min(t[k], t[k == 2 ? 0 : k + 1]) + 1];
   std::partial_sum(bucketStart.begin(), bucketStart.end(), bucketStart.begin());
-  std::vector<int32_t> bucket(nh);
+  std::vector<uint64_t> bucket(nh);
   {
     std::vector<int32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
-    for (int32_t h = 0; h < nh; ++h) bucket[fill[std::min(tailOf(h), headOf(h))]++] = h;
+    for (int32_t f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int32_t a = triangles[f][k], b = triangles[f][k == 2 ? 0 : k + 1];
+        bucket[fill[std::min(a, b)]++] = uint64_t(uint32_t(std::max(a, b))) << 32 | uint32_t(3 * f + k);
+      }
   }
+  auto halfedgeOf = [](uint64_t key) { return static_cast<int32_t>(key & 0xffffffffu); };
+  auto otherEndOf = [](uint64_t key) { return static_cast<int32_t>(key >> 32); };
   std::vector<int32_t> mate(nh, -1);          // the other halfedge of the same edge (before orientation repair)
   std::vector<uint8_t> sameDirection(nh, 0);  // mate runs the same way: one of the two faces is flipped
+  bool anySameDirection = false;
   for (int64_t v = 0; v < nv; ++v) {
     auto first = bucket.begin() + bucketStart[v], last = bucket.begin() + bucketStart[v + 1];
-    std::sort(first, last, [&](int32_t a, int32_t b) {
-      const int32_t ma = std::max(tailOf(a), headOf(a)), mb = std::max(tailOf(b), headOf(b));
-      return ma != mb ? ma < mb : a < b;
-    });
+    std::sort(first, last);
     for (auto it = first; it != last;) {
-      const int32_t other = std::max(tailOf(*it), headOf(*it));
+      const int32_t other = otherEndOf(*it);
       auto end = it;
-      while (end != last && std::max(tailOf(*end), headOf(*end)) == other) ++end;
+      while (end != last && otherEndOf(*end) == other) ++end;
       const auto count = end - it;
       if (count > 2) {
         std::string fs;
-        for (auto j = it; j != end && j - it < 6; ++j) fs += (j == it ? "" : ", ") + std::to_string(*j / 3);
+        for (auto j = it; j != end && j - it < 6; ++j) fs += (j == it ? "" : ", ") + std::to_string(halfedgeOf(*j) / 3);
         return err(ErrorCode::NonManifoldEdge, "edge (" + std::to_string(v) + ", " + std::to_string(other) +
                                                    ") is shared by " + std::to_string(count) + " faces (" + fs +
                                                    (count > 6 ? ", ..." : "") + ")");
       }
       if (count == 2) {
-        const int32_t a = it[0], b = it[1];
+        const int32_t a = halfedgeOf(it[0]), b = halfedgeOf(it[1]);
         if (a / 3 == b / 3) {  // cannot happen without a repeated vertex, which was rejected above
           return err(ErrorCode::InvalidFace, "face " + std::to_string(a / 3) + " uses an edge twice");
         }
@@ -106,6 +132,7 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
                                                      " have the same vertices (" + std::to_string(ta[0]) + ", " +
                                                      std::to_string(ta[1]) + ", " + std::to_string(ta[2]) + ")");
           sameDirection[a] = sameDirection[b] = 1;
+          anySameDirection = true;
         }
         mate[a] = b;
         mate[b] = a;
@@ -124,46 +151,50 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
   }
 
   // Orientation: breadth-first over faces through shared edges; flip[g] = flip[f] xor sameDirection.
-  std::vector<int8_t> flip(nf, -1);
-  std::vector<int32_t> componentOf(nf, -1);
-  std::vector<int32_t> queue;
-  queue.reserve(nf);
+  // When no edge is crossed by two same-direction halfedges the faces already agree: nothing is
+  // flipped and nothing can conflict, so only the components are counted, by union–find over the
+  // mates in face order (nearby in memory, where the breadth-first walk jumps across the mesh).
+  std::vector<int8_t> flip(nf, anySameDirection ? -1 : 0);
   int32_t components = 0;
   int64_t reoriented = 0;
-  for (int32_t seed = 0; seed < nf; ++seed) {
-    if (flip[seed] >= 0) continue;
-    const size_t begin = queue.size();
-    flip[seed] = 0;
-    componentOf[seed] = components;
-    queue.push_back(seed);
-    for (size_t q = begin; q < queue.size(); ++q) {
-      const int32_t f = queue[q];
-      for (int k = 0; k < 3; ++k) {
-        const int32_t h = 3 * f + k, m = mate[h];
-        if (m < 0) continue;
-        const int32_t g = m / 3;
-        const int8_t want = static_cast<int8_t>(flip[f] ^ sameDirection[h]);
-        if (flip[g] < 0) {
-          flip[g] = want;
-          componentOf[g] = components;
-          queue.push_back(g);
-        } else if (flip[g] != want) {
-          return err(ErrorCode::NonOrientable, "the surface is not orientable (like a Möbius strip): faces " +
-                                                   std::to_string(f) + " and " + std::to_string(g) + " across edge (" +
-                                                   std::to_string(tailOf(h)) + ", " + std::to_string(headOf(h)) +
-                                                   ") cannot be oriented consistently");
+  if (!anySameDirection) {
+    components = countComponents(mate);
+  } else {
+    std::vector<int32_t> queue;
+    queue.reserve(nf);
+    for (int32_t seed = 0; seed < nf; ++seed) {
+      if (flip[seed] >= 0) continue;
+      const size_t begin = queue.size();
+      flip[seed] = 0;
+      queue.push_back(seed);
+      for (size_t q = begin; q < queue.size(); ++q) {
+        const int32_t f = queue[q];
+        for (int k = 0; k < 3; ++k) {
+          const int32_t h = 3 * f + k, m = mate[h];
+          if (m < 0) continue;
+          const int32_t g = m / 3;
+          const int8_t want = static_cast<int8_t>(flip[f] ^ sameDirection[h]);
+          if (flip[g] < 0) {
+            flip[g] = want;
+            queue.push_back(g);
+          } else if (flip[g] != want) {
+            return err(ErrorCode::NonOrientable, "the surface is not orientable (like a Möbius strip): faces " +
+                                                     std::to_string(f) + " and " + std::to_string(g) +
+                                                     " across edge (" + std::to_string(tailOf(h)) + ", " +
+                                                     std::to_string(headOf(h)) + ") cannot be oriented consistently");
+          }
         }
       }
+      const size_t size = queue.size() - begin;
+      size_t flipped = 0;
+      for (size_t q = begin; q < queue.size(); ++q) flipped += flip[queue[q]];
+      if (2 * flipped > size) {  // keep the majority's orientation
+        for (size_t q = begin; q < queue.size(); ++q) flip[queue[q]] ^= 1;
+        flipped = size - flipped;
+      }
+      reoriented += static_cast<int64_t>(flipped);
+      ++components;
     }
-    const size_t size = queue.size() - begin;
-    size_t flipped = 0;
-    for (size_t q = begin; q < queue.size(); ++q) flipped += flip[queue[q]];
-    if (2 * flipped > size) {  // keep the majority's orientation
-      for (size_t q = begin; q < queue.size(); ++q) flip[queue[q]] ^= 1;
-      flipped = size - flipped;
-    }
-    reoriented += static_cast<int64_t>(flipped);
-    ++components;
   }
 
   TriMesh mesh;
