@@ -80,7 +80,8 @@ test('every malformed category arrives as an Error, never a number', async () =>
 });
 
 test('bad arguments are Errors with messages', () => {
-  assert.throws(() => st.loadMesh('v 0 0 0', 'stl'), /unknown mesh format 'stl'/);
+  assert.throws(() => st.loadMesh('v 0 0 0', 'gltf'), /unknown mesh format 'gltf'/);
+  assert.throws(() => st.loadMesh('v 0 0 0', 'stl'), /binary STL needs at least 84 bytes/);
   assert.throws(() => st.loadMesh(42), TypeError);
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0], [0, 1, 2]), /not a multiple of 3/);
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 1.5]), /not a vertex index/);
