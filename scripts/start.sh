@@ -6,7 +6,7 @@ ensure_system_packages
 ensure_node_modules
 # The one slow step of a first start, announced so that a silent compiler is not taken for a hang; the
 # estimate is a first build measured on a busy 2-core machine (a rebuild with nothing changed takes seconds).
-echo "building the WebAssembly module (~8 min the first time, seconds after that)"
+echo "building the WebAssembly modules, single-threaded and threaded (~10 min the first time, seconds after that)"
 t=$(now_ms)
 bash scripts/build.sh module
 echo "built the WebAssembly module in $(elapsed "$t") s"
