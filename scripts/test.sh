@@ -7,7 +7,7 @@
 #   sanitize — the native suite again under AddressSanitizer + UndefinedBehaviorSanitizer
 #   tsan     — the threaded loops' tests (tests/core/threads_test.cpp) under ThreadSanitizer
 #   fuzz     — every libFuzzer harness (tests/fuzz): its saved regression inputs, then a smoke run of
-#              FUZZ_SECONDS (default 30) seconds each with libFuzzer seed FUZZ_SEED (default 1, so
+#              FUZZ_SECONDS (default 20) seconds each with libFuzzer seed FUZZ_SEED (default 1, so
 #              every run starts from the same inputs); one result per harness
 #   js       — node --test on the npm API (tests/js), including installing the packed package
 #   browser  — the page in headless Chromium (tests/e2e)
@@ -75,7 +75,7 @@ for layer in $LAYERS; do
       if [ "$layer" = lint ]; then
         run_layer lint bash scripts/lint.sh
       elif [ "$layer" = fuzz ]; then
-        FUZZ_SEED="${FUZZ_SEED:-1}" run_layer fuzz bash scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
+        FUZZ_SEED="${FUZZ_SEED:-1}" run_layer fuzz bash scripts/fuzz.sh "${FUZZ_SECONDS:-20}"
       else
         run_layer browser node tests/e2e/browser.test.mjs
       fi
