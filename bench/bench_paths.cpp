@@ -14,23 +14,13 @@
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
 #include "straightest/threads.hpp"
+#include "thread_counts.hpp"
 
 using namespace straightest;
 using Clock = std::chrono::steady_clock;
 
 static double ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-/// "1,2" → {1, 2}; 0 = every core.
-static std::vector<int> threadCounts(const std::string& list) {
-  std::vector<int> counts;
-  for (size_t at = 0; at <= list.size();) {
-    const size_t comma = std::min(list.find(',', at), list.size());
-    counts.push_back(std::max(0, std::atoi(list.substr(at, comma - at).c_str())));
-    at = comma + 1;
-  }
-  return counts;
 }
 
 int main(int argc, char** argv) {

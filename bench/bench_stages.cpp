@@ -26,6 +26,7 @@
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
 #include "straightest/threads.hpp"
+#include "thread_counts.hpp"
 
 #ifdef __EMSCRIPTEN__
 #include <emscripten/heap.h>
@@ -63,17 +64,6 @@ static Expected<TriMesh> open(const std::string& spec) {
   if (spec.rfind("heightfield:", 0) == 0) return makeHeightField(std::atoi(spec.c_str() + 12));
   if (spec.rfind("sample:", 0) == 0) return makeSample(spec.substr(7));
   return loadMeshFile(spec);
-}
-
-/// "1,2" → {1, 2}; 0 = every core.
-static std::vector<int> threadCounts(const std::string& list) {
-  std::vector<int> counts;
-  for (size_t at = 0; at <= list.size();) {
-    const size_t comma = std::min(list.find(',', at), list.size());
-    counts.push_back(std::max(0, std::atoi(list.substr(at, comma - at).c_str())));
-    at = comma + 1;
-  }
-  return counts;
 }
 
 /// What one thread count measured: each stage's times and the results they gave.
