@@ -19,6 +19,17 @@ std::string str(const Vec3& p) {
 
 Error err(ErrorCode code, const std::string& message) { return Error{code, message}; }
 
+double largestComponent(const Vec3& a) { return std::fmax(std::fabs(a.x), std::fmax(std::fabs(a.y), std::fabs(a.z))); }
+
+/// The unit normal of a triangle with edges e1, e2 and c = e1 × e2, |c| = twiceArea > 0. For edges
+/// below ~1e-154 the components of c are subnormal, hold few digits, and c / |c| is not unit length;
+/// there the edges are scaled to unit size before the cross product.
+Vec3 unitNormal(const Vec3& e1, const Vec3& e2, const Vec3& c, double twiceArea) {
+  if (twiceArea > 1e-140) return c / twiceArea;
+  const Vec3 scaled = cross(e1 / largestComponent(e1), e2 / largestComponent(e2));
+  return scaled / norm(scaled);
+}
+
 /// The connected components of the faces, joined across each edge's two halfedges (mate).
 int32_t countComponents(const std::vector<int32_t>& mate) {
   std::vector<int32_t> parent(mate.size() / 3);
@@ -283,15 +294,16 @@ Expected<TriMesh> TriMesh::build(std::vector<Vec3> positions, std::vector<Triang
     const Triangle& t = mesh.triangles_[f];
     const Vec3 e1 = mesh.positions_[t[1]] - mesh.positions_[t[0]];
     const Vec3 e2 = mesh.positions_[t[2]] - mesh.positions_[t[0]];
-    const double lengths[3] = {norm(e1), norm(mesh.positions_[t[2]] - mesh.positions_[t[1]]), norm(e2)};
+    const double lengths[3] = {robustNorm(e1), robustNorm(mesh.positions_[t[2]] - mesh.positions_[t[1]]),
+                               robustNorm(e2)};
     for (int k = 0; k < 3; ++k) edgeLengthSum += twin[3 * f + k] < 0 ? lengths[k] : 0.5 * lengths[k];
     const Vec3 c = cross(e1, e2);
-    const double twiceArea = norm(c);
+    const double twiceArea = robustNorm(c);
     mesh.faceAreas_[f] = 0.5 * twiceArea;
     const bool isDegenerate = !(twiceArea > kDegenerateRel * lengths[0] * lengths[2]) || !std::isfinite(twiceArea);
     mesh.degenerate_[f] = isDegenerate;
     degenerate += isDegenerate;
-    mesh.faceNormals_[f] = isDegenerate ? Vec3{} : c / twiceArea;
+    mesh.faceNormals_[f] = isDegenerate ? Vec3{} : unitNormal(e1, e2, c, twiceArea);
   }
 
   if (edges > 0 && edgeLengthSum > 0) mesh.meanEdgeLength_ = edgeLengthSum / static_cast<double>(edges);

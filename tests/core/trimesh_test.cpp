@@ -253,6 +253,19 @@ TEST(Validation, RefusesCoordinatesWhoseSquaredAreasOverflow) {
   EXPECT_NEAR(large.value().faceArea(0) / 0.5e80, 1.0, 1e-12);
 }
 
+TEST(Validation, TinyCoordinatesStillGiveUnitNormals) {
+  // At 1e-155 the cross product's components are subnormal and squaring them underflows, so
+  // |e1 × e2| computed naively is far from exact and the normal was not unit length (found by fuzz_ply).
+  for (const double s : {1e-100, 1e-155, 1e-160}) {
+    auto mesh = TriMesh::build({{0, 0, 0}, {s, 0, 0}, {0.3 * s, s, 0.2 * s}}, {{0, 1, 2}});
+    ASSERT_TRUE(mesh.ok()) << s << ": " << mesh.error().message;
+    const Vec3 n = mesh.value().faceNormal(0);
+    EXPECT_NEAR(norm(n), 1.0, 1e-15) << s;
+    EXPECT_GT(n.z, 0.9) << s;
+    EXPECT_NEAR(n.y, -0.2 * n.z, 1e-6) << s;  // the plane y·0.2 = z through the three points
+  }
+}
+
 TEST(Validation, EnforcesConfigurableCaps) {
   BuildLimits limits;
   limits.maxVertices = 2;
