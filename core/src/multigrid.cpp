@@ -2,9 +2,10 @@
 // coarse operators) and its V-cycle; the coarsest level is factorized by Eigen's SparseLU.
 // Threads (row_chunks.hpp): the cycle's residual, restriction (by the rows of R = Pᵀ, kept from the
 // setup), prolongation and Jacobi steps run in fixed row chunks on all threads, each row computed as on
-// one thread. Gauss–Seidel stays sequential: each row needs the rows just updated before it, and a
-// colouring that would free it changes the smoother (and its convergence) for every thread count, so
-// the V-cycle is the same operator — and the results the same bits — however many threads run it.
+// one thread. A Gauss–Seidel sweep stays sequential along the rows (each row needs the rows just updated
+// before it, and a colouring that would free it changes the smoother and its convergence for every
+// thread count); its two columns, u and v, are swept on two threads. So the V-cycle is the same operator
+// — and the results the same bits — however many threads run it.
 #include "straightest/multigrid.hpp"
 
 #include <Eigen/SparseLU>
@@ -15,6 +16,7 @@
 #include "row_accumulator.hpp"
 #include "row_chunks.hpp"
 #include "solve_progress.hpp"
+#include "straightest/threads.hpp"
 
 namespace straightest {
 
@@ -170,37 +172,51 @@ Expected<bool> AggregationMultigrid::compute(CsrMatrix A, const Progress& progre
 
 namespace {
 
-/// One Gauss–Seidel sweep for two interleaved columns, rows first to last (forward) or last to first:
-/// x_i += (b_i − (A x)_i) / a_ii with the newest x. Equal to the textbook x_i = (b_i − Σ_{j≠i} a_ij x_j)
-/// / a_ii, without a test for the diagonal in the inner loop. The sweep is bound by its loop-carried
-/// dependency (x_i needs the x_j just written), so each row sums its columns below i and those from i on
-/// in separate accumulators: the sum that waits for the newest values is short and the other one
-/// overlaps with the previous row. fromZero: x = 0 on entry, so only the columns below i count (forward).
-void gaussSeidel(const CsrMatrix& A, const std::vector<int32_t>& split, const std::vector<double>& invDiag,
-                 const double* b, double* x, bool forward, bool fromZero) {
+/// One Gauss–Seidel sweep of the interleaved columns [first, first + Columns) (two columns: u and v),
+/// rows first to last (forward) or last to first: x_i += (b_i − (A x)_i) / a_ii with the newest x. Equal
+/// to the textbook x_i = (b_i − Σ_{j≠i} a_ij x_j) / a_ii, without a test for the diagonal in the inner
+/// loop. The sweep is bound by its loop-carried dependency (x_i needs the x_j just written), so each row
+/// sums its columns below i and those from i on in separate accumulators: the sum that waits for the
+/// newest values is short and the other one overlaps with the previous row. fromZero: x = 0 on entry, so
+/// only the columns below i count (forward). Each column's arithmetic is the same whether it is swept
+/// alone or with the other.
+template <int Columns>
+void gaussSeidelSweep(const CsrMatrix& A, const std::vector<int32_t>& split, const std::vector<double>& invDiag,
+                      const double* b, double* x, bool forward, bool fromZero, int first) {
   const int32_t n = A.rows;
   const int32_t* col = A.col.data();
   const double* value = A.value.data();
+  b += first;
+  x += first;
   for (int32_t s = 0; s < n; ++s) {
     const int32_t i = forward ? s : n - 1 - s;
-    double lo0 = 0, lo1 = 0, hi0 = 0, hi1 = 0;
-    for (int32_t k = A.start[i]; k < split[i]; ++k) {
-      lo0 += value[k] * x[2 * col[k]];
-      lo1 += value[k] * x[2 * col[k] + 1];
-    }
+    double lo[Columns] = {}, hi[Columns] = {};
+    for (int32_t k = A.start[i]; k < split[i]; ++k)
+      for (int c = 0; c < Columns; ++c) lo[c] += value[k] * x[2 * col[k] + c];
     if (!fromZero)
-      for (int32_t k = split[i]; k < A.start[i + 1]; ++k) {
-        hi0 += value[k] * x[2 * col[k]];
-        hi1 += value[k] * x[2 * col[k] + 1];
-      }
-    if (fromZero) {
-      x[2 * i] = (b[2 * i] - lo0) * invDiag[i];
-      x[2 * i + 1] = (b[2 * i + 1] - lo1) * invDiag[i];
-    } else {
-      x[2 * i] += (b[2 * i] - lo0 - hi0) * invDiag[i];
-      x[2 * i + 1] += (b[2 * i + 1] - lo1 - hi1) * invDiag[i];
+      for (int32_t k = split[i]; k < A.start[i + 1]; ++k)
+        for (int c = 0; c < Columns; ++c) hi[c] += value[k] * x[2 * col[k] + c];
+    for (int c = 0; c < Columns; ++c) {
+      if (fromZero) x[2 * i + c] = (b[2 * i + c] - lo[c]) * invDiag[i];
+      else x[2 * i + c] += (b[2 * i + c] - lo[c] - hi[c]) * invDiag[i];
     }
   }
+}
+
+/// Rows from which the two columns are swept on two threads: below, waking a thread costs more than
+/// the sweep.
+constexpr int32_t kColumnThreadsMinRows = 4096;
+
+/// One Gauss–Seidel sweep of both columns. The sweep itself cannot be split across threads without
+/// changing it (a colouring would), but u and v are independent: with more than one thread each column
+/// is swept on its own, giving the same bits as sweeping them together.
+void gaussSeidel(const CsrMatrix& A, const std::vector<int32_t>& split, const std::vector<double>& invDiag,
+                 const double* b, double* x, bool forward, bool fromZero) {
+  if (threadCount() < 2 || A.rows < kColumnThreadsMinRows)
+    return gaussSeidelSweep<2>(A, split, invDiag, b, x, forward, fromZero, 0);
+  detail::parallelFor(2, 1, [&](std::size_t column, std::size_t, std::size_t) {
+    gaussSeidelSweep<1>(A, split, invDiag, b, x, forward, fromZero, static_cast<int>(column));
+  });
 }
 
 /// One damped Jacobi step x ← x + ω D⁻¹ (b − A x); tmp is work space of x's size.
