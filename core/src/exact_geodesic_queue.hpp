@@ -1,12 +1,25 @@
-// exact_geodesic_queue.hpp (private) — the window propagation's priority queue: payloads in a pool whose
-// slots are reused, ordered by a 4-ary min-heap of (key, slot) pairs.
+// exact_geodesic_queue.hpp (private) — the window propagation's priority queue: a radix heap of
+// (key, payload) entries.
 //
-// The propagation pops every window it creates, tens of millions on large meshes, and the pop dominated
-// its profile: a 4-ary heap is half as deep as a binary one and a node's four children share a cache line
-// (16-byte entries), and the heap moves 16 bytes per step rather than the payload. After a pop the next
-// top's payload is prefetched, since the caller works on the popped one for a while.
+// The propagation pops every window it creates, tens of millions on large meshes, and a comparison
+// heap's pop (a 4-ary heap before this one) took half of its time in unpredictable branches. The
+// propagation's keys are monotone: a window's least distance is at least that of the window it came
+// from, and a vertex's distance at least that of the window that set it. A radix heap uses that: a
+// non-negative double's bits order like the double, and an entry sits in the bucket numbered by the
+// highest bit in which its key differs from the last key popped. Pushing is one count-leading-zeros;
+// popping takes bucket 0 (keys equal to the last one) or empties the first non-empty bucket, whose
+// least key becomes the last one, into lower buckets. An entry moves down at most 64 times, in practice
+// a few. Payloads live in the entries: popping from the back of bucket 0 then reads memory just
+// written, where a pool of payloads indexed from the heap cost a cache miss per pop.
+//
+// A key below the last one popped (rounding can make a child's least distance fall an ulp short of its
+// parent's) is queued as equal to it: it is popped next instead of in its exact place. The propagation
+// stays exact in any pop order (every window it drops is dominated by a path it measured); the order
+// only decides how much it prunes.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace straightest::detail {
@@ -14,68 +27,58 @@ namespace straightest::detail {
 template <typename Payload>
 class MinQueue {
  public:
-  bool empty() const { return heap_.empty(); }
-  size_t size() const { return heap_.size(); }
+  bool empty() const { return size_ == 0; }
+  size_t size() const { return size_; }
 
+  /// Queues payload with key (≥ 0; a key below the last one popped counts as the last one).
   void push(double key, const Payload& payload) {
-    int32_t slot;
-    if (free_.empty()) {
-      slot = static_cast<int32_t>(pool_.size());
-      pool_.push_back(payload);
-    } else {
-      slot = free_.back();
-      free_.pop_back();
-      pool_[slot] = payload;
-    }
-    // Sift up.
-    size_t i = heap_.size();
-    heap_.push_back(Entry{key, slot});
-    while (i > 0) {
-      const size_t parent = (i - 1) / 4;
-      if (!(key < heap_[parent].key)) break;
-      heap_[i] = heap_[parent];
-      i = parent;
-    }
-    heap_[i] = Entry{key, slot};
+    uint64_t bits = orderBits(key);
+    if (!(bits > last_)) bits = last_;
+    buckets_[bucketOf(bits)].push_back(Entry{bits, payload});
+    ++size_;
   }
 
-  /// Removes the entry of least key (ties: any) and returns its payload. Not on an empty queue.
+  /// Removes an entry of least key (ties: any) and returns its payload. Not on an empty queue.
   Payload pop() {
-    const int32_t slot = heap_.front().slot;
-    const Entry last = heap_.back();
-    heap_.pop_back();
-    const size_t n = heap_.size();
-    if (n > 0) {
-      // Sift `last` down from the root.
-      size_t i = 0;
-      for (;;) {
-        const size_t first = 4 * i + 1;
-        if (first >= n) break;
-        size_t best = first;
-        const size_t end = first + 4 < n ? first + 4 : n;
-        for (size_t c = first + 1; c < end; ++c)
-          if (heap_[c].key < heap_[best].key) best = c;
-        if (!(heap_[best].key < last.key)) break;
-        heap_[i] = heap_[best];
-        i = best;
-      }
-      heap_[i] = last;
-#if defined(__GNUC__) || defined(__clang__)
-      __builtin_prefetch(&pool_[heap_.front().slot]);
-#endif
+    if (buckets_[0].empty()) {
+      size_t b = 1;
+      while (buckets_[b].empty()) ++b;
+      std::vector<Entry>& from = buckets_[b];
+      uint64_t least = from.front().bits;
+      for (const Entry& e : from) least = e.bits < least ? e.bits : least;
+      last_ = least;
+      for (const Entry& e : from) buckets_[bucketOf(e.bits)].push_back(e);  // all land below b
+      from.clear();
     }
-    free_.push_back(slot);
-    return pool_[slot];
+    const Payload payload = buckets_[0].back().payload;
+    buckets_[0].pop_back();
+    --size_;
+    return payload;
   }
 
  private:
   struct Entry {
-    double key;
-    int32_t slot;
+    uint64_t bits;  // the key's bits (orderBits)
+    Payload payload;
   };
-  std::vector<Entry> heap_;
-  std::vector<Payload> pool_;
-  std::vector<int32_t> free_;
+
+  /// A non-negative double's bits, which order like the double (−0 is taken as +0).
+  static uint64_t orderBits(double key) {
+    key += 0.0;
+    uint64_t bits;
+    std::memcpy(&bits, &key, sizeof bits);
+    return bits >> 63 ? 0 : bits;  // a negative key (never made by the propagation) counts as 0
+  }
+
+  /// 0 for the last key popped, else 1 + the index of the highest bit in which bits differs from it.
+  size_t bucketOf(uint64_t bits) const {
+    const uint64_t differ = bits ^ last_;
+    return differ == 0 ? 0 : 64 - static_cast<size_t>(__builtin_clzll(differ));
+  }
+
+  std::array<std::vector<Entry>, 65> buckets_;
+  uint64_t last_ = 0;
+  size_t size_ = 0;
 };
 
 }  // namespace straightest::detail
