@@ -6,8 +6,7 @@ ensure_system_packages
 bash scripts/setup.sh libcgal-demo >/dev/null
 mkdir -p build/data
 [ -f build/data/data/meshes/nefertiti.off ] || tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C build/data data/meshes/nefertiti.off
-bash scripts/build.sh native >/dev/null
-bash scripts/build.sh wasm >/dev/null
+bash scripts/build.sh all >/dev/null  # native, and WASM with its benchmarks
 mkdir -p build/bench
 rm -f build/bench/cgal.md
 if [ "${SKIP_CGAL:-}" != 1 ]; then

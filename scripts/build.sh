@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds the native library, CLI and tests (build/native) and/or the WASM module and tests
-# (build/wasm), then copies the module into the npm package (wasm/dist); `sanitize` builds the native
+# Builds the native library, CLI, tests and benchmarks (build/native) and/or the WASM modules and
+# tests (build/wasm; `all` adds the WASM benchmarks that npm run bench runs), then copies the modules
+# into the npm package (wasm/dist); `sanitize` builds the native
 # tests with ASan + UBSan (build/sanitize); `module` builds only the WASM modules the npm package ships
 # (npm run build:wasm, npm start: no tests, no benchmarks): the single-threaded one and the threaded one
 # (pthreads, in wasm/dist/threads/), which the page uses under npm start's server (cross-origin
@@ -26,6 +27,8 @@ if [ "$target" = wasm ] || [ "$target" = module ] || [ "$target" = all ]; then
   cmake --preset wasm >/dev/null
   if [ "$target" = module ]; then
     cmake --build --preset wasm --target straightest_wasm straightest_wasm_threads
+  elif [ "$target" = wasm ]; then  # npm test: the modules and the tests; the WASM benchmarks are for `all`
+    cmake --build --preset wasm --target straightest_wasm straightest_wasm_threads core_tests
   else
     cmake --build --preset wasm
   fi

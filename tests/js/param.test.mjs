@@ -82,8 +82,10 @@ test('progress callbacks report the stages and can cancel', () => {
   assert.ok(seen.every(([, f]) => f >= 0 && f <= 1));
   assert.deepEqual(seen.at(-1), ['metrics', 1]);
   assert.throws(() => mesh.parameterize({ onProgress: (stage) => stage !== 'weights' }), (e) => e.category === 'cancelled');
+  // Stop at the second call: with threads the caller may see only the start and the end of the traces (the
+  // workers can run every chunk meanwhile), so a later call is not guaranteed to come.
   let calls = 0;
-  assert.throws(() => mesh.straightestPaths({ onProgress: () => ++calls < 5 }), (e) => e.category === 'cancelled');
+  assert.throws(() => mesh.straightestPaths({ onProgress: () => ++calls < 2 }), (e) => e.category === 'cancelled');
   const traced = [];
   mesh.straightestPaths({ points: false, onProgress: (s, f) => traced.push(f) });
   assert.equal(traced.at(-1), 1);
