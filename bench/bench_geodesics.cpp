@@ -97,20 +97,23 @@ void shootRow(const char* target, const Mesh& m) {
   }
   ShootOptions options;
   options.tangentNormal = base.normal;  // as shootGeodesicToward, with the base plane computed once
-  // Timed like the tracer's batch: lengths, ends and statuses, no polylines.
+  // Timed like the tracer's batch: lengths, ends and statuses, no polylines; one shooter per batch (its
+  // table of flat faces made within the time, as the tracer's batch sets up its own).
   options.keepPoints = false;
   int64_t shotFaces = 0;
   double shootMs = 1e300;
   for (int run = 0; run < kRuns; ++run) {
     shotFaces = 0;
     const double c0 = cpuMs();
+    const GeodesicShooter shooter = GeodesicShooter::make(m.mesh).value();
     for (const auto& [dir, i] : shots) {
-      auto shot = shootGeodesic(m.mesh, s, dir, batch.length[i], options);
+      auto shot = shooter.shoot(s, dir, batch.length[i], options);
       if (shot) shotFaces += shot.value().facesCrossed;
     }
     shootMs = std::min(shootMs, cpuMs() - c0);
   }
-  // Again with polylines: their cost, and the closest approach to each target over the segments.
+  // Again with polylines, one shot at a time (the functions, no table): their cost, and the closest
+  // approach to each target over the segments.
   options.keepPoints = true;
   std::vector<double> miss;
   const double c1 = cpuMs();

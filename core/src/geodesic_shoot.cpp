@@ -3,13 +3,16 @@
 #include "straightest/geodesic_shoot.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
+#include "flat_faces.hpp"
 #include "straightest/base_plane.hpp"
 #include "straightest/enum_names.hpp"
 #include "straightest/straightest_path.hpp"
 #include "straightest/tolerances.hpp"
+#include "unfolding.hpp"
 
 namespace straightest {
 
@@ -43,23 +46,32 @@ double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
   return norm(p - (a + e * t));
 }
 
-/// A hint to start loading two cache lines (a no-op where the compiler has no prefetch).
-inline void prefetch(const void* a, const void* b) {
+/// A hint to start loading a cache line (a no-op where the compiler has no prefetch).
+inline void prefetch(const void* a) {
 #if defined(__GNUC__) || defined(__clang__)
   __builtin_prefetch(a);
-  __builtin_prefetch(b);
 #else
   (void)a;
-  (void)b;
 #endif
 }
 
 Error invalid(const std::string& message) { return Error{ErrorCode::InvalidArgument, message}; }
 
+/// The walk in 2D: the state is a face, a point and a unit direction in the face's flat frame
+/// (flat_faces.hpp). Crossing an edge moves both into the next face's frame through the corners the two
+/// faces share, so a step reads one record (the face entered) and no 3D data; 3D points are made only for
+/// the polyline, the miss distance and the end. Records come from `table` when there is one (a
+/// GeodesicShooter), else they are computed from the mesh per face (one shot).
 class Walk {
  public:
-  Walk(const TriMesh& mesh, GeodesicShot& shot, const ShootOptions& options, const Progress& progress)
-      : mesh_(mesh), shot_(shot), progress_(progress), report_(progress_, "shoot"), keep_(options.keepPoints) {
+  Walk(const TriMesh& mesh, const FlatFace* table, GeodesicShot& shot, const ShootOptions& options,
+       const Progress& progress)
+      : mesh_(mesh),
+        table_(table),
+        shot_(shot),
+        progress_(progress),
+        report_(progress_, "shoot"),
+        keep_(options.keepPoints) {
     const double perEdge = std::min(shot.requestedLength / mesh.meanEdgeLength(), 1e15);
     maxSteps_ = options.maxSteps > 0
                     ? options.maxSteps
@@ -76,52 +88,83 @@ class Walk {
     }
     shot_.points.push_back(s);
     shot_.positions.push_back(position(mesh_, s));
-    p_ = last_ = before_ = shot_.positions.back();
+    last_ = shot_.positions.back();
     lastPoint_ = s;
     trackMiss_ = isFinite(shot_.target);
-    if (trackMiss_) shot_.missDistance = norm(shot_.target - p_);
-    bool along = false;  // the start runs along an edge to vertex alongTo
-    int32_t alongTo = -1, alongFace = -1;
+    need3d_ = keep_ || trackMiss_;
+    if (trackMiss_) shot_.missDistance = norm(shot_.target - last_);
     if (s.kind == SurfacePoint::Kind::Face) {
-      face_ = s.index;
-      const Vec3 nf = mesh_.faceNormal(face_);
-      d_ = projected(tangent, nf);
-      if (!(norm(d_) > 1e-12 * norm(tangent))) return invalid("the direction is perpendicular to the source's face");
-      d_ = normalized(d_);
-    } else if (s.kind == SurfacePoint::Kind::Edge) {
+      const int32_t f = s.index;
+      const Vec3 nf = mesh_.faceNormal(f);
+      const Vec3 d = projected(tangent, nf);
+      if (!(norm(d) > 1e-12 * norm(tangent))) return invalid("the direction is perpendicular to the source's face");
+      shot_.direction = normalized(d);
+      enter(f, -1);
+      p_ = flat_.at(1) * s.bary[1] + flat_.at(2) * s.bary[2];
+      // The direction in the face's frame (x along halfedge 3f, y = n × x).
+      const Vec3& a = mesh_.position(mesh_.tail(3 * f));
+      const Vec3 x = normalized(mesh_.position(mesh_.head(3 * f)) - a);
+      d_ = mesh_.isDegenerateFace(f) ? Vec2{1, 0} : unit(Vec2{dot(d, x), dot(d, cross(nf, x))});
+      return walk();
+    }
+    if (s.kind == SurfacePoint::Kind::Edge) {
       const int32_t h = s.index;
       const Vec3 u = normalized(mesh_.position(mesh_.head(h)) - mesh_.position(mesh_.tail(h)));
       const Vec3 m = cross(n, u);
       const double x = dot(tangent, u), y = dot(tangent, m);
-      if (std::fabs(y) <= 1e-12 * norm(tangent)) {
-        along = true;
-        alongTo = x > 0 ? mesh_.head(h) : mesh_.tail(h);
-        alongFace = TriMesh::face(h);
-      } else if (y > 0) {
-        face_ = TriMesh::face(h);
-        skip_ = h;
-        d_ = directionInFace(mesh_, h, std::atan2(y, x));
-      } else {
-        const int32_t t = mesh_.twin(h);
-        if (t < 0) return invalid("the direction points off the surface: the source is on a boundary edge");
-        face_ = TriMesh::face(t);
-        skip_ = t;
-        d_ = directionInFace(mesh_, t, std::atan2(-y, -x));
+      if (std::fabs(y) <= 1e-12 * norm(tangent)) {  // along the edge, to one of its ends
+        const bool toHead = x > 0;
+        const int32_t to = toHead ? mesh_.head(h) : mesh_.tail(h);
+        shot_.direction = normalized(mesh_.position(to) - last_);
+        const int k = h % 3, toCorner = toHead ? (k == 2 ? 0 : k + 1) : k;
+        enter(TriMesh::face(h), -1);
+        p_ = pointOnEdge(k, s.t);
+        const Vec2 corner = flat_.at(toCorner);
+        arriveAtVertex(to, unfolding::length(corner - p_));
+        if (!passVertex(to, toCorner, p_ - corner)) return finish();
+        return walk();
       }
-    } else {
-      auto started = startAtVertex(s.index, tangent, n);
-      if (!started) return started.error();
+      const int32_t t = y > 0 ? h : mesh_.twin(h);
+      if (t < 0) return invalid("the direction points off the surface: the source is on a boundary edge");
+      const double beta = y > 0 ? std::atan2(y, x) : std::atan2(-y, -x);
+      shot_.direction = directionInFace(mesh_, t, beta);
+      enter(TriMesh::face(t), t % 3);
+      p_ = pointOnEdge(t % 3, t == h ? s.t : 1 - s.t);
+      d_ = turned(t % 3, beta);
+      return walk();
     }
-    shot_.direction = along ? normalized(mesh_.position(alongTo) - p_) : d_;
-    if (along) {
-      d_ = shot_.direction;
-      arriveAtVertex(alongTo);
-      if (!passVertex(alongTo, alongFace)) return finish();
-    }
+    auto started = startAtVertex(s.index, tangent, n);
+    if (!started) return started.error();
+    shot_.direction = directionInFace(mesh_, 3 * face_ + fromCorner_, leftAt_);
     return walk();
   }
 
  private:
+  static Vec2 unit(const Vec2& v) { return v / unfolding::length(v); }
+
+  FlatFace flatOf(int32_t f) const { return table_ ? table_[f] : flatFace(mesh_, f); }
+
+  /// The walk is now in face f, entered across its edge `through` (−1: it starts inside).
+  void enter(int32_t f, int through) {
+    face_ = f;
+    flat_ = flatOf(f);
+    entered_ = through;
+    fromCorner_ = -1;
+  }
+
+  static int nextCorner(int k) { return k == 2 ? 0 : k + 1; }
+  /// The point at t along edge k (corner k → corner k + 1) of the current face.
+  Vec2 pointOnEdge(int k, double t) const {
+    const Vec2 a = flat_.at(k);
+    return a + (flat_.at(nextCorner(k)) - a) * t;
+  }
+  /// The unit direction at angle beta from edge k (counter-clockwise, toward the face).
+  Vec2 turned(int k, double beta) const {
+    const Vec2 u = unit(flat_.at(nextCorner(k)) - flat_.at(k));
+    const double c = std::cos(beta), s = std::sin(beta);
+    return Vec2{u.x * c - u.y * s, u.x * s + u.y * c};
+  }
+
   /// At a vertex source: the face whose projected sector holds the tangent, at the same fraction of its
   /// corner angle; an interior vertex whose projection folds falls back to the angle scaled by θ/2π.
   Expected<bool> startAtVertex(int32_t v, const Vec3& tangent, const Vec3& n) {
@@ -133,7 +176,7 @@ class Walk {
       const Vec3 p2 = projected(mesh_.position(mesh_.tail(TriMesh::prev(h))) - pv, n);
       const double sector = signedAngle(p1, p2, n), a = signedAngle(p1, tangent, n);
       if (sector > 0 && a >= 0 && a <= sector) {
-        leaveVertex(v, h, cornerAngle(mesh_, h) * a / sector);
+        leaveVertex(h, cornerAngle(mesh_, h) * a / sector);
         return true;
       }
     }
@@ -143,21 +186,22 @@ class Walk {
     if (a < 0) a += kTwoPi;
     double total = 0;
     for (int32_t h : mesh_.outgoingHalfedges(v)) total += cornerAngle(mesh_, h);
-    turnAround(v, first, a * total / kTwoPi);
+    turnAround(first, a * total / kTwoPi);
     return true;
   }
 
-  /// Leaves vertex v into face(h) at angle beta from h: the walk then looks only at the opposite edge.
-  void leaveVertex(int32_t v, int32_t h, double beta) {
-    face_ = TriMesh::face(h);
-    d_ = directionInFace(mesh_, h, beta);
-    p_ = mesh_.position(v);
-    only_ = TriMesh::next(h);
-    skip_ = -1;
+  /// Leaves tail(h) into face(h) at angle beta from h: the walk then looks only at the opposite edge.
+  void leaveVertex(int32_t h, double beta) {
+    const int k = h % 3;
+    enter(TriMesh::face(h), -1);
+    fromCorner_ = k;
+    p_ = flat_.at(k);
+    d_ = turned(k, beta);
+    leftAt_ = beta;
   }
 
-  /// Leaves v at the angle `angle` counter-clockwise from halfedge h (reduced modulo the fan).
-  void turnAround(int32_t v, int32_t h, double angle) {
+  /// Leaves tail(h) at the angle `angle` counter-clockwise from halfedge h (reduced modulo the fan).
+  void turnAround(int32_t h, double angle) {
     for (int guard = 0; guard < 1 << 20; ++guard) {
       const double c = cornerAngle(mesh_, h);
       if (angle <= c) break;
@@ -169,56 +213,95 @@ class Walk {
       angle -= c;
       h = next;
     }
-    leaveVertex(v, h, std::max(angle, 0.0));
+    leaveVertex(h, std::max(angle, 0.0));
   }
 
-  /// The walk's next point: its segment's length and the closest approach to a target counted, the point
-  /// kept when the polyline is (keepPoints).
-  void record(const SurfacePoint& sp, const Vec3& x) {
-    shot_.length += norm(x - last_);
-    if (trackMiss_) shot_.missDistance = std::min(shot_.missDistance, segmentDistance(shot_.target, last_, x));
+  /// The walk's next point, `segment` from the previous one: its length and the closest approach to a
+  /// target counted, the point kept when the polyline is (keepPoints). `x` makes its 3D position, which
+  /// is needed only then (and at the end: see finish).
+  template <class Position>
+  void record(const SurfacePoint& sp, double segment, const Position& x) {
+    shot_.length += segment;
+    ++shot_.facesCrossed;
+    lastPoint_ = sp;
+    lastEdge_ = -1;
+    have3d_ = need3d_;
+    if (!need3d_) return;
+    const Vec3 q = x();
+    if (trackMiss_) shot_.missDistance = std::min(shot_.missDistance, segmentDistance(shot_.target, last_, q));
     if (keep_) {
       shot_.points.push_back(sp);
-      shot_.positions.push_back(x);
+      shot_.positions.push_back(q);
     }
-    ++shot_.facesCrossed;
-    before_ = last_;
-    last_ = p_ = x;
-    lastPoint_ = sp;
+    last_ = q;
   }
 
-  void arriveAtVertex(int32_t v) { record(SurfacePoint::vertex(v), mesh_.position(v)); }
+  /// The point at t on halfedge h (its twin `twin`): its surface point is made at the end only, unless
+  /// 3D points are needed as the walk goes.
+  void crossEdge(int32_t h, int32_t twin, double t, double segment) {
+    if (need3d_) {
+      record(edgePoint(h, twin, t), segment, [&] { return edgePosition(h, t); });
+      return;
+    }
+    shot_.length += segment;
+    ++shot_.facesCrossed;
+    lastEdge_ = h;
+    lastTwin_ = twin;
+    lastT_ = t;
+    have3d_ = false;
+  }
 
-  /// The vertex rule: half of θ(v) on each side. The incoming segment (from the previous point) lies in
-  /// face f. False when the walk stops here (a boundary vertex).
-  bool passVertex(int32_t v, int32_t f) {
+  Vec3 edgePosition(int32_t h, double t) const {
+    return mesh_.position(mesh_.tail(h)) * (1 - t) + mesh_.position(mesh_.head(h)) * t;
+  }
+
+  /// The canonical edge point (the smaller halfedge; t is away from the ends, which are vertex passings).
+  static SurfacePoint edgePoint(int32_t h, int32_t twin, double t) {
+    return twin >= 0 && twin < h ? SurfacePoint::edge(twin, 1 - t) : SurfacePoint::edge(h, t);
+  }
+
+  void arriveAtVertex(int32_t v, double segment) {
+    record(SurfacePoint::vertex(v), segment, [&] { return mesh_.position(v); });
+  }
+
+  /// The vertex rule: half of θ(v) on each side. v is corner k of the current face; `back` points from v
+  /// to the previous point (in the face's frame). False when the walk stops here (a boundary vertex).
+  bool passVertex(int32_t v, int k, Vec2 back) {
     ++shot_.vertexPassings;
     if (mesh_.isBoundaryVertex(v)) {
       shot_.status = ShootStatus::HitBoundary;
       return false;
     }
-    int32_t hv = -1;
-    for (int k = 0; k < 3; ++k)
-      if (mesh_.tail(3 * f + k) == v) hv = 3 * f + k;
-    const Vec3& pv = mesh_.position(v);
-    Vec3 back = before_ - pv;
-    if (!(norm(back) > 0)) back = -d_;
-    const Vec3 u = mesh_.position(mesh_.head(hv)) - pv;
-    const double alpha = std::clamp(signedAngle(u, back, mesh_.faceNormal(f)), 0.0, cornerAngle(mesh_, hv));
+    const int32_t hv = 3 * face_ + k;
+    if (!(dot(back, back) > 0)) back = -d_;
+    const Vec2 u = flat_.at(nextCorner(k)) - flat_.at(k);
+    const double alpha = std::clamp(std::atan2(cross(u, back), dot(u, back)), 0.0, cornerAngle(mesh_, hv));
     double total = 0;
     for (int32_t h : mesh_.outgoingHalfedges(v)) total += cornerAngle(mesh_, h);
-    turnAround(v, hv, alpha + total / 2);
+    turnAround(hv, alpha + total / 2);
     return true;
   }
 
   Expected<bool> finish() {
+    if (!have3d_) {  // the same 3D point as a walk that made them all
+      last_ = lastEdge_ >= 0 ? edgePosition(lastEdge_, lastT_) : position(mesh_, lastPoint_);
+      if (lastEdge_ >= 0) lastPoint_ = edgePoint(lastEdge_, lastTwin_, lastT_);
+    }
     shot_.end = lastPoint_;
     shot_.endPosition = last_;
     if (!keep_ && shot_.points.size() == 1 && shot_.facesCrossed > 0) {
-      shot_.points.push_back(lastPoint_);
-      shot_.positions.push_back(last_);
+      shot_.points.push_back(shot_.end);
+      shot_.positions.push_back(shot_.endPosition);
     }
     return true;
+  }
+
+  /// A hint to start loading the record of face(twin) (it may span two cache lines).
+  void prefetchFace(int32_t twin) const {
+    if (!table_ || twin < 0) return;
+    const FlatFace* r = table_ + TriMesh::face(twin);
+    prefetch(r);
+    prefetch(reinterpret_cast<const char*>(r) + sizeof(FlatFace) - 1);
   }
 
   Expected<bool> walk() {
@@ -234,47 +317,45 @@ class Walk {
         shot_.status = ShootStatus::ReachedLength;
         return finish();
       }
-      const Vec3 n = mesh_.faceNormal(face_);
-      // Corners and twins of the face in one cache line (the walk visits faces all over the mesh).
-      const FaceAdjacency& adjacency = mesh_.adjacency(face_);
-      const int32_t first = 3 * face_;
-      int32_t exit = -1;
+      const Vec2 p = p_, d = d_;
+      int exit = -1;  // the edge left through
       double exitS = kInf, exitT = 0;
-      // Triple products [x, y, n] as x · (y × n): d × n once per face, e × n once per edge considered.
-      const Vec3 dn = cross(d_, n);
-      auto consider = [&](int32_t h) {
-        const int32_t k = h - first;
-        const Vec3 a = mesh_.position(adjacency.corners[k]);
-        const Vec3 en = cross(mesh_.position(adjacency.corners[k == 2 ? 0 : k + 1]) - a, n);
-        const double den = dot(d_, en);
-        if (!(den > 0)) return;  // the ray does not leave through this edge
-        const Vec3 ap = a - p_;
+      // The ray p + s d leaves through edge a → a + e where it crosses from the face's side (den > 0) first.
+      auto consider = [&](int k, const Vec2& a, const Vec2& e) {
+        const double den = cross(d, e);
+        if (!(den > 0)) return;
+        const Vec2 ap = a - p;
         const double inverse = 1 / den;
-        const double s = dot(ap, en) * inverse;
+        const double s = cross(ap, e) * inverse;
         if (s < exitS) {
           exitS = s;
-          exitT = dot(ap, dn) * inverse;
-          exit = h;
+          exitT = cross(ap, d) * inverse;
+          exit = k;
         }
       };
-      if (skip_ >= 0) {
-        // Entered through skip_: the ray leaves through the edge on the side of the opposite corner it passes.
-        const int32_t nextH = TriMesh::next(skip_), prevH = TriMesh::prev(skip_);
-        // The walk is bound by memory latency (faces all over the mesh): start loading both faces it may
-        // enter next while this one is worked out.
-        for (int32_t beyond : {adjacency.twins[nextH - first], adjacency.twins[prevH - first]})
-          if (beyond >= 0) prefetch(&mesh_.adjacency(TriMesh::face(beyond)), &mesh_.faceNormal(TriMesh::face(beyond)));
-        const Vec3 c = mesh_.position(adjacency.corners[(skip_ - first + 2) % 3]);
-        consider(dot(c - p_, dn) < 0 ? nextH : prevH);
+      auto considerEdge = [&](int k) {
+        const Vec2 a = flat_.at(k);
+        consider(k, a, flat_.at(nextCorner(k)) - a);
+      };
+      if (entered_ >= 0) {
+        // Entered through edge j: the ray leaves through the edge on the side of the opposite corner it
+        // passes. The walk is bound by memory latency (faces all over the mesh): start loading both
+        // records it may read next while this face is worked out.
+        const int j1 = nextCorner(entered_), j2 = nextCorner(j1);
+        prefetchFace(flat_.twins[j1]);
+        prefetchFace(flat_.twins[j2]);
+        const Vec2 a = flat_.at(j1), o = flat_.at(j2), b = flat_.at(entered_);
+        // Selected without a branch (the side is a coin toss a branch predictor would lose).
+        const bool first = cross(o - p, d) < 0;
+        consider(first ? j1 : j2, first ? a : o, first ? o - a : b - o);
         if (exit < 0) {  // rounding at the corner: let both edges compete
-          consider(nextH);
-          consider(prevH);
+          considerEdge(j1);
+          considerEdge(j2);
         }
+      } else if (fromCorner_ >= 0) {
+        considerEdge(nextCorner(fromCorner_));
       } else {
-        for (int k = 0; k < 3; ++k) {
-          const int32_t h = 3 * face_ + k;
-          if (only_ < 0 || h == only_) consider(h);
-        }
+        for (int k = 0; k < 3; ++k) considerEdge(k);
       }
       if (exit < 0) {
         shot_.status = ShootStatus::NoExit;
@@ -282,67 +363,84 @@ class Walk {
       }
       exitS = std::max(exitS, 0.0);
       if (remaining <= exitS) {  // the length ends inside this face
-        const Vec3 q = p_ + d_ * remaining;
-        record(canonical(mesh_, faceCoordinates(face_, q), kExactSnap), q);
-        shot_.length = requested;  // the sum of the segments, but the last one is exactly what remained
-        shot_.status = ShootStatus::ReachedLength;
+        endInFace(p + d * remaining, remaining);
         return finish();
       }
-      const int32_t exitK = exit - first;
-      const int32_t tail = adjacency.corners[exitK], head = adjacency.corners[exitK == 2 ? 0 : exitK + 1];
-      const Vec3 edge = mesh_.position(head) - mesh_.position(tail);
+      const int exitHead = nextCorner(exit);
+      const Vec2 from = flat_.at(exit), edge = flat_.at(exitHead) - from;
       const double edgeLength2 = dot(edge, edge), tolerance2 = vertexTolerance_ * vertexTolerance_;
       const double t = std::clamp(exitT, 0.0, 1.0);
-      const int32_t vertex = t * t * edgeLength2 <= tolerance2               ? tail
-                             : (1 - t) * (1 - t) * edgeLength2 <= tolerance2 ? head
-                                                                             : -1;
-      if (vertex >= 0) {
-        arriveAtVertex(vertex);
-        if (!passVertex(vertex, face_)) return finish();
+      const int vertexCorner = t * t * edgeLength2 <= tolerance2               ? exit
+                               : (1 - t) * (1 - t) * edgeLength2 <= tolerance2 ? exitHead
+                                                                               : -1;
+      if (vertexCorner >= 0) {
+        const Vec2 at = flat_.at(vertexCorner);
+        const int32_t vertex = mesh_.tail(3 * face_ + vertexCorner);
+        arriveAtVertex(vertex, unfolding::length(at - p));
+        if (!passVertex(vertex, vertexCorner, p - at)) return finish();
         continue;
       }
-      const Vec3 x = mesh_.position(tail) * (1 - t) + mesh_.position(head) * t;
-      const int32_t twin = adjacency.twins[exitK];
-      // The canonical edge point (the smaller halfedge; t is away from the ends, which are vertex passings).
-      record(twin >= 0 && twin < exit ? SurfacePoint::edge(twin, 1 - t) : SurfacePoint::edge(exit, t), x);
+      const int32_t h = 3 * face_ + exit, twin = flat_.twins[exit];
+      crossEdge(h, twin, t, unfolding::length(from + edge * t - p));
       if (twin < 0) {
         shot_.status = ShootStatus::HitBoundary;
         return finish();
       }
-      // Unfold: keep the components along the edge and across it (into the next face).
-      const int32_t next = TriMesh::face(twin);
-      // (A rotation about the edge e: d = e (d·e)/|e|² + (n×e)(d·(n×e))/|e|² becomes the same with the next
-      // face's normal; the length stays 1 up to rounding, renormalized now and then.)
-      d_ = (edge * dot(d_, edge) + cross(mesh_.faceNormal(next), edge) * dot(d_, cross(n, edge))) / edgeLength2;
-      if ((step & 63) == 0) d_ = normalized(d_);
-      face_ = next;
-      skip_ = twin;
-      only_ = -1;
+      // Unfold: the twin runs from this edge's head to its tail, its face on the other side. The motion
+      // into the next face's frame takes `edge` to −g (g: the twin, tail to head, in that frame) and this
+      // edge's tail to the twin's head; d keeps its components along the edge and across it.
+      const double along = dot(d, edge), across = cross(edge, d), inverse2 = 1 / edgeLength2;
+      const int m = twin % 3;
+      enter(TriMesh::face(twin), m);
+      const Vec2 tailG = flat_.at(m), headG = flat_.at(nextCorner(m)), g = headG - tailG;
+      // d = (−g · along + perp(−g) · across) / |edge|², perp(x, y) = (−y, x).
+      d_ = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverse2;
+      if ((step & 63) == 0) d_ = unit(d_);
+      p_ = headG - g * t;
     }
   }
 
-  SurfacePoint faceCoordinates(int32_t f, const Vec3& q) const {
-    const Triangle& t = mesh_.triangle(f);
-    const Vec3 a = mesh_.position(t[0]), b = mesh_.position(t[1]), c = mesh_.position(t[2]);
-    const Vec3 n = cross(b - a, c - a);
-    const double area = dot(n, n);
-    const double wa = dot(cross(c - b, q - b), n) / area, wb = dot(cross(a - c, q - c), n) / area;
-    const double ca = std::max(wa, 0.0), cb = std::max(wb, 0.0), cc = std::max(1 - wa - wb, 0.0);
-    const double sum = ca + cb + cc;
-    return SurfacePoint::face(f, {ca / sum, cb / sum, cc / sum});
+  /// The walk's length ends at q (in the face's frame), `segment` from the previous point.
+  void endInFace(const Vec2& q, double segment) {
+    const int32_t f = face_;
+    const Vec2 c = flat_.corner;
+    // Barycentric coordinates of q with respect to the face's corners.
+    const double w2 = c.y > 0 ? q.y / c.y : 0;
+    const double w1 = flat_.length > 0 ? (q.x - w2 * c.x) / flat_.length : 0;
+    const double w[3] = {1 - w1 - w2, w1, w2};
+    std::array<double, 3> bary{};
+    double sum = 0;
+    for (int j = 0; j < 3; ++j) sum += bary[j] = std::max(w[j], 0.0);
+    for (double& b : bary) b /= sum;
+    const Triangle& corners = mesh_.triangle(f);
+    const Vec3& a = mesh_.position(corners[0]);
+    const Vec3 x = a + (mesh_.position(corners[1]) - a) * w1 + (mesh_.position(corners[2]) - a) * w2;
+    record(canonical(mesh_, SurfacePoint::face(f, bary), kExactSnap), segment, [&] { return x; });
+    last_ = x;
+    have3d_ = true;
+    shot_.length = shot_.requestedLength;  // the sum of the segments, but the last one is exactly what remained
+    shot_.status = ShootStatus::ReachedLength;
   }
 
   const TriMesh& mesh_;
+  const FlatFace* table_;
   GeodesicShot& shot_;
   const Progress& progress_;
   ThrottledProgress report_;
   int64_t maxSteps_ = 0;
   double vertexTolerance_ = 0;
-  bool keep_ = true, trackMiss_ = false;
-  int32_t face_ = -1, skip_ = -1, only_ = -1;
-  Vec3 p_, d_;
-  Vec3 last_, before_;  // the last point recorded, and the one before it (the segment into a vertex)
+  bool keep_ = true, trackMiss_ = false, need3d_ = false, have3d_ = true;
+  // The face and its record; entered across its edge entered_, or leaving its corner fromCorner_ (then
+  // only the opposite edge is an exit), or neither (−1, −1: a start inside the face or on an edge).
+  int32_t face_ = -1;
+  FlatFace flat_;
+  int entered_ = -1, fromCorner_ = -1;
+  Vec2 p_, d_;
+  double leftAt_ = 0;  // the angle of the last leaveVertex
+  Vec3 last_;          // the last point recorded in 3D (the source, when none was made since)
   SurfacePoint lastPoint_;
+  int32_t lastEdge_ = -1, lastTwin_ = -1;  // the last point, when it is an edge crossing not yet made a point
+  double lastT_ = 0;
 };
 
 /// Validates the source and the length; the source snapped as the tracer snaps its own.
@@ -354,33 +452,17 @@ Expected<SurfacePoint> prepare(const TriMesh& mesh, const SurfacePoint& source, 
   return canonical(mesh, valid.value(), kSnapSource);
 }
 
-Expected<GeodesicShot> shoot(const TriMesh& mesh, GeodesicShot shot, const Vec3& tangent, const Vec3& n,
-                             const ShootOptions& options, const Progress& progress) {
-  Walk walk(mesh, shot, options, progress);
+Expected<GeodesicShot> shoot(const TriMesh& mesh, const FlatFace* table, GeodesicShot shot, const Vec3& tangent,
+                             const Vec3& n, const ShootOptions& options, const Progress& progress) {
+  Walk walk(mesh, table, shot, options, progress);
   auto done = walk.run(tangent, n);
   if (!done) return done.error();
   return shot;
 }
 
-}  // namespace
-
-Expected<TangentFrame> tangentFrame(const TriMesh& mesh, const SurfacePoint& source) {
-  auto valid = validateSurfacePoint(mesh, source);
-  if (!valid) return valid.error();
-  const SurfacePoint s = canonical(mesh, valid.value(), kSnapSource);
-  const Vec3 n = areaWeightedNormal(mesh, s);
-  if (!(norm(n) > 0)) return Error{ErrorCode::Degenerate, "every face around the source is degenerate"};
-  const int32_t h = s.kind == SurfacePoint::Kind::Vertex ? mesh.vertexHalfedge(s.index)
-                    : s.kind == SurfacePoint::Kind::Edge ? s.index
-                                                         : 3 * s.index;
-  Vec3 axis = projected(mesh.position(mesh.head(h)) - mesh.position(mesh.tail(h)), n);
-  if (!(norm(axis) > 0)) return Error{ErrorCode::Degenerate, "the source's reference edge is along its normal"};
-  axis = normalized(axis);
-  return TangentFrame{n, axis, cross(n, axis)};
-}
-
-Expected<GeodesicShot> shootGeodesic(const TriMesh& mesh, const SurfacePoint& source, const Vec3& direction,
-                                     double length, const ShootOptions& options, const Progress& progress) {
+Expected<GeodesicShot> shootAlong(const TriMesh& mesh, const FlatFace* table, const SurfacePoint& source,
+                                  const Vec3& direction, double length, const ShootOptions& options,
+                                  const Progress& progress) {
   return guarded([&]() -> Expected<GeodesicShot> {
     if (!isFinite(direction)) return invalid("the direction is not finite");
     if (!(norm(direction) > 0)) return invalid("the direction has zero length");
@@ -401,22 +483,24 @@ Expected<GeodesicShot> shootGeodesic(const TriMesh& mesh, const SurfacePoint& so
     shot.source = s.value();
     shot.normal = n;
     shot.requestedLength = length;
-    return shoot(mesh, std::move(shot), normalized(tangent), n, options, progress);
+    return shoot(mesh, table, std::move(shot), normalized(tangent), n, options, progress);
   });
 }
 
-Expected<GeodesicShot> shootGeodesicAtAngle(const TriMesh& mesh, const SurfacePoint& source, double angle,
-                                            double length, const ShootOptions& options, const Progress& progress) {
+Expected<GeodesicShot> shootAtAngle(const TriMesh& mesh, const FlatFace* table, const SurfacePoint& source,
+                                    double angle, double length, const ShootOptions& options,
+                                    const Progress& progress) {
   if (!std::isfinite(angle)) return invalid("the angle is not finite");
   auto frame = tangentFrame(mesh, source);
   if (!frame) return frame.error();
   const TangentFrame& f = frame.value();
-  return shootGeodesic(mesh, source, f.axis0 * std::cos(angle) + f.axis90 * std::sin(angle), length, options, progress);
+  return shootAlong(mesh, table, source, f.axis0 * std::cos(angle) + f.axis90 * std::sin(angle), length, options,
+                    progress);
 }
 
-Expected<GeodesicShot> shootGeodesicToward(const TriMesh& mesh, const SurfacePoint& source,
-                                           const SurfacePoint& destination, std::optional<double> length,
-                                           const ShootOptions& options, const Progress& progress) {
+Expected<GeodesicShot> shootToward(const TriMesh& mesh, const FlatFace* table, const SurfacePoint& source,
+                                   const SurfacePoint& destination, std::optional<double> length,
+                                   const ShootOptions& options, const Progress& progress) {
   return guarded([&]() -> Expected<GeodesicShot> {
     auto s = prepare(mesh, source, length.value_or(1.0), true);
     if (!s) return s.error();
@@ -438,9 +522,75 @@ Expected<GeodesicShot> shootGeodesicToward(const TriMesh& mesh, const SurfacePoi
     shot.requestedLength = length ? *length : straightest;
     shot.target = target;
     if (straightest < kInf) shot.straightestDistance = straightest;
-    auto result = shoot(mesh, std::move(shot), *tangent, base.normal, options, progress);
+    auto result = shoot(mesh, table, std::move(shot), *tangent, base.normal, options, progress);
     return result;  // the walk measured missDistance as it went
   });
+}
+
+}  // namespace
+
+Expected<TangentFrame> tangentFrame(const TriMesh& mesh, const SurfacePoint& source) {
+  auto valid = validateSurfacePoint(mesh, source);
+  if (!valid) return valid.error();
+  const SurfacePoint s = canonical(mesh, valid.value(), kSnapSource);
+  const Vec3 n = areaWeightedNormal(mesh, s);
+  if (!(norm(n) > 0)) return Error{ErrorCode::Degenerate, "every face around the source is degenerate"};
+  const int32_t h = s.kind == SurfacePoint::Kind::Vertex ? mesh.vertexHalfedge(s.index)
+                    : s.kind == SurfacePoint::Kind::Edge ? s.index
+                                                         : 3 * s.index;
+  Vec3 axis = projected(mesh.position(mesh.head(h)) - mesh.position(mesh.tail(h)), n);
+  if (!(norm(axis) > 0)) return Error{ErrorCode::Degenerate, "the source's reference edge is along its normal"};
+  axis = normalized(axis);
+  return TangentFrame{n, axis, cross(n, axis)};
+}
+
+Expected<GeodesicShot> shootGeodesic(const TriMesh& mesh, const SurfacePoint& source, const Vec3& direction,
+                                     double length, const ShootOptions& options, const Progress& progress) {
+  return shootAlong(mesh, nullptr, source, direction, length, options, progress);
+}
+
+Expected<GeodesicShot> shootGeodesicAtAngle(const TriMesh& mesh, const SurfacePoint& source, double angle,
+                                            double length, const ShootOptions& options, const Progress& progress) {
+  return shootAtAngle(mesh, nullptr, source, angle, length, options, progress);
+}
+
+Expected<GeodesicShot> shootGeodesicToward(const TriMesh& mesh, const SurfacePoint& source,
+                                           const SurfacePoint& destination, std::optional<double> length,
+                                           const ShootOptions& options, const Progress& progress) {
+  return shootToward(mesh, nullptr, source, destination, length, options, progress);
+}
+
+struct GeodesicShooter::Impl {
+  const TriMesh& mesh;
+  std::vector<FlatFace> faces;
+};
+
+Expected<GeodesicShooter> GeodesicShooter::make(const TriMesh& mesh) {
+  return guarded([&]() -> Expected<GeodesicShooter> {
+    GeodesicShooter shooter;
+    shooter.impl_ = std::make_unique<Impl>(Impl{mesh, flatFaces(mesh)});
+    return shooter;
+  });
+}
+GeodesicShooter::GeodesicShooter() = default;
+GeodesicShooter::~GeodesicShooter() = default;
+GeodesicShooter::GeodesicShooter(GeodesicShooter&&) noexcept = default;
+GeodesicShooter& GeodesicShooter::operator=(GeodesicShooter&&) noexcept = default;
+
+Expected<GeodesicShot> GeodesicShooter::shoot(const SurfacePoint& source, const Vec3& direction, double length,
+                                              const ShootOptions& options, const Progress& progress) const {
+  return shootAlong(impl_->mesh, impl_->faces.data(), source, direction, length, options, progress);
+}
+
+Expected<GeodesicShot> GeodesicShooter::shootAtAngle(const SurfacePoint& source, double angle, double length,
+                                                     const ShootOptions& options, const Progress& progress) const {
+  return straightest::shootAtAngle(impl_->mesh, impl_->faces.data(), source, angle, length, options, progress);
+}
+
+Expected<GeodesicShot> GeodesicShooter::shootToward(const SurfacePoint& source, const SurfacePoint& destination,
+                                                    std::optional<double> length, const ShootOptions& options,
+                                                    const Progress& progress) const {
+  return straightest::shootToward(impl_->mesh, impl_->faces.data(), source, destination, length, options, progress);
 }
 
 }  // namespace straightest
