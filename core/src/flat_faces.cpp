@@ -14,8 +14,9 @@ FlatFace flatFace(const TriMesh& mesh, int32_t f) {
   if (mesh.isDegenerateFace(f)) return r;
   const Vec3& a = mesh.position(face.corners[0]);
   const Vec3 e = mesh.position(face.corners[1]) - a, w = mesh.position(face.corners[2]) - a;
-  r.length = std::sqrt(dot(e, e));
-  r.corner = Vec2{dot(w, e), norm(cross(e, w))} / r.length;
+  const double length = std::sqrt(dot(e, e));
+  r.x = {0, length, dot(w, e) / length};
+  r.y = {0, 0, norm(cross(e, w)) / length};
   return r;
 }
 

@@ -1,12 +1,14 @@
 // flat_faces.hpp (private) — every face laid flat in the frame of its first halfedge, with its twins: all
-// a straight walk across faces reads per face, in one 40-byte record.
+// a straight walk across faces reads per face, in one 64-byte record (one cache line).
 //
-// Frame of face f: corner 0 at (0, 0), corner 1 at (length, 0), corner 2 at `corner` (y ≥ 0); edge k
-// runs from corner k to corner k + 1 (halfedge 3f + k), and twins[k] is its twin (−1 on the boundary).
+// Frame of face f: corner 0 at (0, 0), corner 1 on the positive x axis, corner 2 above it (y ≥ 0); edge
+// k runs from corner k to corner k + 1 (halfedge 3f + k), and twins[k] is its twin (−1 on the boundary).
+// The zeros are stored too, so that a walk picks a corner by its number without a branch.
 // A walk crossing edge k moves into the frame of face(twins[k]) with the two faces' corners on that edge
 // alone. Records come from 3D positions (corner 2 by projection, not from edge lengths, so a thin face
 // keeps its accuracy); a degenerate face (trimesh.hpp) has all corners at (0, 0), which no ray leaves.
-// Half the bytes per face of the walk's 3D data (corners, twins, normal, positions), and no dependent loads.
+// About the bytes per face of the 3D data a walk would read (corners and twins, normal, positions), in one
+// load instead of two dependent ones.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -17,16 +19,14 @@
 
 namespace straightest {
 
-struct FlatFace {
-  double length = 0;  // |corner 1 − corner 0|
-  Vec2 corner;
+struct alignas(64) FlatFace {
+  std::array<double, 3> x{}, y{};  // corner k at (x[k], y[k]): (0, 0), (length of edge 0, 0), above the x axis
   std::array<int32_t, 3> twins{-1, -1, -1};
-  int32_t unused = 0;
 
   /// Corner k (0, 1 or 2) in the face's frame.
-  Vec2 at(int k) const { return k == 0 ? Vec2{} : k == 1 ? Vec2{length, 0} : corner; }
+  Vec2 at(int k) const { return Vec2{x[k], y[k]}; }
 };
-static_assert(sizeof(FlatFace) == 40, "records packed: a face's record spans one or two cache lines");
+static_assert(sizeof(FlatFace) == 64, "one cache line per face");
 
 /// The record of face f, from the mesh's positions.
 FlatFace flatFace(const TriMesh& mesh, int32_t f);

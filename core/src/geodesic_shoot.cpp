@@ -100,7 +100,7 @@ class Walk {
       if (!(norm(d) > 1e-12 * norm(tangent))) return invalid("the direction is perpendicular to the source's face");
       shot_.direction = normalized(d);
       enter(f, -1);
-      p_ = flat_.at(1) * s.bary[1] + flat_.at(2) * s.bary[2];
+      p_ = flat_->at(1) * s.bary[1] + flat_->at(2) * s.bary[2];
       // The direction in the face's frame (x along halfedge 3f, y = n × x).
       const Vec3& a = mesh_.position(mesh_.tail(3 * f));
       const Vec3 x = normalized(mesh_.position(mesh_.head(3 * f)) - a);
@@ -119,7 +119,7 @@ class Walk {
         const int k = h % 3, toCorner = toHead ? (k == 2 ? 0 : k + 1) : k;
         enter(TriMesh::face(h), -1);
         p_ = pointOnEdge(k, s.t);
-        const Vec2 corner = flat_.at(toCorner);
+        const Vec2 corner = flat_->at(toCorner);
         arriveAtVertex(to, unfolding::length(corner - p_));
         if (!passVertex(to, toCorner, p_ - corner)) return finish();
         return walk();
@@ -142,7 +142,12 @@ class Walk {
  private:
   static Vec2 unit(const Vec2& v) { return v / unfolding::length(v); }
 
-  FlatFace flatOf(int32_t f) const { return table_ ? table_[f] : flatFace(mesh_, f); }
+  /// Face f's record: in the table, or made now (it stays valid until the next call).
+  const FlatFace* flatOf(int32_t f) {
+    if (table_) return table_ + f;
+    made_ = flatFace(mesh_, f);
+    return &made_;
+  }
 
   /// The walk is now in face f, entered across its edge `through` (−1: it starts inside).
   void enter(int32_t f, int through) {
@@ -152,15 +157,16 @@ class Walk {
     fromCorner_ = -1;
   }
 
-  static int nextCorner(int k) { return k == 2 ? 0 : k + 1; }
+  static constexpr int kNext[3] = {1, 2, 0};
+  static int nextCorner(int k) { return kNext[k]; }
   /// The point at t along edge k (corner k → corner k + 1) of the current face.
   Vec2 pointOnEdge(int k, double t) const {
-    const Vec2 a = flat_.at(k);
-    return a + (flat_.at(nextCorner(k)) - a) * t;
+    const Vec2 a = flat_->at(k);
+    return a + (flat_->at(nextCorner(k)) - a) * t;
   }
   /// The unit direction at angle beta from edge k (counter-clockwise, toward the face).
   Vec2 turned(int k, double beta) const {
-    const Vec2 u = unit(flat_.at(nextCorner(k)) - flat_.at(k));
+    const Vec2 u = unit(flat_->at(nextCorner(k)) - flat_->at(k));
     const double c = std::cos(beta), s = std::sin(beta);
     return Vec2{u.x * c - u.y * s, u.x * s + u.y * c};
   }
@@ -195,7 +201,7 @@ class Walk {
     const int k = h % 3;
     enter(TriMesh::face(h), -1);
     fromCorner_ = k;
-    p_ = flat_.at(k);
+    p_ = flat_->at(k);
     d_ = turned(k, beta);
     leftAt_ = beta;
   }
@@ -274,7 +280,7 @@ class Walk {
     }
     const int32_t hv = 3 * face_ + k;
     if (!(dot(back, back) > 0)) back = -d_;
-    const Vec2 u = flat_.at(nextCorner(k)) - flat_.at(k);
+    const Vec2 u = flat_->at(nextCorner(k)) - flat_->at(k);
     const double alpha = std::clamp(std::atan2(cross(u, back), dot(u, back)), 0.0, cornerAngle(mesh_, hv));
     double total = 0;
     for (int32_t h : mesh_.outgoingHalfedges(v)) total += cornerAngle(mesh_, h);
@@ -296,29 +302,54 @@ class Walk {
     return true;
   }
 
-  /// A hint to start loading the record of face(twin) (it may span two cache lines).
+  /// A hint to start loading the record of face(twin).
   void prefetchFace(int32_t twin) const {
     if (!table_ || twin < 0) return;
     const FlatFace* r = table_ + TriMesh::face(twin);
     prefetch(r);
-    prefetch(reinterpret_cast<const char*>(r) + sizeof(FlatFace) - 1);
   }
 
   Expected<bool> walk() {
-    const double requested = shot_.requestedLength;
+    const double requested = shot_.requestedLength, tolerance2 = vertexTolerance_ * vertexTolerance_;
+    // The state lives in locals (registers) while the walk crosses edges; the members are written back
+    // around the rare events that read and change them (a vertex, the end, a 3D point).
+    int32_t face = face_;
+    const FlatFace* flat = flat_;
+    int entered = entered_, fromCorner = fromCorner_;
+    Vec2 p = p_, d = d_;
+    double length = shot_.length;
+    int64_t faces = shot_.facesCrossed;
+    auto store = [&] {
+      face_ = face;
+      flat_ = flat;
+      entered_ = entered;
+      fromCorner_ = fromCorner;
+      p_ = p;
+      d_ = d;
+      shot_.length = length;
+      shot_.facesCrossed = faces;
+    };
+    auto load = [&] {
+      face = face_;
+      flat = flat_;
+      entered = entered_;
+      fromCorner = fromCorner_;
+      p = p_;
+      d = d_;
+      length = shot_.length;
+      faces = shot_.facesCrossed;
+    };
+    auto stop = [&](ShootStatus status) {
+      store();
+      shot_.status = status;
+      return finish();
+    };
     for (int64_t step = 0;; ++step) {
-      if (step >= maxSteps_) {
-        shot_.status = ShootStatus::StepLimit;
-        return finish();
-      }
-      if ((step & 65535) == 65535 && !report_(shot_.length / requested)) return cancelledError("geodesic shooting");
-      const double remaining = requested - shot_.length;
-      if (remaining <= 0) {  // a vertex passing ended within rounding of the length
-        shot_.status = ShootStatus::ReachedLength;
-        return finish();
-      }
-      const Vec2 p = p_, d = d_;
-      int exit = -1;  // the edge left through
+      if (step >= maxSteps_) return stop(ShootStatus::StepLimit);
+      if ((step & 65535) == 65535 && !report_(length / requested)) return cancelledError("geodesic shooting");
+      const double remaining = requested - length;
+      if (remaining <= 0) return stop(ShootStatus::ReachedLength);  // a vertex passing ended within rounding
+      int exit = -1;                                                // the edge left through
       double exitS = kInf, exitT = 0;
       // The ray p + s d leaves through edge a → a + e where it crosses from the face's side (den > 0) first.
       auto consider = [&](int k, const Vec2& a, const Vec2& e) {
@@ -334,79 +365,101 @@ class Walk {
         }
       };
       auto considerEdge = [&](int k) {
-        const Vec2 a = flat_.at(k);
-        consider(k, a, flat_.at(nextCorner(k)) - a);
+        const Vec2 a = flat->at(k);
+        consider(k, a, flat->at(nextCorner(k)) - a);
       };
-      if (entered_ >= 0) {
+      if (entered >= 0) {
         // Entered through edge j: the ray leaves through the edge on the side of the opposite corner it
         // passes. The walk is bound by memory latency (faces all over the mesh): start loading both
         // records it may read next while this face is worked out.
-        const int j1 = nextCorner(entered_), j2 = nextCorner(j1);
-        prefetchFace(flat_.twins[j1]);
-        prefetchFace(flat_.twins[j2]);
-        const Vec2 a = flat_.at(j1), o = flat_.at(j2), b = flat_.at(entered_);
-        // Selected without a branch (the side is a coin toss a branch predictor would lose).
-        const bool first = cross(o - p, d) < 0;
-        consider(first ? j1 : j2, first ? a : o, first ? o - a : b - o);
+        const int j1 = nextCorner(entered), j2 = nextCorner(j1);
+        prefetchFace(flat->twins[j1]);
+        prefetchFace(flat->twins[j2]);
+        // Both candidates (j1: a → o, j2: o → b) are worked out, then one is picked by the side of o: the
+        // two run side by side instead of one after the side test, and the pick needs no branch (the side
+        // is a coin toss a branch predictor would lose).
+        const Vec2 a = flat->at(j1), o = flat->at(j2), b = flat->at(entered);
+        const Vec2 e1 = o - a, e2 = b - o, ap1 = a - p, ap2 = o - p;
+        const double den1 = cross(d, e1), den2 = cross(d, e2);
+        const double inverse1 = 1 / den1, inverse2 = 1 / den2;
+        const double s1 = cross(ap1, e1) * inverse1, s2 = cross(ap2, e2) * inverse2;
+        const double t1 = cross(ap1, d) * inverse1, t2 = cross(ap2, d) * inverse2;
+        const bool first = cross(ap2, d) < 0;
+        if (first ? den1 > 0 && s1 < kInf : den2 > 0 && s2 < kInf) {  // as consider() would take it
+          exit = first ? j1 : j2;
+          exitS = first ? s1 : s2;
+          exitT = first ? t1 : t2;
+        }
         if (exit < 0) {  // rounding at the corner: let both edges compete
           considerEdge(j1);
           considerEdge(j2);
         }
-      } else if (fromCorner_ >= 0) {
-        considerEdge(nextCorner(fromCorner_));
+      } else if (fromCorner >= 0) {
+        considerEdge(nextCorner(fromCorner));
       } else {
         for (int k = 0; k < 3; ++k) considerEdge(k);
       }
-      if (exit < 0) {
-        shot_.status = ShootStatus::NoExit;
-        return finish();
-      }
+      if (exit < 0) return stop(ShootStatus::NoExit);
       exitS = std::max(exitS, 0.0);
       if (remaining <= exitS) {  // the length ends inside this face
+        store();
         endInFace(p + d * remaining, remaining);
         return finish();
       }
       const int exitHead = nextCorner(exit);
-      const Vec2 from = flat_.at(exit), edge = flat_.at(exitHead) - from;
-      const double edgeLength2 = dot(edge, edge), tolerance2 = vertexTolerance_ * vertexTolerance_;
+      const Vec2 from = flat->at(exit), edge = flat->at(exitHead) - from;
+      const double edgeLength2 = dot(edge, edge);
       const double t = std::clamp(exitT, 0.0, 1.0);
       const int vertexCorner = t * t * edgeLength2 <= tolerance2               ? exit
                                : (1 - t) * (1 - t) * edgeLength2 <= tolerance2 ? exitHead
                                                                                : -1;
       if (vertexCorner >= 0) {
-        const Vec2 at = flat_.at(vertexCorner);
-        const int32_t vertex = mesh_.tail(3 * face_ + vertexCorner);
+        const Vec2 at = flat->at(vertexCorner);
+        const int32_t vertex = mesh_.tail(3 * face + vertexCorner);
+        store();
         arriveAtVertex(vertex, unfolding::length(at - p));
         if (!passVertex(vertex, vertexCorner, p - at)) return finish();
+        load();
         continue;
       }
-      const int32_t h = 3 * face_ + exit, twin = flat_.twins[exit];
-      crossEdge(h, twin, t, unfolding::length(from + edge * t - p));
-      if (twin < 0) {
-        shot_.status = ShootStatus::HitBoundary;
-        return finish();
+      const int32_t h = 3 * face + exit, twin = flat->twins[exit];
+      const double segment = unfolding::length(from + edge * t - p);
+      if (need3d_) {
+        store();
+        crossEdge(h, twin, t, segment);
+        load();
+      } else {
+        length += segment;
+        ++faces;
+        lastEdge_ = h;
+        lastTwin_ = twin;
+        lastT_ = t;
+        have3d_ = false;
       }
+      if (twin < 0) return stop(ShootStatus::HitBoundary);
       // Unfold: the twin runs from this edge's head to its tail, its face on the other side. The motion
       // into the next face's frame takes `edge` to −g (g: the twin, tail to head, in that frame) and this
       // edge's tail to the twin's head; d keeps its components along the edge and across it.
       const double along = dot(d, edge), across = cross(edge, d), inverse2 = 1 / edgeLength2;
-      const int m = twin % 3;
-      enter(TriMesh::face(twin), m);
-      const Vec2 tailG = flat_.at(m), headG = flat_.at(nextCorner(m)), g = headG - tailG;
+      face = TriMesh::face(twin);
+      entered = twin - 3 * face;
+      fromCorner = -1;
+      flat = flatOf(face);
+      const Vec2 tailG = flat->at(entered), headG = flat->at(nextCorner(entered)), g = headG - tailG;
       // d = (−g · along + perp(−g) · across) / |edge|², perp(x, y) = (−y, x).
-      d_ = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverse2;
-      if ((step & 63) == 0) d_ = unit(d_);
-      p_ = headG - g * t;
+      d = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverse2;
+      if ((step & 63) == 0) d = unit(d);
+      p = headG - g * t;
     }
   }
 
   /// The walk's length ends at q (in the face's frame), `segment` from the previous point.
   void endInFace(const Vec2& q, double segment) {
     const int32_t f = face_;
-    const Vec2 c = flat_.corner;
+    const Vec2 c = flat_->at(2);
     // Barycentric coordinates of q with respect to the face's corners.
     const double w2 = c.y > 0 ? q.y / c.y : 0;
-    const double w1 = flat_.length > 0 ? (q.x - w2 * c.x) / flat_.length : 0;
+    const double w1 = flat_->x[1] > 0 ? (q.x - w2 * c.x) / flat_->x[1] : 0;
     const double w[3] = {1 - w1 - w2, w1, w2};
     std::array<double, 3> bary{};
     double sum = 0;
@@ -433,7 +486,8 @@ class Walk {
   // The face and its record; entered across its edge entered_, or leaving its corner fromCorner_ (then
   // only the opposite edge is an exit), or neither (−1, −1: a start inside the face or on an edge).
   int32_t face_ = -1;
-  FlatFace flat_;
+  const FlatFace* flat_ = nullptr;
+  FlatFace made_;  // the record of the current face, without a table
   int entered_ = -1, fromCorner_ = -1;
   Vec2 p_, d_;
   double leftAt_ = 0;  // the angle of the last leaveVertex
