@@ -11,6 +11,7 @@
 // load instead of two dependent ones.
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -28,8 +29,22 @@ struct alignas(64) FlatFace {
 };
 static_assert(sizeof(FlatFace) == 64, "one cache line per face");
 
-/// The record of face f, from the mesh's positions.
-FlatFace flatFace(const TriMesh& mesh, int32_t f);
+/// The record of face f, from the mesh's positions, into r (inline: a walk without a table makes one
+/// per face it enters).
+inline void makeFlatFace(const TriMesh& mesh, int32_t f, FlatFace& r) {
+  const FaceAdjacency& face = mesh.adjacency(f);
+  r.twins = face.twins;
+  if (mesh.isDegenerateFace(f)) {
+    r.x = {0, 0, 0};
+    r.y = {0, 0, 0};
+    return;
+  }
+  const Vec3& a = mesh.position(face.corners[0]);
+  const Vec3 e = mesh.position(face.corners[1]) - a, w = mesh.position(face.corners[2]) - a;
+  const double length = std::sqrt(dot(e, e)), inverse = 1 / length;
+  r.x = {0, length, dot(w, e) * inverse};
+  r.y = {0, 0, norm(cross(e, w)) * inverse};
+}
 
 /// Every face's record, computed on all threads.
 std::vector<FlatFace> flatFaces(const TriMesh& mesh);

@@ -145,7 +145,7 @@ class Walk {
   /// Face f's record: in the table, or made now (it stays valid until the next call).
   const FlatFace* flatOf(int32_t f) {
     if (table_) return table_ + f;
-    made_ = flatFace(mesh_, f);
+    makeFlatFace(mesh_, f, made_);
     return &made_;
   }
 
@@ -232,8 +232,11 @@ class Walk {
     lastPoint_ = sp;
     lastEdge_ = -1;
     have3d_ = need3d_;
-    if (!need3d_) return;
-    const Vec3 q = x();
+    if (need3d_) record3d(sp, x());
+  }
+
+  /// The 3D side of record: the miss distance, the polyline.
+  void record3d(const SurfacePoint& sp, const Vec3& q) {
     if (trackMiss_) shot_.missDistance = std::min(shot_.missDistance, segmentDistance(shot_.target, last_, q));
     if (keep_) {
       shot_.points.push_back(sp);
@@ -242,15 +245,15 @@ class Walk {
     last_ = q;
   }
 
-  /// The point at t on halfedge h (its twin `twin`): its surface point is made at the end only, unless
-  /// 3D points are needed as the walk goes.
-  void crossEdge(int32_t h, int32_t twin, double t, double segment) {
+  /// The point at t on halfedge h (its twin `twin`), once counted: its surface point is made at the end
+  /// only, unless 3D points are needed as the walk goes.
+  void crossEdge(int32_t h, int32_t twin, double t) {
     if (need3d_) {
-      record(edgePoint(h, twin, t), segment, [&] { return edgePosition(h, t); });
+      lastPoint_ = edgePoint(h, twin, t);
+      lastEdge_ = -1;
+      record3d(lastPoint_, edgePosition(h, t));
       return;
     }
-    shot_.length += segment;
-    ++shot_.facesCrossed;
     lastEdge_ = h;
     lastTwin_ = twin;
     lastT_ = t;
@@ -424,18 +427,9 @@ class Walk {
       }
       const int32_t h = 3 * face + exit, twin = flat->twins[exit];
       const double segment = unfolding::length(from + edge * t - p);
-      if (need3d_) {
-        store();
-        crossEdge(h, twin, t, segment);
-        load();
-      } else {
-        length += segment;
-        ++faces;
-        lastEdge_ = h;
-        lastTwin_ = twin;
-        lastT_ = t;
-        have3d_ = false;
-      }
+      length += segment;
+      ++faces;
+      crossEdge(h, twin, t);
       if (twin < 0) return stop(ShootStatus::HitBoundary);
       // Unfold: the twin runs from this edge's head to its tail, its face on the other side. The motion
       // into the next face's frame takes `edge` to −g (g: the twin, tail to head, in that frame) and this
