@@ -352,6 +352,8 @@ class Walk {
       if (remaining <= 0) return stop(ShootStatus::ReachedLength);  // a vertex passing ended within rounding
       int exit = -1;                                                // the edge left through
       double exitS = kInf, exitT = 0;
+      Vec2 from, edge;  // the exit edge's tail and extent, its squared length and that's inverse
+      double edgeLength2 = -1, inverseLength2 = 0;
       // The ray p + s d leaves through edge a → a + e where it crosses from the face's side (den > 0) first.
       auto consider = [&](int k, const Vec2& a, const Vec2& e) {
         const double den = cross(d, e);
@@ -385,11 +387,17 @@ class Walk {
         const double inverse1 = 1 / den1, inverse2 = 1 / den2;
         const double s1 = cross(ap1, e1) * inverse1, s2 = cross(ap2, e2) * inverse2;
         const double t1 = cross(ap1, d) * inverse1, t2 = cross(ap2, d) * inverse2;
+        const double squared1 = dot(e1, e1), squared2 = dot(e2, e2);
+        const double inverseSquared1 = 1 / squared1, inverseSquared2 = 1 / squared2;
         const bool first = cross(ap2, d) < 0;
         if (first ? den1 > 0 && s1 < kInf : den2 > 0 && s2 < kInf) {  // as consider() would take it
           exit = first ? j1 : j2;
           exitS = first ? s1 : s2;
           exitT = first ? t1 : t2;
+          from = first ? a : o;
+          edge = first ? e1 : e2;
+          edgeLength2 = first ? squared1 : squared2;
+          inverseLength2 = first ? inverseSquared1 : inverseSquared2;
         }
         if (exit < 0) {  // rounding at the corner: let both edges compete
           considerEdge(j1);
@@ -408,8 +416,12 @@ class Walk {
         return finish();
       }
       const int exitHead = nextCorner(exit);
-      const Vec2 from = flat->at(exit), edge = flat->at(exitHead) - from;
-      const double edgeLength2 = dot(edge, edge);
+      if (edgeLength2 < 0) {  // not worked out with the candidates
+        from = flat->at(exit);
+        edge = flat->at(exitHead) - from;
+        edgeLength2 = dot(edge, edge);
+        inverseLength2 = 1 / edgeLength2;
+      }
       const double t = std::clamp(exitT, 0.0, 1.0);
       const int vertexCorner = t * t * edgeLength2 <= tolerance2               ? exit
                                : (1 - t) * (1 - t) * edgeLength2 <= tolerance2 ? exitHead
@@ -432,14 +444,14 @@ class Walk {
       // Unfold: the twin runs from this edge's head to its tail, its face on the other side. The motion
       // into the next face's frame takes `edge` to −g (g: the twin, tail to head, in that frame) and this
       // edge's tail to the twin's head; d keeps its components along the edge and across it.
-      const double along = dot(d, edge), across = cross(edge, d), inverse2 = 1 / edgeLength2;
+      const double along = dot(d, edge), across = cross(edge, d);
       face = TriMesh::face(twin);
       entered = twin - 3 * face;
       fromCorner = -1;
       flat = flatOf(face);
       const Vec2 tailG = flat->at(entered), headG = flat->at(nextCorner(entered)), g = headG - tailG;
       // d = (−g · along + perp(−g) · across) / |edge|², perp(x, y) = (−y, x).
-      d = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverse2;
+      d = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverseLength2;
       if ((step & 63) == 0) d = unit(d);
       p = headG - g * t;
     }
