@@ -303,6 +303,11 @@ class Walk {
     return true;
   }
 
+  /// A hint to start loading the record of face f.
+  void prefetchRecord(int32_t f) const {
+    if (table_ && f >= 0) prefetch(table_ + f);
+  }
+
   /// A hint to start loading the record of face(twin).
   void prefetchFace(int32_t twin) const {
     if (!table_ || twin < 0) return;
@@ -378,6 +383,7 @@ class Walk {
         const int j1 = nextCorner(entered), j2 = nextCorner(j1);
         prefetchFace(flat->twins[j1]);
         prefetchFace(flat->twins[j2]);
+        for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) prefetchRecord(flat->beyond[i]);
         // Both candidates (j1: a → o, j2: o → b) are worked out, then one is picked by the side of o: the
         // two run side by side instead of one after the side test, and the pick needs no branch (the side
         // is a coin toss a branch predictor would lose).
@@ -463,7 +469,7 @@ class Walk {
     const Vec2 c = flat_->at(2);
     // Barycentric coordinates of q with respect to the face's corners.
     const double w2 = c.y > 0 ? q.y / c.y : 0;
-    const double w1 = flat_->x[1] > 0 ? (q.x - w2 * c.x) / flat_->x[1] : 0;
+    const double w1 = flat_->length > 0 ? (q.x - w2 * c.x) / flat_->length : 0;
     const double w[3] = {1 - w1 - w2, w1, w2};
     std::array<double, 3> bary{};
     double sum = 0;
