@@ -197,6 +197,61 @@ TEST(GeodesicShoot, WithoutThePolylineWalksTheSameWay) {
   }
 }
 
+TEST(GeodesicShoot, WithoutThePolylineOrATargetEndsAtTheSamePoint) {
+  // No target: the walk makes no 3D point as it goes, and still ends at the full polyline's last point.
+  const TriMesh mesh = makeHeightField(20);
+  ShootOptions lean;
+  lean.keepPoints = false;
+  for (int k = 0; k < 12; ++k) {
+    const SurfacePoint s = SurfacePoint::vertex(10 * 20 + 10);
+    const GeodesicShot full = shootGeodesicAtAngle(mesh, s, 0.53 * k, 25.0).value();
+    const GeodesicShot bare = shootGeodesicAtAngle(mesh, s, 0.53 * k, 25.0, lean).value();
+    EXPECT_EQ(bare.status, full.status);
+    EXPECT_EQ(bare.facesCrossed, full.facesCrossed);
+    EXPECT_EQ(bare.length, full.length);
+    EXPECT_EQ(bare.end, full.end);
+    EXPECT_EQ(norm(bare.endPosition - full.endPosition), 0.0);
+    EXPECT_EQ(norm(full.positions.back() - full.endPosition), 0.0);
+  }
+}
+
+TEST(GeodesicShoot, AShooterShootsTheSameGeodesicsBitForBit) {
+  // A GeodesicShooter reads the faces' flat frames from its table; the functions compute the same records
+  // as they walk. From a vertex, an edge point and a face point, winding around a cylinder and over a
+  // height field until the boundary, with and without polylines and toward a destination.
+  const testing::Prism c = testing::prism(24, 20, 1.0, 0.1);
+  const TriMesh field = makeHeightField(20);
+  for (const TriMesh* mesh : {&c.mesh, &field}) {
+    const GeodesicShooter shooter = GeodesicShooter::make(*mesh).value();
+    const SurfacePoint sources[] = {SurfacePoint::vertex(24 * 5 + 3), SurfacePoint::edge(3 * 150 + 1, 0.3),
+                                    SurfacePoint::face(200, {0.3, 0.3, 0.4})};
+    for (const SurfacePoint& s : sources) {
+      for (int k = 0; k < 16; ++k) {
+        for (bool keep : {false, true}) {
+          ShootOptions options;
+          options.keepPoints = keep;
+          const GeodesicShot a = shootGeodesicAtAngle(*mesh, s, 0.41 * k, 40.0, options).value();
+          const GeodesicShot b = shooter.shootAtAngle(s, 0.41 * k, 40.0, options).value();
+          EXPECT_EQ(a.status, b.status);
+          EXPECT_GT(a.facesCrossed, 0);
+          EXPECT_EQ(a.facesCrossed, b.facesCrossed);
+          EXPECT_EQ(a.vertexPassings, b.vertexPassings);
+          EXPECT_EQ(a.length, b.length);
+          EXPECT_EQ(a.end, b.end);
+          ASSERT_EQ(a.positions.size(), b.positions.size());
+          for (size_t i = 0; i < a.positions.size(); ++i) EXPECT_EQ(norm(a.positions[i] - b.positions[i]), 0.0);
+        }
+      }
+      const SurfacePoint d = SurfacePoint::vertex(mesh->numVertices() - 5);
+      const GeodesicShot a = shootGeodesicToward(*mesh, s, d, 30.0).value();
+      const GeodesicShot b = shooter.shootToward(s, d, 30.0).value();
+      EXPECT_EQ(a.missDistance, b.missDistance);
+      EXPECT_EQ(a.length, b.length);
+      EXPECT_EQ(a.end, b.end);
+    }
+  }
+}
+
 TEST(GeodesicShoot, StopsAtTheBoundary) {
   const TriMesh mesh = testing::flatGrid(9, GridPattern::Jittered);
   const GeodesicShot g = shootGeodesicAtAngle(mesh, SurfacePoint::vertex(4 * 9 + 4), 0.3, 100.0).value();

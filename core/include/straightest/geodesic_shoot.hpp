@@ -23,6 +23,7 @@
 #pragma once
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -93,5 +94,31 @@ Expected<GeodesicShot> shootGeodesicAtAngle(const TriMesh& mesh, const SurfacePo
 Expected<GeodesicShot> shootGeodesicToward(const TriMesh& mesh, const SurfacePoint& source,
                                            const SurfacePoint& destination, std::optional<double> length = {},
                                            const ShootOptions& options = {}, const Progress& progress = {});
+
+/// Shoots many geodesics on one mesh (the same results as the functions above, bit for bit), faster: every
+/// face laid flat (its corners in 2D, its twins) is recorded once when the shooter is made (64 bytes per
+/// face, about 128 MB for a 1M-vertex mesh, so it is for batches), and each shot then reads one record
+/// per face it crosses, where the functions make it from the face's 3D corners. The mesh must outlive the
+/// shooter; shooting is const and thread-safe.
+class GeodesicShooter {
+ public:
+  static Expected<GeodesicShooter> make(const TriMesh& mesh);
+  ~GeodesicShooter();
+  GeodesicShooter(GeodesicShooter&&) noexcept;
+  GeodesicShooter& operator=(GeodesicShooter&&) noexcept;
+
+  Expected<GeodesicShot> shoot(const SurfacePoint& source, const Vec3& direction, double length,
+                               const ShootOptions& options = {}, const Progress& progress = {}) const;
+  Expected<GeodesicShot> shootAtAngle(const SurfacePoint& source, double angle, double length,
+                                      const ShootOptions& options = {}, const Progress& progress = {}) const;
+  Expected<GeodesicShot> shootToward(const SurfacePoint& source, const SurfacePoint& destination,
+                                     std::optional<double> length = {}, const ShootOptions& options = {},
+                                     const Progress& progress = {}) const;
+
+ private:
+  GeodesicShooter();
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace straightest

@@ -1,0 +1,57 @@
+// flat_faces.hpp (private) — every face laid flat in the frame of its first halfedge, with its twins: all
+// a straight walk across faces reads per face, in one 64-byte record (one cache line).
+//
+// Frame of face f: corner 0 at (0, 0), corner 1 on the positive x axis, corner 2 above it (y ≥ 0); edge
+// k runs from corner k to corner k + 1 (halfedge 3f + k), and twins[k] is its twin (−1 on the boundary).
+// A walk crossing edge k moves into the frame of face(twins[k]) with the two faces' corners on that edge
+// alone. Records come from 3D positions (corner 2 by projection, not from edge lengths, so a thin face
+// keeps its accuracy); a degenerate face (trimesh.hpp) has all corners at (0, 0), which no ray leaves.
+// About the bytes per face of the 3D data a walk would read (corners and twins, normal, positions), in one
+// load instead of two dependent ones.
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "straightest/trimesh.hpp"
+#include "straightest/vec3.hpp"
+
+namespace straightest {
+
+struct alignas(64) FlatFace {
+  double length = 0;  // corner 1 at (length, 0)
+  Vec2 corner;        // corner 2
+  std::array<int32_t, 3> twins{-1, -1, -1};
+  // Two faces ahead: beyond[2k], beyond[2k + 1] are the faces across the other two edges of face(twins[k])
+  // (−1: none, or not recorded), so that a walk can start loading them one face earlier.
+  std::array<int32_t, 6> beyond{-1, -1, -1, -1, -1, -1};
+
+  /// Corner k (0, 1 or 2) in the face's frame, picked by arithmetic rather than a branch on k (exact:
+  /// the products are by 0 or 1).
+  Vec2 at(int k) const {
+    const double one = k == 1, two = k == 2;
+    return Vec2{one * length + two * corner.x, two * corner.y};
+  }
+};
+/// The record of face f, from the mesh's positions, into r (inline: a walk without a table makes one
+/// per face it enters).
+inline void makeFlatFace(const TriMesh& mesh, int32_t f, FlatFace& r) {
+  const FaceAdjacency& face = mesh.adjacency(f);
+  r.twins = face.twins;
+  if (mesh.isDegenerateFace(f)) {
+    r.length = 0;
+    r.corner = Vec2{};
+    return;
+  }
+  const Vec3& a = mesh.position(face.corners[0]);
+  const Vec3 e = mesh.position(face.corners[1]) - a, w = mesh.position(face.corners[2]) - a;
+  const double length = std::sqrt(dot(e, e)), inverse = 1 / length;
+  r.length = length;
+  r.corner = Vec2{dot(w, e) * inverse, norm(cross(e, w)) * inverse};
+}
+
+/// Every face's record, with the faces two ahead (`beyond`), computed on all threads.
+std::vector<FlatFace> flatFaces(const TriMesh& mesh);
+
+}  // namespace straightest
