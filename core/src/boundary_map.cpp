@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <utility>
 
 #include "straightest/geodesic_distance.hpp"
@@ -354,7 +355,14 @@ int64_t convexify(std::vector<Vec2>& points, const std::vector<std::array<int32_
 
 std::vector<double> fallbackRadii(const TriMesh& mesh, const SurfacePoint& source) {
   std::vector<double> radius = dijkstraDistances(mesh, source);
-  const std::vector<double> heat = HeatMethod(mesh).distances(source);
+  // The heat distances only tighten the graph's upper bound. Where their factorization fails (near-zero
+  // cotangent weights on a degenerate mesh: found by fuzz_param) the graph distances stand alone.
+  std::vector<double> heat;
+  try {
+    heat = HeatMethod(mesh).distances(source);
+  } catch (const std::runtime_error&) {
+    return radius;
+  }
   const Vec3 S = position(mesh, source);
   for (int32_t v = 0; v < mesh.numVertices(); ++v) {
     const double straight = norm(mesh.position(v) - S);  // no path is shorter than the straight line

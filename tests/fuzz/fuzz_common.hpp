@@ -280,8 +280,8 @@ struct Verdict {
 
 inline bool faceDegenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 e1 = b - a, e2 = c - a;
-  const double twice = norm(cross(e1, e2));
-  return !(twice > kDegenerateRel * norm(e1) * norm(e2)) || !std::isfinite(twice);
+  const double twice = robustNorm(cross(e1, e2));  // as TriMesh::build measures it
+  return !(twice > kDegenerateRel * robustNorm(e1) * robustNorm(e2)) || !std::isfinite(twice);
 }
 
 inline Verdict judge(const std::vector<Vec3>& P, const std::vector<Triangle>& T) {
