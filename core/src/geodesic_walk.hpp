@@ -319,12 +319,12 @@ class Walk {
     const double requested = shot_.requestedLength, tolerance2 = vertexTolerance_ * vertexTolerance_;
     // The state lives in locals (registers) while the walk crosses edges; the members are written back
     // around the rare events that read and change them (a vertex, the end, a 3D point).
-    int32_t face = face_;
-    const FlatFace* flat = flat_;
-    int entered = entered_, fromCorner = fromCorner_;
-    Vec2 p = p_, d = d_;
-    double length = shot_.length;
-    int64_t faces = shot_.facesCrossed;
+    int32_t face;
+    const FlatFace* flat;
+    int entered, fromCorner;
+    Vec2 p, d;
+    double length;
+    int64_t faces;
     auto store = [&] {
       face_ = face;
       flat_ = flat;
@@ -345,6 +345,7 @@ class Walk {
       length = shot_.length;
       faces = shot_.facesCrossed;
     };
+    load();
     auto stop = [&](ShootStatus status) {
       store();
       shot_.status = status;

@@ -19,8 +19,6 @@ std::string str(const Vec3& p) {
 
 Error err(ErrorCode code, const std::string& message) { return Error{code, message}; }
 
-double largestComponent(const Vec3& a) { return std::fmax(std::fabs(a.x), std::fmax(std::fabs(a.y), std::fabs(a.z))); }
-
 /// The unit normal of a triangle with edges e1, e2 and c = e1 × e2, |c| = twiceArea > 0. For edges
 /// below ~1e-154 the components of c are subnormal, hold few digits, and c / |c| is not unit length;
 /// there the edges are scaled to unit size before the cross product.

@@ -90,13 +90,17 @@ inline constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+/// The largest |component| of a: the scale by which a can be divided without overflow or underflow.
+inline double largestComponent(const Vec3& a) {
+  return std::fmax(std::fabs(a.x), std::fmax(std::fabs(a.y), std::fabs(a.z)));
+}
 /// |a| also when squaring the components would underflow (below ~1e-154) or overflow (above ~1e154):
 /// there norm() loses digits or returns inf, and a vector divided by it is no longer unit length.
 /// In the ordinary range it returns exactly what norm() returns.
 inline double robustNorm(const Vec3& a) {
   const double s = dot(a, a);
   if (s > 1e-290 && s < 1e290) return std::sqrt(s);
-  const double m = std::fmax(std::fabs(a.x), std::fmax(std::fabs(a.y), std::fabs(a.z)));
+  const double m = largestComponent(a);
   if (!(m > 0) || !std::isfinite(m)) return m;  // zero, inf or NaN: nothing to rescale
   return m * norm(a / m);
 }
