@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "../core/cli/huge_pages.hpp"
 #include "straightest/base_plane.hpp"
 #include "straightest/exact_geodesic.hpp"
 #include "straightest/geodesic_distance.hpp"
@@ -156,6 +157,7 @@ void shootRow(const char* target, const Mesh& m) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  straightest::cli::reexecWithHugePages(argv);  // as the CLI runs
   const char* target = argc > 1 ? argv[1] : "native";
   std::vector<int> heightfields{100, 250, 1000};
   double budgetS = 60;

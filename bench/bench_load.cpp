@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../core/cli/huge_pages.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/samples.hpp"
 
@@ -45,6 +46,7 @@ static std::string offText(const TriMesh& mesh) {
 }
 
 int main(int argc, char** argv) {
+  straightest::cli::reexecWithHugePages(argv);  // as the CLI runs
   const char* target = argc > 1 ? argv[1] : "native";
   const int n = argc > 2 ? std::max(2, std::atoi(argv[2])) : 1000;
   const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;

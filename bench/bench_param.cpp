@@ -6,12 +6,14 @@
 #include <string>
 #include <utility>
 
+#include "../core/cli/huge_pages.hpp"
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
 
 using namespace straightest;
 
 int main(int argc, char** argv) {
+  straightest::cli::reexecWithHugePages(argv);  // as the CLI runs
   const char* target = argc > 1 ? argv[1] : "native";
   const int maxN = argc > 2 ? std::atoi(argv[2]) : 1000;
   std::printf(

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../core/cli/huge_pages.hpp"
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
@@ -24,6 +25,7 @@ static double ms(Clock::time_point a, Clock::time_point b) {
 }
 
 int main(int argc, char** argv) {
+  straightest::cli::reexecWithHugePages(argv);  // as the CLI runs
   std::vector<const char*> positional;
   std::vector<int> counts = {0};
   for (int i = 1; i < argc; ++i) {

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "../core/cli/huge_pages.hpp"
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
@@ -78,6 +79,7 @@ struct Measured {
 };
 
 int main(int argc, char** argv) {
+  straightest::cli::reexecWithHugePages(argv);  // as the CLI runs
   std::vector<std::string> args;
   std::vector<int> counts = {0};
   for (int i = 1; i < argc; ++i) {

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "json_writer.hpp"
 #include "straightest/enum_names.hpp"
 #include "straightest/exact_geodesic.hpp"
@@ -449,6 +450,7 @@ int runDistances(const Options& o, const TriMesh& mesh, double loadMs) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  straightest::cli::reexecWithHugePages(argv);
   Options o;
   try {
     o = parseArgs(argc, argv);
