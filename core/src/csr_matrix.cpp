@@ -1,6 +1,6 @@
 // csr_matrix.cpp — the compressed-row kernels: shape check, two-column product, transpose, matrix
-// product, row sorting, diagonal. The row-wise ones (two-column product, sorting, diagonal) run on all threads
-// (row_chunks.hpp): each row is computed as on one thread, so results do not depend on the count.
+// product, row sorting, diagonal. The row-wise ones (two-column product, matrix product, sorting, diagonal) run on all
+// threads (row_chunks.hpp): each row is computed as on one thread, so results do not depend on the count.
 #include "straightest/csr_matrix.hpp"
 
 #include "row_accumulator.hpp"
@@ -59,22 +59,13 @@ CsrMatrix transpose(const CsrMatrix& m) {
 }
 
 CsrMatrix multiply(const CsrMatrix& a, const CsrMatrix& b, size_t expectedNonZeros) {
-  CsrMatrix c;
-  c.rows = a.rows;
-  c.cols = b.cols;
-  c.start.reserve(static_cast<size_t>(a.rows) + 1);
-  c.col.reserve(expectedNonZeros);
-  c.value.reserve(expectedNonZeros);
-  RowAccumulator acc(b.cols);
-  for (int32_t r = 0; r < a.rows; ++r) {
+  return buildRows(a.rows, b.cols, expectedNonZeros, false, [&a, &b](int32_t r, RowAccumulator& acc) {
     for (int32_t k = a.start[r]; k < a.start[r + 1]; ++k) {
       const int32_t j = a.col[k];
       const double v = a.value[k];
       for (int32_t kk = b.start[j]; kk < b.start[j + 1]; ++kk) acc.add(b.col[kk], v * b.value[kk]);
     }
-    acc.flushInto(c, false);
-  }
-  return c;
+  });
 }
 
 std::vector<int32_t> sortRows(CsrMatrix& m) {

@@ -88,20 +88,11 @@ std::vector<int32_t> aggregate(const CsrMatrix& A, const std::vector<double>& di
 CsrMatrix smoothedProlongator(const CsrMatrix& A, const std::vector<double>& invDiag, const std::vector<int32_t>& agg,
                               int32_t count) {
   constexpr double omega = 2.0 / 3.0;
-  CsrMatrix P;
-  P.rows = A.rows;
-  P.cols = count;
-  P.start.reserve(static_cast<size_t>(A.rows) + 1);
-  P.col.reserve(A.col.size() / 2);
-  P.value.reserve(A.col.size() / 2);
-  RowAccumulator acc(count);
-  for (int32_t i = 0; i < A.rows; ++i) {
+  return buildRows(A.rows, count, A.col.size() / 2, true, [&](int32_t i, RowAccumulator& acc) {
     acc.add(agg[i], 1.0);
     const double scale = -omega * invDiag[i];
     for (int32_t k = A.start[i]; k < A.start[i + 1]; ++k) acc.add(agg[A.col[k]], scale * A.value[k]);
-    acc.flushInto(P, true);
-  }
-  return P;
+  });
 }
 
 }  // namespace

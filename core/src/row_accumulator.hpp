@@ -1,10 +1,13 @@
 // row_accumulator.hpp — gathers one sparse row at a time for the CSR products (Gustavson's sparse
 // accumulator): a dense slot per column (−1 = empty) and the list of used columns, so a row of any
-// length costs only its own entries. Internal to the solver sources.
+// length costs only its own entries; and buildRows, which builds a matrix's rows with it on all
+// threads. Internal to the solver sources.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
+#include "parallel_for.hpp"
 #include "straightest/csr_matrix.hpp"
 
 namespace straightest {
@@ -47,5 +50,55 @@ class RowAccumulator {
   std::vector<double> values_;
   int32_t used_ = 0;
 };
+
+/// The matrix whose row r is what row(r, acc) adds to the accumulator (rows × cols; exact zeros dropped
+/// when asked). The rows are cut into pieces that depend only on their count (at most kBuildPieces, of
+/// at least kBuildPieceRows rows), built on all threads, each with its own accumulator, into its own
+/// arrays, then copied after one another: entry for entry the matrix one pass over the rows gives, for
+/// any thread count. One accumulator per piece (not per chunk of rows) because each holds a slot per
+/// column. expectedNonZeros: a reservation for the whole matrix (0: none).
+inline constexpr int32_t kBuildPieces = 16, kBuildPieceRows = 16384;
+template <class Row>
+CsrMatrix buildRows(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dropZeros, const Row& row) {
+  const int32_t pieces = std::max(1, std::min(kBuildPieces, rows / kBuildPieceRows));
+  auto pieceBegin = [&](int32_t p) { return static_cast<int32_t>(static_cast<int64_t>(rows) * p / pieces); };
+  std::vector<CsrMatrix> parts(pieces);
+  detail::parallelFor(static_cast<std::size_t>(pieces), 1, [&](std::size_t p, std::size_t, std::size_t) {
+    CsrMatrix& part = parts[p];
+    const int32_t begin = pieceBegin(static_cast<int32_t>(p)), end = pieceBegin(static_cast<int32_t>(p) + 1);
+    part.start.reserve(static_cast<size_t>(end - begin) + 1);
+    part.col.reserve(expectedNonZeros / pieces);
+    part.value.reserve(expectedNonZeros / pieces);
+    RowAccumulator acc(cols);
+    for (int32_t r = begin; r < end; ++r) {
+      row(r, acc);
+      acc.flushInto(part, dropZeros);
+    }
+  });
+  if (pieces == 1) {
+    CsrMatrix m = std::move(parts[0]);
+    m.rows = rows;
+    m.cols = cols;
+    return m;
+  }
+  CsrMatrix m;
+  m.rows = rows;
+  m.cols = cols;
+  std::vector<size_t> offset(pieces + 1, 0);
+  for (int32_t p = 0; p < pieces; ++p) offset[p + 1] = offset[p] + parts[p].col.size();
+  m.start.resize(static_cast<size_t>(rows) + 1);
+  m.col.resize(offset[pieces]);
+  m.value.resize(offset[pieces]);
+  m.start[0] = 0;
+  detail::parallelFor(static_cast<std::size_t>(pieces), 1, [&](std::size_t p, std::size_t, std::size_t) {
+    const CsrMatrix& part = parts[p];
+    const int32_t begin = pieceBegin(static_cast<int32_t>(p));
+    const auto shift = static_cast<int32_t>(offset[p]);
+    for (size_t r = 1; r < part.start.size(); ++r) m.start[begin + r] = part.start[r] + shift;
+    std::copy(part.col.begin(), part.col.end(), m.col.begin() + offset[p]);
+    std::copy(part.value.begin(), part.value.end(), m.value.begin() + offset[p]);
+  });
+  return m;
+}
 
 }  // namespace straightest

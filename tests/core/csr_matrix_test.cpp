@@ -9,6 +9,7 @@
 #include "solver_systems.hpp"
 #include "straightest/csr_matrix.hpp"
 #include "straightest/samples.hpp"
+#include "straightest/threads.hpp"
 
 namespace straightest {
 namespace {
@@ -80,6 +81,33 @@ TEST(CsrMatrix, ProductIsTheDenseProduct) {
   for (int32_t r = 0; r < c.rows; ++r)
     for (int32_t k = c.start[r]; k < c.start[r + 1]; ++k)
       for (int32_t q = k + 1; q < c.start[r + 1]; ++q) EXPECT_NE(c.col[k], c.col[q]);
+}
+
+TEST(CsrMatrix, ProductBuiltInPiecesOnSeveralThreadsIsTheRowByRowProduct) {
+  // 50k rows: the product is built in several pieces (row_accumulator.hpp's buildRows), on 1 and 3
+  // threads; every row must be exactly the product of that row alone.
+  const CsrMatrix a = randomMatrix(50000, 3000, 5), b = randomMatrix(3000, 4000, 6);
+  for (int threads : {1, 3}) {
+    setThreadCount(threads);
+    const CsrMatrix c = multiply(a, b);
+    ASSERT_TRUE(wellFormed(c));
+    ASSERT_EQ(c.rows, a.rows);
+    for (int32_t r = 0; r < a.rows; r += 997) {
+      CsrMatrix row;
+      row.rows = 1;
+      row.cols = a.cols;
+      row.col.assign(a.col.begin() + a.start[r], a.col.begin() + a.start[r + 1]);
+      row.value.assign(a.value.begin() + a.start[r], a.value.begin() + a.start[r + 1]);
+      row.start.push_back(static_cast<int32_t>(row.col.size()));
+      const CsrMatrix alone = multiply(row, b);
+      ASSERT_EQ(c.start[r + 1] - c.start[r], alone.start[1]) << "row " << r;
+      for (int32_t k = 0; k < alone.start[1]; ++k) {
+        EXPECT_EQ(c.col[c.start[r] + k], alone.col[k]) << "row " << r;
+        EXPECT_EQ(c.value[c.start[r] + k], alone.value[k]) << "row " << r;
+      }
+    }
+  }
+  setThreadCount(0);
 }
 
 TEST(CsrMatrix, SortedRowsKeepTheMatrixAndSplitAtTheDiagonal) {
