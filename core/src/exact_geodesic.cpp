@@ -18,7 +18,14 @@ namespace {
 
 using unfolding::corner;
 using unfolding::lineMeetsSegment;
-using unfolding::toFrame;
+
+/// q in the frame whose origin is `from` and whose x axis points to `to`, at the known distance `l` (the
+/// edge's length: unfolding::toFrame without its square root).
+Vec2 toFrame(const Vec2& q, const Vec2& from, const Vec2& to, double l) {
+  const double inv = 1 / l;
+  const Vec2 u{(to.x - from.x) * inv, (to.y - from.y) * inv}, d = q - from;
+  return {dot(d, u), cross(u, d)};
+}
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// A vertex whose total angle exceeds 2π by more than rounding is a saddle: shortest paths may bend there.
@@ -32,18 +39,30 @@ constexpr double kSeenSlack = 1e-9;
 /// The shadow cone is widened by this angle on each side so that rounding in the arriving direction cannot
 /// lose a direction.
 constexpr double kConeSlack = 1e-7;
+/// The queue orders windows to this fraction of the mean edge length (see exact_geodesic_queue.hpp).
+constexpr double kQueueResolution = 1.0 / 64;
 /// The filter drops a window only when a corner is shorter by more than rounding (relative).
 constexpr double kFilterMargin = 1e-12;
+
+double meanOf(const std::vector<double>& values) {
+  double sum = 0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
 
 /// A window on `halfedge` (propagating into face(halfedge)), or when halfedge < 0 a pseudo-source event
 /// for vertex −1 − halfedge.
 struct Window {
-  double key;     // least distance over the interval: the queue's order
   double b0, b1;  // the interval, as distances from the halfedge's tail
   Vec2 image;     // the origin unfolded into the halfedge's frame (y <= 0: behind the edge)
   double sigma;   // distance at the origin
+  double f0, f1;  // distances at b0 and b1 (σ + |image − b|): kept for the filter when the window is popped
   int32_t halfedge;
   int32_t origin;  // pseudo-source vertex, −1: the source point
+
+  /// The least distance over the interval, the queue's order: at the image's foot, or at the nearer end
+  /// (the same bits as σ + |image − clamp(image.x)|, without a square root).
+  double nearest() const { return image.x < b0 ? f0 : image.x > b1 ? f1 : sigma + std::fabs(image.y); }
 };
 
 class Propagation {
@@ -56,10 +75,13 @@ class Propagation {
         mesh_(mesh),
         out_(out),
         len_(unfolding::halfedgeLengths(mesh)),
+        corner_(len_.size()),
         pseudo_(mesh.numVertices(), 0),
-        emitted_(mesh.numVertices(), kInf) {
+        emitted_(mesh.numVertices(), kInf),
+        queue_(meanOf(len_) * kQueueResolution) {
     out_.distances.assign(mesh.numVertices(), kInf);
     out_.parents.assign(mesh.numVertices(), GeodesicParent{});
+    for (size_t h = 0; h < len_.size(); ++h) corner_[h] = unfolding::oppositeCorner(len_, static_cast<int32_t>(h));
     std::vector<double> angle(mesh.numVertices(), 0.0);
     for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) {
       // The corner angle at tail(h) between h and the reverse of prev(h), from the three edge lengths.
@@ -104,7 +126,7 @@ class Propagation {
 
  private:
   void push(const Window& w) {
-    queue_.push(w.key, w);
+    queue_.push(w.nearest(), w);
     out_.stats.maxQueue = std::max<int64_t>(out_.stats.maxQueue, static_cast<int64_t>(queue_.size()));
   }
 
@@ -113,7 +135,7 @@ class Propagation {
     if (out_.distances[v] == kInf) ++reached_;
     out_.distances[v] = d;
     out_.parents[v] = parent;
-    if (pseudo_[v]) push(Window{d, 0, 0, Vec2{}, d, -1 - v, v});
+    if (pseudo_[v]) push(Window{0, 0, Vec2{}, d, d, d, -1 - v, v});
   }
 
   /// The source point's first windows: every edge of the faces around it that it sees across.
@@ -168,7 +190,7 @@ class Propagation {
     if (parent.halfedge >= 0) {
       const int32_t k = parent.halfedge;
       const int32_t corners[3] = {mesh_.tail(k), mesh_.head(k), mesh_.head(TriMesh::next(k))};
-      const Vec2 at[3] = {Vec2{0, 0}, Vec2{len_[k], 0}, unfolding::oppositeCorner(len_, k)};
+      const Vec2 at[3] = {Vec2{0, 0}, Vec2{len_[k], 0}, corner_[k]};
       int i = 0;
       while (i < 3 && corners[i] != v) ++i;
       if (i == 3) return false;
@@ -230,7 +252,7 @@ class Propagation {
   void windowAcrossBetween(int32_t h, double b0, double b1, double sigma, int32_t origin) {
     const int32_t o = TriMesh::next(h), t = mesh_.twin(o);
     if (t < 0 || !(len_[o] > 0)) return;
-    const Vec2 w1{len_[h], 0}, w2 = unfolding::oppositeCorner(len_, h), v{0, 0};
+    const Vec2 w1{len_[h], 0}, w2 = corner_[h], v{0, 0};
     const double t0 = lineMeetsSegment(v, Vec2{std::cos(b0), std::sin(b0)}, w1, w2, 0.0);
     const double t1 = lineMeetsSegment(v, Vec2{std::cos(b1), std::sin(b1)}, w1, w2, 1.0);
     const double l = len_[o];
@@ -247,37 +269,47 @@ class Propagation {
     b1 = std::min(b1, l);
     if (!(b1 - b0 > kMinWindowRel * l)) return;
     const Vec2 x0{b0, 0}, x1{b1, 0};
-    const double nearest = sigma + unfolding::length(Vec2{std::clamp(image.x, b0, b1), 0} - image);
+    const Window w{
+        b0, b1, image, sigma, sigma + unfolding::length(image - x0), sigma + unfolding::length(image - x1), h, origin};
     if (!prune_) {
-      if (nearest > cap_) return;
+      if (w.nearest() > cap_) return;
       ++out_.stats.windows;
-      push(Window{nearest, b0, b1, image, sigma, h, origin});
+      push(w);
       return;
     }
     if (dominated(h, b0, b1, image, sigma)) {
       ++out_.stats.filtered;
       return;
     }
-    const double f0 = sigma + unfolding::length(image - x0), f1 = sigma + unfolding::length(image - x1);
     const double* d = out_.distances.data();
     const int32_t tail = mesh_.tail(h), head = mesh_.head(h);
-    auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
-    if (shorter(d[tail] + b1, f1) || shorter(d[head] + (l - b0), f0)) {
+    if (shorter(d[tail] + b1, w.f1) || shorter(d[head] + (l - b0), w.f0)) {
       ++out_.stats.filtered;
       return;
     }
-    if (third >= 0 && d[third] < kInf) {
+    if (third >= 0) {
       // third's position in h's frame: the corner of face(twin(h)) opposite h, below the axis.
-      const int32_t t = mesh_.twin(h);
-      const Vec2 r = corner(l, len_[TriMesh::next(t)], len_[TriMesh::prev(t)], /*below=*/true);
-      if (shorter(d[third] + std::max(unfolding::length(r - x0), unfolding::length(r - x1)), nearest)) {
+      const Vec2& t = corner_[mesh_.twin(h)];
+      if (cornerShorter(d[third], Vec2{l - t.x, -t.y}, x0, x1, w.nearest())) {
         ++out_.stats.filtered;
         return;
       }
     }
     remember(h, b0, b1, image, sigma);
     ++out_.stats.windows;
-    push(Window{nearest, b0, b1, image, sigma, h, origin});
+    push(w);
+  }
+
+  /// The filter's test: a path of length `via` is shorter than a window's distance by more than rounding.
+  static bool shorter(double via, double window) { return via < window - kFilterMargin * window; }
+
+  /// shorter(dr + max(|r − x0|, |r − x1|), least): corner r at distance dr reaches every point of the interval
+  /// x0–x1 more shortly than the window's least distance. Compared squared, without a square root.
+  static bool cornerShorter(double dr, const Vec2& r, const Vec2& x0, const Vec2& x1, double least) {
+    const double room = least - kFilterMargin * least - dr;  // inf − inf (never reached corner): NaN, false
+    if (!(room > 0)) return false;
+    const double ry2 = r.y * r.y, d0 = r.x - x0.x, d1 = r.x - x1.x;
+    return std::max(d0 * d0, d1 * d1) + ry2 < room * room;
   }
 
   /// A window as its edge's record, in the frame of the edge's lower-numbered halfedge; b1 < b0: none.
@@ -335,11 +367,8 @@ class Propagation {
   bool useless(const Window& w, const Vec2& c, int32_t vc) {
     const double* d = out_.distances.data();
     const double l = len_[w.halfedge];
-    const Vec2 x0{w.b0, 0}, x1{w.b1, 0};
-    auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
-    if (shorter(d[mesh_.tail(w.halfedge)] + w.b1, w.sigma + unfolding::length(w.image - x1)) ||
-        shorter(d[mesh_.head(w.halfedge)] + (l - w.b0), w.sigma + unfolding::length(w.image - x0)) ||
-        (d[vc] < kInf && shorter(d[vc] + std::max(unfolding::length(c - x0), unfolding::length(c - x1)), w.key))) {
+    if (shorter(d[mesh_.tail(w.halfedge)] + w.b1, w.f1) || shorter(d[mesh_.head(w.halfedge)] + (l - w.b0), w.f0) ||
+        cornerShorter(d[vc], c, Vec2{w.b0, 0}, Vec2{w.b1, 0}, w.nearest())) {
       ++out_.stats.filtered;
       return true;
     }
@@ -351,7 +380,7 @@ class Propagation {
   void propagate(const Window& w) {
     const int32_t h = w.halfedge, nextH = TriMesh::next(h), prevH = TriMesh::prev(h);
     const double l = len_[h];
-    const Vec2 a{0, 0}, b{l, 0}, c = unfolding::oppositeCorner(len_, h);
+    const Vec2 a{0, 0}, b{l, 0}, c = corner_[h];
     const Vec2& image = w.image;
     const int32_t vc = mesh_.head(nextH);
     if (prune_ && useless(w, c, vc)) return;
@@ -370,7 +399,7 @@ class Propagation {
       const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
       const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
       if (p0 <= 0) update(mesh_.tail(h), w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, mesh_.head(h));
+      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c, lac), w.sigma, w.origin, mesh_.head(h));
     }
     // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
     if (xc < w.b1) {
@@ -379,7 +408,7 @@ class Propagation {
       const double q0 = xc > w.b0 ? 0.0 : lineMeetsSegment(image, Vec2{w.b0, 0}, c, b, 0.0) * lcb;
       const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
       if (q1 >= lcb) update(mesh_.head(h), w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, mesh_.tail(h));
+      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b, lcb), w.sigma, w.origin, mesh_.tail(h));
     }
   }
 
@@ -388,6 +417,7 @@ class Propagation {
   const TriMesh& mesh_;
   ExactGeodesics& out_;
   std::vector<double> len_;
+  std::vector<Vec2> corner_;  // per halfedge: face(h)'s third corner in h's frame (unfolding::oppositeCorner)
   std::vector<uint8_t> pseudo_;
   std::vector<double> emitted_;                   // distance at a vertex's last emission
   std::vector<std::pair<int32_t, double>> ring_;  // emitFromVertex's fan: outgoing halfedge, angle before it
