@@ -15,8 +15,10 @@
 //
 // A bucket is a stack of fixed-size chunks taken from a shared pool (a free list), so memory follows the
 // entries queued rather than the largest each bucket ever held. An entry beyond the ring's reach waits in
-// a far list, moved into the ring when the front comes within reach of the nearest of them.
+// a far heap (keys more than 4096 widths ahead: 64 mean edges in the propagation, so only on meshes of very
+// unequal edges), moved into the ring when the front comes within its reach.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -44,7 +46,7 @@ class MinQueue {
       return;
     }
     far_.push_back(Far{slot, payload});
-    farLeast_ = slot < farLeast_ ? slot : farLeast_;
+    std::push_heap(far_.begin(), far_.end(), laterSlot);
   }
 
   /// Removes an entry of least key (up to the width; ties: any) and returns its payload. Not on an empty
@@ -65,8 +67,14 @@ class MinQueue {
         --inRing_;
         return payload;
       }
-      current_ = inRing_ == 0 ? farLeast_ : current_ + 1;  // an empty ring: jump to the far list's nearest
-      if (farLeast_ - current_ < kRing) pullFar();
+      if (inRing_ == 0) current_ = far_.front().slot;  // an empty ring: jump to the far heap's nearest
+      else ++current_;
+      // The far heap's entries now within the ring's reach move into it.
+      while (!far_.empty() && far_.front().slot - current_ < kRing) {
+        pushToBucket(far_.front().slot & (kRing - 1), far_.front().payload);
+        std::pop_heap(far_.begin(), far_.end(), laterSlot);
+        far_.pop_back();
+      }
     }
   }
 
@@ -104,29 +112,14 @@ class MinQueue {
     ++inRing_;
   }
 
-  /// Moves the far entries now within the ring's reach into it.
-  void pullFar() {
-    uint64_t least = UINT64_MAX;
-    size_t kept = 0;
-    for (const Far& f : far_) {
-      if (f.slot - current_ < kRing) {
-        pushToBucket(f.slot & (kRing - 1), f.payload);
-      } else {
-        least = f.slot < least ? f.slot : least;
-        far_[kept++] = f;
-      }
-    }
-    far_.resize(kept);
-    farLeast_ = least;
-  }
+  static bool laterSlot(const Far& a, const Far& b) { return a.slot > b.slot; }
 
   const double inverse_;
   std::vector<Chunk> chunks_;
   std::vector<int32_t> top_ = std::vector<int32_t>(kRing, -1);  // per bucket: its stack's top chunk (−1: empty)
-  std::vector<Far> far_;
+  std::vector<Far> far_;  // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
   int32_t free_ = -1;     // the free list of chunks
   uint64_t current_ = 0;  // the bucket (slot) being popped
-  uint64_t farLeast_ = UINT64_MAX;
   size_t size_ = 0, inRing_ = 0;
 };
 
