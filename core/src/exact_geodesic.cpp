@@ -10,6 +10,7 @@
 
 #include "exact_geodesic_queue.hpp"
 #include "exact_geodesic_reference.hpp"
+#include "huge_page_allocator.hpp"
 #include "straightest/geodesic_distance.hpp"
 #include "unfolding.hpp"
 
@@ -54,15 +55,15 @@ struct Halfedge {
   int32_t edge;  // the edge's number, for its record of windows (−1: boundary)
 };
 
-std::vector<Halfedge> halfedges(const TriMesh& mesh) {
+detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
   const std::vector<double> len = unfolding::halfedgeLengths(mesh);
-  std::vector<Halfedge> half(len.size());
+  detail::HugeVector<Halfedge> half(len.size());
   for (int32_t h = 0; h < static_cast<int32_t>(len.size()); ++h)
     half[h] = Halfedge{len[h], unfolding::oppositeCorner(len, h), mesh.twin(h), mesh.tail(h), -1};
   return half;
 }
 
-double meanLength(const std::vector<Halfedge>& half) {
+double meanLength(const detail::HugeVector<Halfedge>& half) {
   double sum = 0;
   for (const Halfedge& h : half) sum += h.len;
   return half.empty() ? 0.0 : sum / static_cast<double>(half.size());
@@ -433,12 +434,12 @@ class Propagation {
   const double cap_;
   const TriMesh& mesh_;
   ExactGeodesics& out_;
-  std::vector<Halfedge> half_;  // per halfedge: what the propagation reads of it (Halfedge)
+  detail::HugeVector<Halfedge> half_;  // per halfedge: what the propagation reads of it (Halfedge)
   std::vector<uint8_t> pseudo_;
   std::vector<double> emitted_;                   // distance at a vertex's last emission
   std::vector<std::pair<int32_t, double>> ring_;  // emitFromVertex's fan: outgoing halfedge, angle before it
   detail::MinQueue<Window> queue_;                // windows and pseudo-source events, by key
-  std::vector<Seen> seen_;                        // per edge: the last window created on it (see remember)
+  detail::HugeVector<Seen> seen_;                 // per edge: the last window created on it (see remember)
   int64_t reached_ = 0, queueLimit_ = 0;
 };
 

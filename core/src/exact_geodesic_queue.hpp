@@ -23,6 +23,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_page_allocator.hpp"
+
 namespace straightest::detail {
 
 template <typename Payload>
@@ -115,7 +117,7 @@ class MinQueue {
   static bool laterSlot(const Far& a, const Far& b) { return a.slot > b.slot; }
 
   const double inverse_;
-  std::vector<Chunk> chunks_;
+  HugeVector<Chunk> chunks_;
   std::vector<int32_t> top_ = std::vector<int32_t>(kRing, -1);  // per bucket: its stack's top chunk (−1: empty)
   std::vector<Far> far_;  // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
   int32_t free_ = -1;     // the free list of chunks
