@@ -45,21 +45,29 @@ constexpr double kQueueResolution = 1.0 / 64;
 /// The filter drops a window only when a corner is shorter by more than rounding (relative).
 constexpr double kFilterMargin = 1e-12;
 
-/// What the propagation reads of a halfedge h, in one record: a face's three take 120 bytes, where the
+/// What the propagation reads of a halfedge h, in one record: a face's three take 144 bytes, where the
 /// lengths, corners, vertices and twins in arrays of their own cost a cache miss each in the inner loop.
 struct Halfedge {
   double len;    // |h|
   Vec2 corner;   // face(h)'s third corner in h's frame (unfolding::oppositeCorner)
+  double angle;  // face(h)'s angle at tail(h), from the three edge lengths (for the saddles)
   int32_t twin;  // −1 on the boundary
   int32_t tail;  // the vertex h leaves (head(h) is tail(next(h)), face(h)'s third corner tail(prev(h)))
   int32_t edge;  // the edge's number, for its record of windows (−1: boundary)
 };
 
+/// The angle of face(h) at tail(h), between h and the reverse of prev(h).
+double cornerAngle(const std::vector<double>& len, int32_t h) {
+  const double a = len[h], b = len[TriMesh::prev(h)], o = len[TriMesh::next(h)];
+  const double cosine = (a * a + b * b - o * o) / (2 * a * b);
+  return std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
+}
+
 detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
   const std::vector<double> len = unfolding::halfedgeLengths(mesh);
   detail::HugeVector<Halfedge> half(len.size());
   for (int32_t h = 0; h < static_cast<int32_t>(len.size()); ++h)
-    half[h] = Halfedge{len[h], unfolding::oppositeCorner(len, h), mesh.twin(h), mesh.tail(h), -1};
+    half[h] = Halfedge{len[h], unfolding::oppositeCorner(len, h), cornerAngle(len, h), mesh.twin(h), mesh.tail(h), -1};
   return half;
 }
 
@@ -100,10 +108,7 @@ class Propagation {
     out_.distances.assign(mesh.numVertices(), kInf);
     out_.parents.assign(mesh.numVertices(), GeodesicParent{});
     std::vector<double> angle(mesh.numVertices(), 0.0);
-    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) {
-      // The corner angle at tail(h) between h and the reverse of prev(h), from the three edge lengths.
-      angle[mesh.tail(h)] += cornerAngle(h);
-    }
+    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) angle[half_[h].tail] += half_[h].angle;
     for (int32_t v = 0; v < mesh.numVertices(); ++v)
       pseudo_[v] = mesh.isBoundaryVertex(v) || angle[v] > kTwoPi + kSaddleExcess;
     int32_t edges = 0;
@@ -189,12 +194,8 @@ class Propagation {
 
   double len(int32_t h) const { return half_[h].len; }
 
-  /// The angle of face(h) at tail(h), from the edge lengths.
-  double cornerAngle(int32_t h) const {
-    const double a = len(h), b = len(TriMesh::prev(h)), o = len(TriMesh::next(h));
-    const double cosine = (a * a + b * b - o * o) / (2 * a * b);
-    return std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
-  }
+  /// The angle of face(h) at tail(h).
+  double cornerAngle(int32_t h) const { return half_[h].angle; }
 
   /// The directions in which a shortest path through saddle v may continue: at least π away, on both
   /// sides, from the path it arrived by (a shorter path would cut the corner otherwise). As fan angles
