@@ -56,18 +56,28 @@ struct Halfedge {
   int32_t edge;  // the edge's number, for its record of windows (−1: boundary)
 };
 
-/// The angle of face(h) at tail(h), between h and the reverse of prev(h).
-double cornerAngle(const std::vector<double>& len, int32_t h) {
-  const double a = len[h], b = len[TriMesh::prev(h)], o = len[TriMesh::next(h)];
+/// The angle between two sides a and b of a triangle whose third side is o.
+double angleBetween(double a, double b, double o) {
   const double cosine = (a * a + b * b - o * o) / (2 * a * b);
   return std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
 }
 
+/// The records, face by face from the three lengths (as unfolding::halfedgeLengths and oppositeCorner make
+/// them: the same bits as the back-trace's frames), written once.
 detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
-  const std::vector<double> len = unfolding::halfedgeLengths(mesh);
-  detail::HugeVector<Halfedge> half(len.size());
-  for (int32_t h = 0; h < static_cast<int32_t>(len.size()); ++h)
-    half[h] = Halfedge{len[h], unfolding::oppositeCorner(len, h), cornerAngle(len, h), mesh.twin(h), mesh.tail(h), -1};
+  detail::HugeVector<Halfedge> half;
+  half.reserve(3 * static_cast<size_t>(mesh.numFaces()));
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    double len[3];
+    for (int k = 0; k < 3; ++k)
+      len[k] = norm(mesh.position(mesh.head(3 * f + k)) - mesh.position(mesh.tail(3 * f + k)));
+    for (int k = 0; k < 3; ++k) {
+      const int32_t h = 3 * f + k;
+      const double next = len[(k + 1) % 3], prev = len[(k + 2) % 3];
+      half.push_back(Halfedge{len[k], corner(len[k], prev, next), angleBetween(len[k], prev, next), mesh.twin(h),
+                              mesh.tail(h), -1});
+    }
+  }
   return half;
 }
 
