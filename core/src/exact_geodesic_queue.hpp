@@ -55,15 +55,16 @@ class MinQueue {
   /// queue.
   Payload pop() {
     for (;;) {
-      const size_t b = current_ & (kRing - 1);
-      const int32_t c = top_[b];
-      if (c >= 0) {
-        Chunk& chunk = chunks_[c];
-        const Payload payload = chunk.items[--chunk.count];
-        if (chunk.count == 0) {
-          top_[b] = chunk.below;
+      Bucket& bucket = buckets_[current_ & (kRing - 1)];
+      if (bucket.top >= 0) {
+        Chunk& chunk = chunks_[bucket.top];
+        const Payload payload = chunk.items[--bucket.count];
+        if (bucket.count == 0) {  // the chunk below (if any) is full
+          const int32_t emptied = bucket.top;
+          bucket.top = chunk.below;
+          bucket.count = kChunk;
           chunk.below = free_;
-          free_ = c;
+          free_ = emptied;
         }
         --size_;
         --inRing_;
@@ -87,8 +88,13 @@ class MinQueue {
 
   struct Chunk {
     Payload items[kChunk];
+    int32_t below = -1;  // the next chunk of the same bucket's stack (full), or of the free list
+  };
+  /// A bucket: its stack's top chunk (−1: empty) and how many entries that one holds (the chunks below it
+  /// are full). Kept here, not in the chunk, so that a push reads no chunk but the line it writes.
+  struct Bucket {
+    int32_t top = -1;
     int32_t count = 0;
-    int32_t below = -1;  // the next chunk of the same bucket's stack, or of the free list
   };
   struct Far {
     uint64_t slot;
@@ -96,8 +102,8 @@ class MinQueue {
   };
 
   void pushToBucket(size_t b, const Payload& payload) {
-    int32_t c = top_[b];
-    if (c < 0 || chunks_[c].count == kChunk) {
+    Bucket& bucket = buckets_[b];
+    if (bucket.top < 0 || bucket.count == kChunk) {
       int32_t fresh = free_;
       if (fresh >= 0) {
         free_ = chunks_[fresh].below;
@@ -105,12 +111,11 @@ class MinQueue {
         fresh = static_cast<int32_t>(chunks_.size());
         chunks_.emplace_back();
       }
-      chunks_[fresh].count = 0;
-      chunks_[fresh].below = c;
-      top_[b] = c = fresh;
+      chunks_[fresh].below = bucket.top;
+      bucket.top = fresh;
+      bucket.count = 0;
     }
-    Chunk& chunk = chunks_[c];
-    chunk.items[chunk.count++] = payload;
+    chunks_[bucket.top].items[bucket.count++] = payload;
     ++inRing_;
   }
 
@@ -118,7 +123,7 @@ class MinQueue {
 
   const double inverse_;
   HugeVector<Chunk> chunks_;
-  std::vector<int32_t> top_ = std::vector<int32_t>(kRing, -1);  // per bucket: its stack's top chunk (−1: empty)
+  std::vector<Bucket> buckets_ = std::vector<Bucket>(kRing);
   std::vector<Far> far_;  // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
   int32_t free_ = -1;     // the free list of chunks
   uint64_t current_ = 0;  // the bucket (slot) being popped
