@@ -19,14 +19,7 @@ namespace {
 
 using unfolding::corner;
 using unfolding::lineMeetsSegment;
-
-/// q in the frame whose origin is `from` and whose x axis points to `to`, at the known distance `l` (the
-/// edge's length: unfolding::toFrame without its square root).
-Vec2 toFrame(const Vec2& q, const Vec2& from, const Vec2& to, double l) {
-  const double inv = 1 / l;
-  const Vec2 u{(to.x - from.x) * inv, (to.y - from.y) * inv}, d = q - from;
-  return {dot(d, u), cross(u, d)};
-}
+using unfolding::toFrame;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// A vertex whose total angle exceeds 2π by more than rounding is a saddle: shortest paths may bend there.
@@ -427,7 +420,7 @@ class Propagation {
       const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
       const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
       if (p0 <= 0) update(half_[h].tail, w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c, lac), w.sigma, w.origin, half_[nextH].tail);
+      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, half_[nextH].tail);
     }
     // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
     if (xc < w.b1) {
@@ -437,7 +430,7 @@ class Propagation {
       const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
       if (q1 >= lcb)
         update(half_[nextH].tail, w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b, lcb), w.sigma, w.origin, half_[h].tail);
+      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, half_[h].tail);
     }
   }
 
