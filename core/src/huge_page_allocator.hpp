@@ -43,6 +43,8 @@ struct HugePageAllocator {
       std::free(p);
       return;
     }
+#else
+    (void)n;
 #endif
     ::operator delete(p);
   }
