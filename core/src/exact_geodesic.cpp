@@ -10,6 +10,7 @@
 
 #include "exact_geodesic_queue.hpp"
 #include "exact_geodesic_reference.hpp"
+#include "huge_page_allocator.hpp"
 #include "straightest/geodesic_distance.hpp"
 #include "unfolding.hpp"
 
@@ -32,18 +33,66 @@ constexpr double kSeenSlack = 1e-9;
 /// The shadow cone is widened by this angle on each side so that rounding in the arriving direction cannot
 /// lose a direction.
 constexpr double kConeSlack = 1e-7;
+/// The queue orders windows to this fraction of the mean edge length (see exact_geodesic_queue.hpp).
+constexpr double kQueueResolution = 1.0 / 64;
 /// The filter drops a window only when a corner is shorter by more than rounding (relative).
 constexpr double kFilterMargin = 1e-12;
+
+/// What the propagation reads of a halfedge h, in one record: a face's three take 144 bytes, where the
+/// lengths, corners, vertices and twins in arrays of their own cost a cache miss each in the inner loop.
+struct Halfedge {
+  double len;    // |h|
+  Vec2 corner;   // face(h)'s third corner in h's frame (unfolding::oppositeCorner)
+  double angle;  // face(h)'s angle at tail(h), from the three edge lengths (for the saddles)
+  int32_t twin;  // −1 on the boundary
+  int32_t tail;  // the vertex h leaves (head(h) is tail(next(h)), face(h)'s third corner tail(prev(h)))
+  int32_t edge;  // the edge's number, for its record of windows (−1: boundary)
+};
+
+/// The angle between two sides a and b of a triangle whose third side is o.
+double angleBetween(double a, double b, double o) {
+  const double cosine = (a * a + b * b - o * o) / (2 * a * b);
+  return std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
+}
+
+/// The records, face by face from the three lengths (as unfolding::halfedgeLengths and oppositeCorner make
+/// them: the same bits as the back-trace's frames), written once.
+detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
+  detail::HugeVector<Halfedge> half;
+  half.reserve(3 * static_cast<size_t>(mesh.numFaces()));
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    double len[3];
+    for (int k = 0; k < 3; ++k)
+      len[k] = norm(mesh.position(mesh.head(3 * f + k)) - mesh.position(mesh.tail(3 * f + k)));
+    for (int k = 0; k < 3; ++k) {
+      const int32_t h = 3 * f + k;
+      const double next = len[(k + 1) % 3], prev = len[(k + 2) % 3];
+      half.push_back(Halfedge{len[k], corner(len[k], prev, next), angleBetween(len[k], prev, next), mesh.twin(h),
+                              mesh.tail(h), -1});
+    }
+  }
+  return half;
+}
+
+double meanLength(const detail::HugeVector<Halfedge>& half) {
+  double sum = 0;
+  for (const Halfedge& h : half) sum += h.len;
+  return half.empty() ? 0.0 : sum / static_cast<double>(half.size());
+}
 
 /// A window on `halfedge` (propagating into face(halfedge)), or when halfedge < 0 a pseudo-source event
 /// for vertex −1 − halfedge.
 struct Window {
-  double key;     // least distance over the interval: the queue's order
   double b0, b1;  // the interval, as distances from the halfedge's tail
   Vec2 image;     // the origin unfolded into the halfedge's frame (y <= 0: behind the edge)
   double sigma;   // distance at the origin
+  double f0, f1;  // distances at b0 and b1 (σ + |image − b|): kept for the filter when the window is popped
   int32_t halfedge;
   int32_t origin;  // pseudo-source vertex, −1: the source point
+
+  /// The least distance over the interval, the queue's order: at the image's foot, or at the nearer end
+  /// (the same bits as σ + |image − clamp(image.x)|, without a square root).
+  double nearest() const { return image.x < b0 ? f0 : image.x > b1 ? f1 : sigma + std::fabs(image.y); }
 };
 
 class Propagation {
@@ -55,25 +104,20 @@ class Propagation {
         cap_(cap),
         mesh_(mesh),
         out_(out),
-        len_(unfolding::halfedgeLengths(mesh)),
+        half_(halfedges(mesh)),
         pseudo_(mesh.numVertices(), 0),
-        emitted_(mesh.numVertices(), kInf) {
+        emitted_(mesh.numVertices(), kInf),
+        queue_(meanLength(half_) * kQueueResolution) {
     out_.distances.assign(mesh.numVertices(), kInf);
     out_.parents.assign(mesh.numVertices(), GeodesicParent{});
     std::vector<double> angle(mesh.numVertices(), 0.0);
-    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) {
-      // The corner angle at tail(h) between h and the reverse of prev(h), from the three edge lengths.
-      const double a = len_[h], b = len_[TriMesh::prev(h)], o = len_[TriMesh::next(h)];
-      const double cosine = (a * a + b * b - o * o) / (2 * a * b);
-      angle[mesh.tail(h)] += std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
-    }
+    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) angle[half_[h].tail] += half_[h].angle;
     for (int32_t v = 0; v < mesh.numVertices(); ++v)
       pseudo_[v] = mesh.isBoundaryVertex(v) || angle[v] > kTwoPi + kSaddleExcess;
-    edgeOf_.assign(3 * static_cast<size_t>(mesh.numFaces()), -1);
     int32_t edges = 0;
     for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) {
       const int32_t t = mesh.twin(h);
-      if (t > h) edgeOf_[h] = edgeOf_[t] = edges++;
+      if (t > h) half_[h].edge = half_[t].edge = edges++;
     }
     seen_.assign(edges, Seen{1, 0, 0, 0, 0});
     queueLimit_ = 100 * static_cast<int64_t>(mesh.numFaces()) + 1'000'000;
@@ -104,7 +148,7 @@ class Propagation {
 
  private:
   void push(const Window& w) {
-    queue_.push(w.key, w);
+    queue_.push(w.nearest(), w);
     out_.stats.maxQueue = std::max<int64_t>(out_.stats.maxQueue, static_cast<int64_t>(queue_.size()));
   }
 
@@ -113,7 +157,7 @@ class Propagation {
     if (out_.distances[v] == kInf) ++reached_;
     out_.distances[v] = d;
     out_.parents[v] = parent;
-    if (pseudo_[v]) push(Window{d, 0, 0, Vec2{}, d, -1 - v, v});
+    if (pseudo_[v]) push(Window{0, 0, Vec2{}, d, d, d, -1 - v, v});
   }
 
   /// The source point's first windows: every edge of the faces around it that it sees across.
@@ -144,19 +188,17 @@ class Propagation {
   void windowAcross(int32_t h, double toHead, double toTail, double sigma, int32_t origin) {
     const int32_t t = mesh_.twin(h);
     if (t < 0) return;
-    const double l = len_[h];
+    const double l = len(h);
     if (!(l > 0)) return;
     // twin's frame: its tail is h's head.
     const Vec2 image = corner(l, toHead, toTail, /*below=*/true);
     addWindow(t, 0, l, image, sigma, origin, -1);
   }
 
-  /// The angle of face(h) at tail(h), from the edge lengths.
-  double cornerAngle(int32_t h) const {
-    const double a = len_[h], b = len_[TriMesh::prev(h)], o = len_[TriMesh::next(h)];
-    const double cosine = (a * a + b * b - o * o) / (2 * a * b);
-    return std::acos(std::clamp(std::isfinite(cosine) ? cosine : 1.0, -1.0, 1.0));
-  }
+  double len(int32_t h) const { return half_[h].len; }
+
+  /// The angle of face(h) at tail(h).
+  double cornerAngle(int32_t h) const { return half_[h].angle; }
 
   /// The directions in which a shortest path through saddle v may continue: at least π away, on both
   /// sides, from the path it arrived by (a shorter path would cut the corner otherwise). As fan angles
@@ -168,7 +210,7 @@ class Propagation {
     if (parent.halfedge >= 0) {
       const int32_t k = parent.halfedge;
       const int32_t corners[3] = {mesh_.tail(k), mesh_.head(k), mesh_.head(TriMesh::next(k))};
-      const Vec2 at[3] = {Vec2{0, 0}, Vec2{len_[k], 0}, unfolding::oppositeCorner(len_, k)};
+      const Vec2 at[3] = {Vec2{0, 0}, Vec2{len(k), 0}, half_[k].corner};
       int i = 0;
       while (i < 3 && corners[i] != v) ++i;
       if (i == 3) return false;
@@ -211,10 +253,10 @@ class Propagation {
     const bool cone = prune_ && !isSource && !mesh_.isBoundaryVertex(v) && shadowCone(v, total, lo, hi);
     for (const auto& [h, phi] : ring_) {
       const int32_t p = TriMesh::prev(h), o = TriMesh::next(h);
-      update(mesh_.head(h), d + len_[h], GeodesicParent{-1, v, Vec2{}});
-      update(mesh_.tail(p), d + len_[p], GeodesicParent{-1, v, Vec2{}});
+      update(mesh_.head(h), d + len(h), GeodesicParent{-1, v, Vec2{}});
+      update(mesh_.tail(p), d + len(p), GeodesicParent{-1, v, Vec2{}});
       if (!cone) {
-        windowAcross(o, len_[p], len_[h], d, v);
+        windowAcross(o, len(p), len(h), d, v);
         continue;
       }
       const double gamma = cornerAngle(h);
@@ -229,55 +271,65 @@ class Propagation {
   /// from h.
   void windowAcrossBetween(int32_t h, double b0, double b1, double sigma, int32_t origin) {
     const int32_t o = TriMesh::next(h), t = mesh_.twin(o);
-    if (t < 0 || !(len_[o] > 0)) return;
-    const Vec2 w1{len_[h], 0}, w2 = unfolding::oppositeCorner(len_, h), v{0, 0};
+    if (t < 0 || !(len(o) > 0)) return;
+    const Vec2 w1{len(h), 0}, w2 = half_[h].corner, v{0, 0};
     const double t0 = lineMeetsSegment(v, Vec2{std::cos(b0), std::sin(b0)}, w1, w2, 0.0);
     const double t1 = lineMeetsSegment(v, Vec2{std::cos(b1), std::sin(b1)}, w1, w2, 1.0);
-    const double l = len_[o];
+    const double l = len(o);
     // twin(o) runs from w2 to w1.
-    addWindow(t, (1 - t1) * l, (1 - t0) * l, corner(l, len_[TriMesh::prev(h)], len_[h], /*below=*/true), sigma, origin,
+    addWindow(t, (1 - t1) * l, (1 - t0) * l, corner(l, len(TriMesh::prev(h)), len(h), /*below=*/true), sigma, origin,
               -1);
   }
 
   /// Adds the window [b0, b1] on halfedge h unless it is too narrow or the filter (the corners of the face it
   /// leaves, h's endpoints and `third`, a vertex of that face; −1: none) shows it useless.
   void addWindow(int32_t h, double b0, double b1, const Vec2& image, double sigma, int32_t origin, int32_t third) {
-    const double l = len_[h];
+    const double l = len(h);
     b0 = std::max(b0, 0.0);
     b1 = std::min(b1, l);
     if (!(b1 - b0 > kMinWindowRel * l)) return;
     const Vec2 x0{b0, 0}, x1{b1, 0};
-    const double nearest = sigma + unfolding::length(Vec2{std::clamp(image.x, b0, b1), 0} - image);
+    const Window w{
+        b0, b1, image, sigma, sigma + unfolding::length(image - x0), sigma + unfolding::length(image - x1), h, origin};
     if (!prune_) {
-      if (nearest > cap_) return;
+      if (w.nearest() > cap_) return;
       ++out_.stats.windows;
-      push(Window{nearest, b0, b1, image, sigma, h, origin});
+      push(w);
       return;
     }
     if (dominated(h, b0, b1, image, sigma)) {
       ++out_.stats.filtered;
       return;
     }
-    const double f0 = sigma + unfolding::length(image - x0), f1 = sigma + unfolding::length(image - x1);
     const double* d = out_.distances.data();
-    const int32_t tail = mesh_.tail(h), head = mesh_.head(h);
-    auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
-    if (shorter(d[tail] + b1, f1) || shorter(d[head] + (l - b0), f0)) {
+    const int32_t tail = half_[h].tail, head = half_[TriMesh::next(h)].tail;
+    if (shorter(d[tail] + b1, w.f1) || shorter(d[head] + (l - b0), w.f0)) {
       ++out_.stats.filtered;
       return;
     }
-    if (third >= 0 && d[third] < kInf) {
+    if (third >= 0) {
       // third's position in h's frame: the corner of face(twin(h)) opposite h, below the axis.
-      const int32_t t = mesh_.twin(h);
-      const Vec2 r = corner(l, len_[TriMesh::next(t)], len_[TriMesh::prev(t)], /*below=*/true);
-      if (shorter(d[third] + std::max(unfolding::length(r - x0), unfolding::length(r - x1)), nearest)) {
+      const Vec2& t = half_[half_[h].twin].corner;
+      if (cornerShorter(d[third], Vec2{l - t.x, -t.y}, x0, x1, w.nearest())) {
         ++out_.stats.filtered;
         return;
       }
     }
     remember(h, b0, b1, image, sigma);
     ++out_.stats.windows;
-    push(Window{nearest, b0, b1, image, sigma, h, origin});
+    push(w);
+  }
+
+  /// The filter's test: a path of length `via` is shorter than a window's distance by more than rounding.
+  static bool shorter(double via, double window) { return via < window - kFilterMargin * window; }
+
+  /// shorter(dr + max(|r − x0|, |r − x1|), least): corner r at distance dr reaches every point of the interval
+  /// x0–x1 more shortly than the window's least distance. Compared squared, without a square root.
+  static bool cornerShorter(double dr, const Vec2& r, const Vec2& x0, const Vec2& x1, double least) {
+    const double room = least - kFilterMargin * least - dr;  // inf − inf (never reached corner): NaN, false
+    if (!(room > 0)) return false;
+    const double ry2 = r.y * r.y, d0 = r.x - x0.x, d1 = r.x - x1.x;
+    return std::max(d0 * d0, d1 * d1) + ry2 < room * room;
   }
 
   /// A window as its edge's record, in the frame of the edge's lower-numbered halfedge; b1 < b0: none.
@@ -287,8 +339,8 @@ class Propagation {
 
   /// A window's interval and image in the frame of its edge's lower-numbered halfedge.
   void toEdgeFrame(int32_t h, double& b0, double& b1, double& ix, double& iy) const {
-    if (h < mesh_.twin(h)) return;
-    const double l = len_[h], c0 = l - b1, c1 = l - b0;
+    if (h < half_[h].twin) return;
+    const double l = len(h), c0 = l - b1, c1 = l - b0;
     b0 = c0;
     b1 = c1;
     ix = l - ix;
@@ -300,7 +352,7 @@ class Propagation {
   void remember(int32_t h, double b0, double b1, const Vec2& image, double sigma) {
     double ix = image.x, iy = image.y;
     toEdgeFrame(h, b0, b1, ix, iy);
-    seen_[edgeOf_[h]] = Seen{b0, b1, ix, iy, sigma};
+    seen_[half_[h].edge] = Seen{b0, b1, ix, iy, sigma};
   }
 
   /// True when the window recorded on the same edge (see remember) is shorter, by more than the filter's
@@ -313,7 +365,7 @@ class Propagation {
   bool dominated(int32_t h, double b0, double b1, const Vec2& image, double sigma) const {
     double ix = image.x, iy = image.y;
     toEdgeFrame(h, b0, b1, ix, iy);
-    const Seen& s = seen_[edgeOf_[h]];
+    const Seen& s = seen_[half_[h].edge];
     if (!(s.b0 <= b0 && s.b1 >= b1)) return false;
     const double ay = std::fabs(iy), sy = std::fabs(s.iy);
     auto beaten = [&](double x) {
@@ -334,12 +386,10 @@ class Propagation {
   /// was made. (Its edge's endpoints, and the corner c of the face it enters.)
   bool useless(const Window& w, const Vec2& c, int32_t vc) {
     const double* d = out_.distances.data();
-    const double l = len_[w.halfedge];
-    const Vec2 x0{w.b0, 0}, x1{w.b1, 0};
-    auto shorter = [](double via, double window) { return via < window - kFilterMargin * window; };
-    if (shorter(d[mesh_.tail(w.halfedge)] + w.b1, w.sigma + unfolding::length(w.image - x1)) ||
-        shorter(d[mesh_.head(w.halfedge)] + (l - w.b0), w.sigma + unfolding::length(w.image - x0)) ||
-        (d[vc] < kInf && shorter(d[vc] + std::max(unfolding::length(c - x0), unfolding::length(c - x1)), w.key))) {
+    const double l = len(w.halfedge);
+    if (shorter(d[half_[w.halfedge].tail] + w.b1, w.f1) ||
+        shorter(d[half_[TriMesh::next(w.halfedge)].tail] + (l - w.b0), w.f0) ||
+        cornerShorter(d[vc], c, Vec2{w.b0, 0}, Vec2{w.b1, 0}, w.nearest())) {
       ++out_.stats.filtered;
       return true;
     }
@@ -350,10 +400,10 @@ class Propagation {
   /// opposite corner c, which gets its distance when the window sees it.
   void propagate(const Window& w) {
     const int32_t h = w.halfedge, nextH = TriMesh::next(h), prevH = TriMesh::prev(h);
-    const double l = len_[h];
-    const Vec2 a{0, 0}, b{l, 0}, c = unfolding::oppositeCorner(len_, h);
+    const double l = len(h);
+    const Vec2 a{0, 0}, b{l, 0}, c = half_[h].corner;
     const Vec2& image = w.image;
-    const int32_t vc = mesh_.head(nextH);
+    const int32_t vc = half_[prevH].tail;
     if (prune_ && useless(w, c, vc)) return;
     // Where the ray from the image through c crosses the axis.
     const double depth = c.y - image.y;
@@ -365,21 +415,22 @@ class Propagation {
       update(vc, w.sigma + unfolding::length(c - image), GeodesicParent{h, w.origin, image});
     // The part left of c leaves through c–a (child on twin(prevH), frame a → c).
     if (xc > w.b0) {
-      const int32_t child = mesh_.twin(prevH);
-      const double lac = len_[prevH];
+      const int32_t child = half_[prevH].twin;
+      const double lac = len(prevH);
       const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
       const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
-      if (p0 <= 0) update(mesh_.tail(h), w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, mesh_.head(h));
+      if (p0 <= 0) update(half_[h].tail, w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
+      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, half_[nextH].tail);
     }
     // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
     if (xc < w.b1) {
-      const int32_t child = mesh_.twin(nextH);
-      const double lcb = len_[nextH];
+      const int32_t child = half_[nextH].twin;
+      const double lcb = len(nextH);
       const double q0 = xc > w.b0 ? 0.0 : lineMeetsSegment(image, Vec2{w.b0, 0}, c, b, 0.0) * lcb;
       const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
-      if (q1 >= lcb) update(mesh_.head(h), w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, mesh_.tail(h));
+      if (q1 >= lcb)
+        update(half_[nextH].tail, w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
+      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, half_[h].tail);
     }
   }
 
@@ -387,13 +438,12 @@ class Propagation {
   const double cap_;
   const TriMesh& mesh_;
   ExactGeodesics& out_;
-  std::vector<double> len_;
+  detail::HugeVector<Halfedge> half_;  // per halfedge: what the propagation reads of it (Halfedge)
   std::vector<uint8_t> pseudo_;
   std::vector<double> emitted_;                   // distance at a vertex's last emission
   std::vector<std::pair<int32_t, double>> ring_;  // emitFromVertex's fan: outgoing halfedge, angle before it
   detail::MinQueue<Window> queue_;                // windows and pseudo-source events, by key
-  std::vector<int32_t> edgeOf_;                   // per halfedge: its edge's number (−1: boundary)
-  std::vector<Seen> seen_;                        // per edge: the last window created on it (see remember)
+  detail::HugeVector<Seen> seen_;                 // per edge: the last window created on it (see remember)
   int64_t reached_ = 0, queueLimit_ = 0;
 };
 

@@ -47,6 +47,35 @@ TEST(ExactGeodesicReference, PruningKeepsTheDistancesOnHeightFields) {
   }
 }
 
+TEST(ExactGeodesicReference, PruningKeepsTheDistancesOnObtuseUnequalTriangles) {
+  // Columns spaced geometrically (edges from 0.02 to 0.5: the queue's buckets are a fraction of the mean
+  // edge) and rows sheared by a jitter, so that many triangles are obtuse; bumps make saddles; a boundary.
+  const int n = 12;
+  const TriMesh mesh = makeGrid(
+      n,
+      [](int i, int j) {
+        const double x = 0.04 * (std::pow(1.35, i) - 1), y = 0.15 * j + 0.09 * ((i * 7 + j * 3) % 5) / 4.0;
+        return Vec3{x, y, 0.12 * std::sin(5 * x) * std::cos(4 * y)};
+      },
+      GridDiagonals::Alternating);
+  for (const SurfacePoint& s : {SurfacePoint::vertex(0), SurfacePoint::vertex(5 * n + 6),
+                                SurfacePoint::face(mesh.numFaces() / 2, {0.6, 0.3, 0.1})}) {
+    const Comparison c = compare(mesh, s);
+    EXPECT_LE(c.worst, 1e-12) << "source index " << s.index;
+    EXPECT_LT(c.pruned, c.unpruned);
+  }
+}
+
+TEST(ExactGeodesicReference, PruningKeepsTheDistancesOnAClosedTorus) {
+  // No boundary; the inner half's vertices are saddles (negative curvature), the outer half's are not.
+  const TriMesh mesh = makeTorus(1.0, 0.4, 14, 8);
+  for (int32_t source : {int32_t(0), int32_t(3), int32_t(61)}) {
+    const Comparison c = compare(mesh, SurfacePoint::vertex(source));
+    EXPECT_LE(c.worst, 1e-12) << "source " << source;
+    EXPECT_LT(c.pruned, c.unpruned);
+  }
+}
+
 TEST(ExactGeodesicReference, PruningKeepsTheDistancesOnACone) {
   const testing::Cone cone = testing::cone(6, 1.0, 1.0, 6);
   for (int32_t source : {cone.apex, int32_t(20), int32_t(41)}) {

@@ -15,8 +15,8 @@
 // between two known points); the queue's peak stayed at 0.8–1.5 windows per vertex on the meshes measured,
 // 300–250k vertices (see docs/ARCHITECTURE.md). The number of windows grows like n^1.5 on bumpy meshes:
 // each saddle's shadow is a pencil of its own that splits at every vertex it meets.
-// Unreferenced vertices and other components get +inf. Cost: O(windows) queue operations, an entry moving
-// between buckets at most 64 times (a radix heap: keys only grow).
+// Unreferenced vertices and other components get +inf. Cost: O(windows) queue operations, each O(1) (a
+// bucket queue over the keys just ahead of the front: keys only grow).
 #pragma once
 #include <cstdint>
 #include <vector>
