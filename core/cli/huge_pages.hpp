@@ -13,7 +13,9 @@
 // are read only at process start, hence the re-exec. Mode "always" needs nothing and "never"
 // allows nothing: no re-exec then, nor where the variable already names the tunable (the user's choice
 // stands: GLIBC_TUNABLES=glibc.malloc.hugetlb=0 turns this off). Programs that link the library
-// themselves can set the variable in their environment; WebAssembly has no such choice.
+// themselves can set the variable in their environment; WebAssembly has no such choice. (The exact
+// geodesics' arrays ask for huge pages themselves, core/src/huge_page_allocator.hpp, wherever the
+// library runs; these tunables cover every other allocation of the CLI.)
 #pragma once
 #include <string>
 
