@@ -245,10 +245,9 @@ struct StraightestPathTracer::Impl::Walk {
       out.status = sourceOnBoundary() ? TraceStatus::HitBoundary : TraceStatus::NoExit;
       return;
     }
-    const FaceAdjacency* adjacency = mesh.adjacencyData();
     bool first = true;
     int32_t pieceStart = -1;  // first halfedge crossed since S or the last vertex passing
-    for (int64_t step = 0;; ++step) {
+    for (int64_t step = 0;;) {
       if (step > tr.maxSteps_) {
         out.status = TraceStatus::StepLimit;
         return;
@@ -275,25 +274,58 @@ struct StraightestPathTracer::Impl::Walk {
           out.status = mesh.isBoundaryVertex(v) ? TraceStatus::HitBoundary : TraceStatus::NoExit;
           return;
         }
+        ++step;
         continue;
       }
-      // A crossing of halfedge e.halfedge inside e.face.
-      if (segment(P, e.position, e.face, -1, first)) return;
-      first = false;
-      emit(SurfacePoint::edge(e.halfedge, e.t), e.position);
-      const int32_t k = adjacency[e.halfedge / 3].twins[e.halfedge % 3];  // the face we are in: cached
-      if (k < 0) {
-        out.status = TraceStatus::HitBoundary;
-        return;
+      if (crossEdges(e, P, first, pieceStart, step)) return;
+    }
+  }
+
+  /// Walks from P through the crossing e and the edge crossings after it, until the walk ends (returns
+  /// true) or the section meets a vertex (e becomes that vertex exit; returns false). This is where
+  /// the walk spends its time: the state lives in locals (not in `out` or an Exit, which the compiler
+  /// must keep in memory), and a step reads the face it enters and that face's one new vertex.
+  STRAIGHTEST_INLINE bool crossEdges(Exit& e, Vec3& P, bool& first, int32_t& pieceStart, int64_t& step) {
+    const FaceAdjacency* adjacency = mesh.adjacencyData();
+    const Vec3* positions = mesh.positions().data();
+    const Vec3 normal = tr.plane_.normal, origin = tr.plane_.origin;
+    const double onPlane = tr.onPlaneTolerance_;
+    const int64_t maxSteps = tr.maxSteps_;
+    const bool keep = tr.options_.keepPoints;
+    int32_t h = e.halfedge, f = e.face;
+    double t = e.t, dTail = e.dTail, dHead = e.dHead;
+    Vec3 X = e.position;
+    double length = out.length;
+    int64_t crossed = out.facesCrossed;
+    auto finish = [&](TraceStatus status) {
+      out.length = length;
+      out.facesCrossed = crossed;
+      out.status = status;
+      return true;
+    };
+    for (;;) {
+      // The segment P → X in face f (as segment() accounts for it).
+      ++crossed;
+      if (tr.isTargetFace(f) && onSegment(D, P, X)) {
+        length += norm(D - P);
+        emit(dest, D);
+        return finish(TraceStatus::Reached);
       }
+      if (!first && tr.isSourceFace(f) && onSegment(tr.sourcePosition_, P, X)) {
+        length += norm(tr.sourcePosition_ - P);
+        emit(tr.source_, tr.sourcePosition_);
+        return finish(TraceStatus::OtherComponent);
+      }
+      length += norm(X - P);
+      first = false;
+      if (keep) emit(SurfacePoint::edge(h, t), X);
+      const int32_t k = adjacency[h / 3].twins[h % 3];  // the face we are in: cached
+      if (k < 0) return finish(TraceStatus::HitBoundary);
       // Between vertex passings every crossed edge has one way in and one way out, so a cycle first
       // comes back to the piece's first crossing (in either direction).
-      if (e.halfedge == pieceStart || k == pieceStart) {
-        out.status = TraceStatus::Loop;
-        return;
-      }
-      if (pieceStart < 0) pieceStart = e.halfedge;
-      P = e.position;
+      if (h == pieceStart || k == pieceStart) return finish(TraceStatus::Loop);
+      if (pieceStart < 0) pieceStart = h;
+      P = X;
       // Enter face g through k = 3g + j (u → w, signs strictly opposite: k runs opposite to the crossed
       // halfedge, so u is its head); leave through the vertex o on the plane, or through next(k)
       // (w → o) or prev(k) (o → u), whichever has opposite signs. Only o is new.
@@ -304,20 +336,32 @@ struct StraightestPathTracer::Impl::Walk {
       // latency overlaps the work on g (a no-op where the compiler has no prefetch).
       prefetch(adjacency + face.twins[j1] / 3);
       prefetch(adjacency + face.twins[j2] / 3);
-      const double du = e.dHead, dw = e.dTail, dO = tr.signedDistance(o);
+      const double du = dHead, dw = dTail;
+      double dO = dot(normal, positions[o] - origin);  // signedDistance(o)
+      if (std::abs(dO) <= onPlane) dO = 0.0;
+      ++step;
       if (dO == 0) {
+        out.length = length;
+        out.facesCrossed = crossed;
         Exit ev;
         ev.valid = true;
         ev.isVertex = true;
         ev.vertex = o;
-        ev.position = mesh.position(o);
+        ev.position = positions[o];
         ev.face = g;
         e = ev;
-      } else if ((dO > 0) != (du > 0)) {
-        e = crossing(3 * g + j2, g, o, u, dO, du);
-      } else {
-        e = crossing(3 * g + j1, g, w, o, dw, dO);
+        return false;
       }
+      if (step > maxSteps) return finish(TraceStatus::StepLimit);
+      int32_t a, b;
+      if ((dO > 0) != (du > 0)) {
+        h = 3 * g + j2, a = o, b = u, dTail = dO, dHead = du;
+      } else {
+        h = 3 * g + j1, a = w, b = o, dTail = dw, dHead = dO;
+      }
+      f = g;
+      t = dTail / (dTail - dHead);  // as crossing() computes it
+      X = positions[a] * (1 - t) + positions[b] * t;
     }
   }
 
