@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -46,6 +47,13 @@ inline void prefetch(const T* p) {
 #else
   (void)p;
 #endif
+}
+
+/// Starts loading the record of the face of halfedge k (any k, −1 included: a prefetch never faults).
+/// Byte 8k lies in that record (24 bytes from byte 24 (k / 3)), so no division is needed.
+inline void prefetchRecordOf(const FaceAdjacency* adjacency, int32_t k) {
+  static_assert(sizeof(FaceAdjacency) == 24, "3 corners and 3 twins");
+  prefetch(reinterpret_cast<const char*>(reinterpret_cast<uintptr_t>(adjacency) + 8 * static_cast<intptr_t>(k)));
 }
 
 }  // namespace
@@ -282,9 +290,18 @@ struct StraightestPathTracer::Impl::Walk {
   }
 
   /// Walks from P through the crossing e and the edge crossings after it, until the walk ends (returns
-  /// true) or the section meets a vertex (e becomes that vertex exit; returns false). This is where
-  /// the walk spends its time: the state lives in locals (not in `out` or an Exit, which the compiler
-  /// must keep in memory), and a step reads the face it enters and that face's one new vertex.
+  /// true) or the section meets a vertex (e becomes that vertex exit; returns false). This is where the
+  /// walk spends its time, so it runs in two passes over blocks of up to 64 steps, with its state in
+  /// locals. The first pass follows the section from face to face: per face, the twin halfedge to
+  /// follow (kept from the face before, not looked up again), one record, one new vertex and its signed
+  /// distance: a short chain of dependent loads, whose branch the processor predicts well. The second
+  /// computes the block's crossing points and adds the segments' lengths, in order and with the same
+  /// arithmetic as crossing() and segment() (so the same bits); its steps do not depend on each other
+  /// (but for the sum), so the processor overlaps their divisions and square roots, which in one pass
+  /// stood in every step's chain. Faces of S and D, where a segment must be tested against the end
+  /// points, are walked one at a time. (1M-vertex height field, all 3996 boundary targets, one thread,
+  /// interleaved runs: 87 ms before, 64 ms after; computing the choice of exit without a branch was
+  /// 50 % slower.)
   STRAIGHTEST_INLINE bool crossEdges(Exit& e, Vec3& P, bool& first, int32_t& pieceStart, int64_t& step) {
     const FaceAdjacency* adjacency = mesh.adjacencyData();
     const Vec3* positions = mesh.positions().data();
@@ -292,9 +309,10 @@ struct StraightestPathTracer::Impl::Walk {
     const double onPlane = tr.onPlaneTolerance_;
     const int64_t maxSteps = tr.maxSteps_;
     const bool keep = tr.options_.keepPoints;
-    int32_t h = e.halfedge, f = e.face;
-    double t = e.t, dTail = e.dTail, dHead = e.dHead;
-    Vec3 X = e.position;
+    // The crossing the walk is at: halfedge h = a → b in face f, with the ends' signed distances.
+    int32_t h = e.halfedge, f = e.face, a = mesh.tail(h), b = mesh.head(h);
+    int32_t k = adjacency[f].twins[h - 3 * f];  // twin(h)
+    double da = e.dTail, db = e.dHead;
     double length = out.length;
     int64_t crossed = out.facesCrossed;
     auto finish = [&](TraceStatus status) {
@@ -303,65 +321,125 @@ struct StraightestPathTracer::Impl::Walk {
       out.status = status;
       return true;
     };
+    // The crossing point as crossing() computes it.
+    auto point = [positions](int32_t a_, int32_t b_, double da_, double db_, double& t) {
+      t = da_ / (da_ - db_);
+      return positions[a_] * (1 - t) + positions[b_] * t;
+    };
+    struct Crossing {
+      int32_t h, a, b;
+      double da, db;
+    };
+    constexpr int kBlock = 64;
+    Crossing block[kBlock];
+    enum class End { None, Test, Boundary, Loop, Vertex, StepLimit };
+    int32_t vertex = -1, vertexFace = -1;  // End::Vertex: the vertex on the plane, in face vertexFace
     for (;;) {
-      // The segment P → X in face f (as segment() accounts for it).
-      ++crossed;
-      if (tr.isTargetFace(f) && onSegment(D, P, X)) {
-        length += norm(D - P);
-        emit(dest, D);
-        return finish(TraceStatus::Reached);
+      // Pass 1: the faces.
+      int m = 0;
+      End end = End::None;
+      for (;;) {
+        if (tr.isTargetFace(f) || tr.isSourceFace(f)) {
+          if (m > 0) {  // the segments before this one first
+            end = End::Test;
+            break;
+          }
+          // The segment P → X in face f, tested as segment() tests it.
+          ++crossed;
+          double t;
+          const Vec3 X = point(a, b, da, db, t);
+          if (tr.isTargetFace(f) && onSegment(D, P, X)) {
+            length += norm(D - P);
+            emit(dest, D);
+            return finish(TraceStatus::Reached);
+          }
+          if (!first && tr.isSourceFace(f) && onSegment(tr.sourcePosition_, P, X)) {
+            length += norm(tr.sourcePosition_ - P);
+            emit(tr.source_, tr.sourcePosition_);
+            return finish(TraceStatus::OtherComponent);
+          }
+          length += norm(X - P);
+          first = false;
+          if (keep) emit(SurfacePoint::edge(h, t), X);
+          P = X;
+        } else {
+          block[m++] = Crossing{h, a, b, da, db};
+        }
+        if (k < 0) {
+          end = End::Boundary;
+          break;
+        }
+        // Between vertex passings every crossed edge has one way in and one way out, so a cycle first
+        // comes back to the piece's first crossing (in either direction).
+        if (h == pieceStart || k == pieceStart) {
+          end = End::Loop;
+          break;
+        }
+        if (pieceStart < 0) pieceStart = h;
+        // Enter face g through k = 3g + j (u → w, signs strictly opposite: k runs opposite to the crossed
+        // halfedge, so u is its head); leave through the vertex o on the plane, or through next(k)
+        // (w → o) or prev(k) (o → u), whichever has opposite signs. Only o is new.
+        const int32_t g = static_cast<int32_t>(static_cast<uint32_t>(k) / 3u), j = k - 3 * g, j1 = j == 2 ? 0 : j + 1,
+                      j2 = j1 == 2 ? 0 : j1 + 1;
+        const FaceAdjacency& face = adjacency[g];
+        const int32_t u = face.corners[j], w = face.corners[j1], o = face.corners[j2];
+        // The walk enters one of g's two other neighbours next: start loading both now, so that memory
+        // latency overlaps the work on g (a no-op where the compiler has no prefetch).
+        const int32_t kNext = face.twins[j1], kPrev = face.twins[j2];
+        prefetchRecordOf(adjacency, kNext);
+        prefetchRecordOf(adjacency, kPrev);
+        const double du = db, dw = da;
+        double dO = dot(normal, positions[o] - origin);  // signedDistance(o)
+        if (std::abs(dO) <= onPlane) dO = 0.0;
+        ++step;
+        if (dO == 0) {
+          end = End::Vertex;
+          vertex = o;
+          vertexFace = g;
+          break;
+        }
+        if (step > maxSteps) {
+          end = End::StepLimit;
+          break;
+        }
+        if ((dO > 0) != (du > 0)) {
+          h = 3 * g + j2, k = kPrev, a = o, b = u, da = dO, db = du;
+        } else {
+          h = 3 * g + j1, k = kNext, a = w, b = o, da = dw, db = dO;
+        }
+        f = g;
+        if (m == kBlock) break;
       }
-      if (!first && tr.isSourceFace(f) && onSegment(tr.sourcePosition_, P, X)) {
-        length += norm(tr.sourcePosition_ - P);
-        emit(tr.source_, tr.sourcePosition_);
-        return finish(TraceStatus::OtherComponent);
+      // Pass 2: the block's points and lengths, in order.
+      for (int i = 0; i < m; ++i) {
+        const Crossing& c = block[i];
+        double t;
+        const Vec3 X = point(c.a, c.b, c.da, c.db, t);
+        length += norm(X - P);
+        if (keep) emit(SurfacePoint::edge(c.h, t), X);
+        P = X;
       }
-      length += norm(X - P);
-      first = false;
-      if (keep) emit(SurfacePoint::edge(h, t), X);
-      const int32_t k = adjacency[h / 3].twins[h % 3];  // the face we are in: cached
-      if (k < 0) return finish(TraceStatus::HitBoundary);
-      // Between vertex passings every crossed edge has one way in and one way out, so a cycle first
-      // comes back to the piece's first crossing (in either direction).
-      if (h == pieceStart || k == pieceStart) return finish(TraceStatus::Loop);
-      if (pieceStart < 0) pieceStart = h;
-      P = X;
-      // Enter face g through k = 3g + j (u → w, signs strictly opposite: k runs opposite to the crossed
-      // halfedge, so u is its head); leave through the vertex o on the plane, or through next(k)
-      // (w → o) or prev(k) (o → u), whichever has opposite signs. Only o is new.
-      const int32_t g = k / 3, j = k - 3 * g, j1 = j == 2 ? 0 : j + 1, j2 = j1 == 2 ? 0 : j1 + 1;
-      const FaceAdjacency& face = adjacency[g];
-      const int32_t u = face.corners[j], w = face.corners[j1], o = face.corners[j2];
-      // The walk enters one of g's two other neighbours next: start loading both now, so that memory
-      // latency overlaps the work on g (a no-op where the compiler has no prefetch).
-      prefetch(adjacency + face.twins[j1] / 3);
-      prefetch(adjacency + face.twins[j2] / 3);
-      const double du = dHead, dw = dTail;
-      double dO = dot(normal, positions[o] - origin);  // signedDistance(o)
-      if (std::abs(dO) <= onPlane) dO = 0.0;
-      ++step;
-      if (dO == 0) {
-        out.length = length;
-        out.facesCrossed = crossed;
-        Exit ev;
-        ev.valid = true;
-        ev.isVertex = true;
-        ev.vertex = o;
-        ev.position = positions[o];
-        ev.face = g;
-        e = ev;
-        return false;
+      crossed += m;
+      if (m > 0) first = false;
+      switch (end) {
+        case End::None:
+        case End::Test: continue;
+        case End::Boundary: return finish(TraceStatus::HitBoundary);
+        case End::Loop: return finish(TraceStatus::Loop);
+        case End::StepLimit: return finish(TraceStatus::StepLimit);
+        case End::Vertex: {
+          out.length = length;
+          out.facesCrossed = crossed;
+          Exit ev;
+          ev.valid = true;
+          ev.isVertex = true;
+          ev.vertex = vertex;
+          ev.position = positions[vertex];
+          ev.face = vertexFace;
+          e = ev;
+          return false;
+        }
       }
-      if (step > maxSteps) return finish(TraceStatus::StepLimit);
-      int32_t a, b;
-      if ((dO > 0) != (du > 0)) {
-        h = 3 * g + j2, a = o, b = u, dTail = dO, dHead = du;
-      } else {
-        h = 3 * g + j1, a = w, b = o, dTail = dw, dHead = dO;
-      }
-      f = g;
-      t = dTail / (dTail - dHead);  // as crossing() computes it
-      X = positions[a] * (1 - t) + positions[b] * t;
     }
   }
 
