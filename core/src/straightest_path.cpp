@@ -40,6 +40,17 @@ struct Exit {
 #define STRAIGHTEST_INLINE inline
 #endif
 
+// Keeps the branch it stands in: an empty volatile asm statement cannot be executed speculatively, so
+// the compiler does not turn the branch into conditional moves. Where a branch is predicted well, a
+// conditional move only puts its condition into the chain of dependent loads: Clang did so with the
+// walk's choice of exit (its two arms only assign), which made the WASM walk 1.5× slower than with the
+// branch (GCC keeps the branch; computed without it, the native walk was 1.5× slower too).
+#if defined(__GNUC__) || defined(__clang__)
+#define STRAIGHTEST_KEEP_BRANCH() __asm__ volatile("")
+#else
+#define STRAIGHTEST_KEEP_BRANCH() ((void)0)
+#endif
+
 template <class T>
 inline void prefetch(const T* p) {
 #if defined(__GNUC__) || defined(__clang__)
@@ -301,7 +312,7 @@ struct StraightestPathTracer::Impl::Walk {
   /// stood in every step's chain. Faces of S and D, where a segment must be tested against the end
   /// points, are walked one at a time. (1M-vertex height field, all 3996 boundary targets, one thread,
   /// interleaved runs: 87 ms before, 64 ms after; computing the choice of exit without a branch was
-  /// 50 % slower.)
+  /// 50 % slower: see STRAIGHTEST_KEEP_BRANCH.)
   STRAIGHTEST_INLINE bool crossEdges(Exit& e, Vec3& P, bool& first, int32_t& pieceStart, int64_t& step) {
     const FaceAdjacency* adjacency = mesh.adjacencyData();
     const Vec3* positions = mesh.positions().data();
@@ -403,6 +414,7 @@ struct StraightestPathTracer::Impl::Walk {
           break;
         }
         if ((dO > 0) != (du > 0)) {
+          STRAIGHTEST_KEEP_BRANCH();
           h = 3 * g + j2, k = kPrev, a = o, b = u, da = dO, db = du;
         } else {
           h = 3 * g + j1, k = kNext, a = w, b = o, da = dw, db = dO;
