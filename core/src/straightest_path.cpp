@@ -60,11 +60,18 @@ inline void prefetch(const T* p) {
 #endif
 }
 
-/// Starts loading the record of the face of halfedge k (any k, −1 included: a prefetch never faults).
-/// Byte 8k lies in that record (24 bytes from byte 24 (k / 3)), so no division is needed.
+/// Starts loading the record of the face of halfedge k (any k, −1 included). Byte 8k lies in that
+/// record (24 bytes from byte 24 (k / 3): corner 0, corner 2 or twin 1), so no division is needed.
 inline void prefetchRecordOf(const FaceAdjacency* adjacency, int32_t k) {
   static_assert(sizeof(FaceAdjacency) == 24, "3 corners and 3 twins");
+#if defined(__wasm__)
+  // WebAssembly has no prefetch: a load whose value an empty asm statement takes (so that it stays)
+  // starts the same transfer without waiting for it. Unlike a prefetch it must stay in bounds: k ≥ 0.
+  const int32_t value = reinterpret_cast<const int32_t*>(adjacency)[2 * std::max(k, 0)];
+  __asm__ volatile("" ::"r"(value));
+#else
   prefetch(reinterpret_cast<const char*>(reinterpret_cast<uintptr_t>(adjacency) + 8 * static_cast<intptr_t>(k)));
+#endif
 }
 
 }  // namespace
