@@ -43,8 +43,8 @@ struct Exit {
 // Keeps the branch it stands in: an empty volatile asm statement cannot be executed speculatively, so
 // the compiler does not turn the branch into conditional moves. Where a branch is predicted well, a
 // conditional move only puts its condition into the chain of dependent loads: Clang did so with the
-// walk's choice of exit (its two arms only assign), which made the WASM walk 1.5× slower than with the
-// branch (GCC keeps the branch; computed without it, the native walk was 1.5× slower too).
+// walk's choice of exit (its two arms only assign), which made the WASM walk 1.6× slower than with the
+// branch (GCC keeps the branch; computed without it, the native walk was 1.6× slower too).
 #if defined(__GNUC__) || defined(__clang__)
 #define STRAIGHTEST_KEEP_BRANCH() __asm__ volatile("")
 #else
@@ -318,8 +318,8 @@ struct StraightestPathTracer::Impl::Walk {
   /// (but for the sum), so the processor overlaps their divisions and square roots, which in one pass
   /// stood in every step's chain. Faces of S and D, where a segment must be tested against the end
   /// points, are walked one at a time. (1M-vertex height field, all 3996 boundary targets, one thread,
-  /// interleaved runs: 87 ms before, 64 ms after; computing the choice of exit without a branch was
-  /// 50 % slower: see STRAIGHTEST_KEEP_BRANCH.)
+  /// interleaved runs: 85 ms before, 65 ms after; computing the choice of exit without a branch was
+  /// 60 % slower: see STRAIGHTEST_KEEP_BRANCH.)
   STRAIGHTEST_INLINE bool crossEdges(Exit& e, Vec3& P, bool& first, int32_t& pieceStart, int64_t& step) {
     const FaceAdjacency* adjacency = mesh.adjacencyData();
     const Vec3* positions = mesh.positions().data();
@@ -401,8 +401,8 @@ struct StraightestPathTracer::Impl::Walk {
                       j2 = j1 == 2 ? 0 : j1 + 1;
         const FaceAdjacency& face = adjacency[g];
         const int32_t u = face.corners[j], w = face.corners[j1], o = face.corners[j2];
-        // The walk enters one of g's two other neighbours next: start loading both now, so that memory
-        // latency overlaps the work on g (a no-op where the compiler has no prefetch).
+        // The walk enters one of g's two other neighbours next: start loading both records now, so that
+        // memory latency overlaps the work on g.
         const int32_t kNext = face.twins[j1], kPrev = face.twins[j2];
         prefetchRecordOf(adjacency, kNext);
         prefetchRecordOf(adjacency, kPrev);
