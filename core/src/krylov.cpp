@@ -4,6 +4,7 @@
 #include "straightest/krylov.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +12,38 @@
 #include "solve_progress.hpp"
 
 namespace straightest {
+namespace {
+
+/// y = A x for the two interleaved columns, and N sums that add(i, sums) accumulates from each row just
+/// after it is computed (i = 2·row): one pass over the rows instead of a product and then a reduction,
+/// with the same arithmetic per row as CsrMatrix::multiply2 and the same chunks and order of the sums as
+/// sumRowChunks — the same bits as the two passes.
+template <std::size_t N, class Add>
+std::array<double, N> productSums(const CsrMatrix& A, const std::vector<double>& x, std::vector<double>& y,
+                                  const Add& add) {
+  const int32_t* rowStart = A.start.data();
+  const int32_t* column = A.col.data();
+  const double* entry = A.value.data();
+  const double* xv = x.data();
+  double* yv = y.data();
+  return detail::sumRowChunks<N>(static_cast<std::size_t>(A.rows),
+                                 [&](std::size_t begin, std::size_t end, double* sum) {
+                                   for (std::size_t r = begin; r < end; ++r) {
+                                     double s0 = 0, s1 = 0;
+                                     for (int32_t k = rowStart[r]; k < rowStart[r + 1]; ++k) {
+                                       const double a = entry[k];
+                                       const int32_t j = column[k];
+                                       s0 += a * xv[2 * j];
+                                       s1 += a * xv[2 * j + 1];
+                                     }
+                                     yv[2 * r] = s0;
+                                     yv[2 * r + 1] = s1;
+                                     add(2 * r, sum);
+                                   }
+                                 });
+}
+
+}  // namespace
 
 Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPreconditioner& M,
                                       const std::vector<double>& b, std::vector<double>& x, double tolerance,
@@ -111,8 +144,15 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
       }
     });
     M(p.data(), y.data());
-    A.multiply2(y.data(), v.data());
-    dot2(r0, v, dot);
+    {
+      // v = A y and r0·v in one pass over the rows (the same chunks and order as a separate dot2).
+      const auto sums = productSums<2>(A, y, v, [&](size_t i, double* sum) {
+        sum[0] += r0[i] * v[i];
+        sum[1] += r0[i + 1] * v[i + 1];
+      });
+      dot[0] = sums[0];
+      dot[1] = sums[1];
+    }
     for (int c = 0; c < 2; ++c) alpha[c] = active[c] ? rho[c] / dot[c] : 0.0;
     double sNorm2[2];
     {
@@ -149,20 +189,12 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
       break;  // done: a cancellation now would gain nothing
     }
     M(s.data(), z.data());
-    A.multiply2(z.data(), t.data());
-    // t·t and t·s per column in one pass.
-    const auto tSums = sumRowChunks<4>(n, [&](size_t begin, size_t end, double* sum) {
-      double tt0 = 0, tt1 = 0, ts0 = 0, ts1 = 0;
-      for (size_t i = 2 * begin; i < 2 * end; i += 2) {
-        tt0 += t[i] * t[i];
-        tt1 += t[i + 1] * t[i + 1];
-        ts0 += t[i] * s[i];
-        ts1 += t[i + 1] * s[i + 1];
-      }
-      sum[0] = tt0;
-      sum[1] = tt1;
-      sum[2] = ts0;
-      sum[3] = ts1;
+    // t = A z, with t·t and t·s per column, in one pass over the rows.
+    const auto tSums = productSums<4>(A, z, t, [&](size_t i, double* sum) {
+      sum[0] += t[i] * t[i];
+      sum[1] += t[i + 1] * t[i + 1];
+      sum[2] += t[i] * s[i];
+      sum[3] += t[i + 1] * s[i + 1];
     });
     const double tt[2] = {tSums[0], tSums[1]}, ts[2] = {tSums[2], tSums[3]};
     for (int c = 0; c < 2; ++c)
