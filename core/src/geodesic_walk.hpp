@@ -322,7 +322,10 @@ class Walk {
     int32_t face;
     const FlatFace* flat;
     int entered, fromCorner;
-    Vec2 p, d;
+    // The point and the direction as four doubles, not two Vec2: carried across steps as structs, GCC
+    // keeps them in general registers and moves them through the stack every step (measured: the round
+    // trip sat on the step's critical path).
+    double px, py, dx, dy;
     double length;
     int64_t faces;
     auto store = [&] {
@@ -330,8 +333,8 @@ class Walk {
       flat_ = flat;
       entered_ = entered;
       fromCorner_ = fromCorner;
-      p_ = p;
-      d_ = d;
+      p_ = Vec2{px, py};
+      d_ = Vec2{dx, dy};
       shot_.length = length;
       shot_.facesCrossed = faces;
     };
@@ -340,8 +343,10 @@ class Walk {
       flat = flat_;
       entered = entered_;
       fromCorner = fromCorner_;
-      p = p_;
-      d = d_;
+      px = p_.x;
+      py = p_.y;
+      dx = d_.x;
+      dy = d_.y;
       length = shot_.length;
       faces = shot_.facesCrossed;
     };
@@ -354,6 +359,7 @@ class Walk {
     for (int64_t step = 0;; ++step) {
       if (step >= maxSteps_) return stop(ShootStatus::StepLimit);
       if ((step & 65535) == 65535 && !report_(length / requested)) return cancelledError("geodesic shooting");
+      const Vec2 p{px, py}, d{dx, dy};
       const double remaining = requested - length;
       if (remaining <= 0) return stop(ShootStatus::ReachedLength);  // a vertex passing ended within rounding
       int exit = -1;                                                // the edge left through
@@ -458,9 +464,13 @@ class Walk {
       flat = flatOf(face);
       const Vec2 tailG = flat->at(entered), headG = flat->at(nextCorner(entered)), g = headG - tailG;
       // d = (−g · along + perp(−g) · across) / |edge|², perp(x, y) = (−y, x).
-      d = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverseLength2;
-      if ((step & 63) == 0) d = unit(d);
-      p = headG - g * t;
+      Vec2 nextD = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverseLength2;
+      if ((step & 63) == 0) nextD = unit(nextD);
+      const Vec2 nextP = headG - g * t;
+      px = nextP.x;
+      py = nextP.y;
+      dx = nextD.x;
+      dy = nextD.y;
     }
   }
 
