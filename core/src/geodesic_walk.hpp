@@ -388,9 +388,8 @@ class Walk {
         // passes. The walk is bound by memory latency (faces all over the mesh): start loading both
         // records it may read next while this face is worked out.
         const int j1 = nextCorner(entered), j2 = nextCorner(j1);
-        prefetchFace(flat->twins[j1]);
-        prefetchFace(flat->twins[j2]);
-        for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) prefetchRecord(flat->beyond[i]);
+        if (table_)
+          for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) prefetch(table_ + flat->beyond[i]);
         // Both candidates (j1: a → o, j2: o → b) are worked out, then one is picked by the side of o: the
         // two run side by side instead of one after the side test, and the pick needs no branch (the side
         // is a coin toss a branch predictor would lose).
