@@ -24,7 +24,8 @@ struct alignas(64) FlatFace {
   Vec2 corner;        // corner 2
   std::array<int32_t, 3> twins{-1, -1, -1};
   // Two faces ahead: beyond[2k], beyond[2k + 1] are the faces across the other two edges of face(twins[k])
-  // (−1: none, or not recorded), so that a walk can start loading them one face earlier.
+  // (flatFaces: the face itself where there is none, so that a prefetch needs no test; −1 in a record made
+  // alone, which no walk prefetches from), so that a walk can start loading them one face earlier.
   std::array<int32_t, 6> beyond{-1, -1, -1, -1, -1, -1};
 
   /// Corner k (0, 1 or 2) in the face's frame: x picked from a small array, y by a select (no products by

@@ -303,18 +303,6 @@ class Walk {
     return true;
   }
 
-  /// A hint to start loading the record of face f.
-  void prefetchRecord(int32_t f) const {
-    if (table_ && f >= 0) prefetch(table_ + f);
-  }
-
-  /// A hint to start loading the record of face(twin).
-  void prefetchFace(int32_t twin) const {
-    if (!table_ || twin < 0) return;
-    const FlatFace* r = table_ + TriMesh::face(twin);
-    prefetch(r);
-  }
-
   Expected<bool> walk() {
     const double requested = shot_.requestedLength, tolerance2 = vertexTolerance_ * vertexTolerance_;
     // The state lives in locals (registers) while the walk crosses edges; the members are written back
@@ -385,14 +373,14 @@ class Walk {
       };
       if (entered >= 0) {
         // Entered through edge j: the ray leaves through the edge on the side of the opposite corner it
-        // passes. The walk is bound by memory latency (faces all over the mesh): start loading both
-        // records it may read next while this face is worked out.
+        // passes. On a large mesh the walk waits for memory (faces all over it): start loading the four
+        // records it may read two faces ahead (the two one face ahead were started a step earlier).
         const int j1 = nextCorner(entered), j2 = nextCorner(j1);
         if (table_)
           for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) prefetch(table_ + flat->beyond[i]);
-        // Both candidates (j1: a → o, j2: o → b) are worked out, then one is picked by the side of o: the
-        // two run side by side instead of one after the side test, and the pick needs no branch (the side
-        // is a coin toss a branch predictor would lose).
+        // Both candidates (j1: a → o, j2: o → b) are written out, then one is picked by the side of o (GCC
+        // 12 at -O3 makes the pick a branch and divides for the picked edge only, as the disassembly shows;
+        // the step costs ~250 instructions and is bound by their throughput more than by one chain).
         const Vec2 a = flat->at(j1), o = flat->at(j2), b = flat->at(entered);
         const Vec2 e1 = o - a, e2 = b - o, ap1 = a - p, ap2 = o - p;
         const double den1 = cross(d, e1), den2 = cross(d, e2);
