@@ -13,12 +13,15 @@ std::vector<FlatFace> flatFaces(const TriMesh& mesh) {
       makeFlatFace(mesh, static_cast<int32_t>(f), r);
       for (int k = 0; k < 3; ++k) {
         const int32_t t = r.twins[k];
-        if (t < 0) continue;
+        if (t < 0) {
+          r.beyond[2 * k] = r.beyond[2 * k + 1] = static_cast<int32_t>(f);
+          continue;
+        }
         const std::array<int32_t, 3>& across = mesh.adjacency(TriMesh::face(t)).twins;
         const int m = t % 3;
         for (int i = 1; i <= 2; ++i) {
           const int32_t u = across[(m + i) % 3];
-          r.beyond[2 * k + i - 1] = u < 0 ? -1 : TriMesh::face(u);
+          r.beyond[2 * k + i - 1] = u < 0 ? static_cast<int32_t>(f) : TriMesh::face(u);
         }
       }
     }

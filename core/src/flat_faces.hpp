@@ -24,14 +24,17 @@ struct alignas(64) FlatFace {
   Vec2 corner;        // corner 2
   std::array<int32_t, 3> twins{-1, -1, -1};
   // Two faces ahead: beyond[2k], beyond[2k + 1] are the faces across the other two edges of face(twins[k])
-  // (−1: none, or not recorded), so that a walk can start loading them one face earlier.
+  // (flatFaces: the face itself where there is none, so that a prefetch needs no test; −1 in a record made
+  // alone, which no walk prefetches from), so that a walk can start loading them one face earlier.
   std::array<int32_t, 6> beyond{-1, -1, -1, -1, -1, -1};
 
-  /// Corner k (0, 1 or 2) in the face's frame, picked by arithmetic rather than a branch on k (exact:
-  /// the products are by 0 or 1).
+  /// Corner k (0, 1 or 2) in the face's frame: x picked from a small array, y by a select (no products by
+  /// 0 or 1: fewer instructions a step). The same bits as the products one · length + two · corner.x,
+  /// two · corner.y (one = (k == 1), two = (k == 2)) on every record: makeFlatFace stores corner.x + 0.0
+  /// (never −0), and the records are finite (TriMesh::build rejects coordinates above 1e50), so 0 · x = +0.
   Vec2 at(int k) const {
-    const double one = k == 1, two = k == 2;
-    return Vec2{one * length + two * corner.x, two * corner.y};
+    const double x[3] = {0.0, length, corner.x};
+    return Vec2{x[k], k == 2 ? corner.y : 0.0};
   }
 };
 /// The record of face f, from the mesh's positions, into r (inline: a walk without a table makes one
@@ -48,7 +51,7 @@ inline void makeFlatFace(const TriMesh& mesh, int32_t f, FlatFace& r) {
   const Vec3 e = mesh.position(face.corners[1]) - a, w = mesh.position(face.corners[2]) - a;
   const double length = std::sqrt(dot(e, e)), inverse = 1 / length;
   r.length = length;
-  r.corner = Vec2{dot(w, e) * inverse, norm(cross(e, w)) * inverse};
+  r.corner = Vec2{dot(w, e) * inverse + 0.0, norm(cross(e, w)) * inverse};  // + 0.0: −0 made +0 (see at)
 }
 
 /// Every face's record, with the faces two ahead (`beyond`), computed on all threads.

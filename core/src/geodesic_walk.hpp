@@ -303,18 +303,6 @@ class Walk {
     return true;
   }
 
-  /// A hint to start loading the record of face f.
-  void prefetchRecord(int32_t f) const {
-    if (table_ && f >= 0) prefetch(table_ + f);
-  }
-
-  /// A hint to start loading the record of face(twin).
-  void prefetchFace(int32_t twin) const {
-    if (!table_ || twin < 0) return;
-    const FlatFace* r = table_ + TriMesh::face(twin);
-    prefetch(r);
-  }
-
   Expected<bool> walk() {
     const double requested = shot_.requestedLength, tolerance2 = vertexTolerance_ * vertexTolerance_;
     // The state lives in locals (registers) while the walk crosses edges; the members are written back
@@ -322,7 +310,10 @@ class Walk {
     int32_t face;
     const FlatFace* flat;
     int entered, fromCorner;
-    Vec2 p, d;
+    // The point and the direction as four doubles, not two Vec2: carried across steps as structs, GCC
+    // keeps them in general registers and moves them through the stack every step (measured: the round
+    // trip sat on the step's critical path).
+    double px, py, dx, dy;
     double length;
     int64_t faces;
     auto store = [&] {
@@ -330,8 +321,8 @@ class Walk {
       flat_ = flat;
       entered_ = entered;
       fromCorner_ = fromCorner;
-      p_ = p;
-      d_ = d;
+      p_ = Vec2{px, py};
+      d_ = Vec2{dx, dy};
       shot_.length = length;
       shot_.facesCrossed = faces;
     };
@@ -340,8 +331,10 @@ class Walk {
       flat = flat_;
       entered = entered_;
       fromCorner = fromCorner_;
-      p = p_;
-      d = d_;
+      px = p_.x;
+      py = p_.y;
+      dx = d_.x;
+      dy = d_.y;
       length = shot_.length;
       faces = shot_.facesCrossed;
     };
@@ -354,6 +347,7 @@ class Walk {
     for (int64_t step = 0;; ++step) {
       if (step >= maxSteps_) return stop(ShootStatus::StepLimit);
       if ((step & 65535) == 65535 && !report_(length / requested)) return cancelledError("geodesic shooting");
+      const Vec2 p{px, py}, d{dx, dy};
       const double remaining = requested - length;
       if (remaining <= 0) return stop(ShootStatus::ReachedLength);  // a vertex passing ended within rounding
       int exit = -1;                                                // the edge left through
@@ -379,15 +373,14 @@ class Walk {
       };
       if (entered >= 0) {
         // Entered through edge j: the ray leaves through the edge on the side of the opposite corner it
-        // passes. The walk is bound by memory latency (faces all over the mesh): start loading both
-        // records it may read next while this face is worked out.
+        // passes. On a large mesh the walk waits for memory (faces all over it): start loading the four
+        // records it may read two faces ahead (the two one face ahead were started a step earlier).
         const int j1 = nextCorner(entered), j2 = nextCorner(j1);
-        prefetchFace(flat->twins[j1]);
-        prefetchFace(flat->twins[j2]);
-        for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) prefetchRecord(flat->beyond[i]);
-        // Both candidates (j1: a → o, j2: o → b) are worked out, then one is picked by the side of o: the
-        // two run side by side instead of one after the side test, and the pick needs no branch (the side
-        // is a coin toss a branch predictor would lose).
+        if (table_)
+          for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) prefetch(table_ + flat->beyond[i]);
+        // Both candidates (j1: a → o, j2: o → b) are written out, then one is picked by the side of o (GCC
+        // 12 at -O3 makes the pick a branch and divides for the picked edge only, as the disassembly shows;
+        // the step costs ~250 instructions and is bound by their throughput more than by one chain).
         const Vec2 a = flat->at(j1), o = flat->at(j2), b = flat->at(entered);
         const Vec2 e1 = o - a, e2 = b - o, ap1 = a - p, ap2 = o - p;
         const double den1 = cross(d, e1), den2 = cross(d, e2);
@@ -458,9 +451,13 @@ class Walk {
       flat = flatOf(face);
       const Vec2 tailG = flat->at(entered), headG = flat->at(nextCorner(entered)), g = headG - tailG;
       // d = (−g · along + perp(−g) · across) / |edge|², perp(x, y) = (−y, x).
-      d = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverseLength2;
-      if ((step & 63) == 0) d = unit(d);
-      p = headG - g * t;
+      Vec2 nextD = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverseLength2;
+      if ((step & 63) == 0) nextD = unit(nextD);
+      const Vec2 nextP = headG - g * t;
+      px = nextP.x;
+      py = nextP.y;
+      dx = nextD.x;
+      dy = nextD.y;
     }
   }
 
