@@ -17,8 +17,10 @@
 // with Gauss–Seidel smoothing, forward before the coarse correction and backward after it (a fixed
 // linear operator, as a Krylov preconditioner must be); at 1M vertices it beat V(2, 2) Gauss–Seidel
 // and V(2, 2) damped Jacobi on time to solution. The cycle reads A, P and R in single precision (its
-// vectors stay double): it is bound by memory traffic, and at 1M vertices this made a cycle ~12 %
-// faster with the same iteration count; the Krylov solver's products use A in double precision.
+// vectors stay double): fewer bytes per entry to wait for; at 1M vertices this made a cycle ~12 %
+// faster with the same iteration count. (The cycle is bound by latency — the sweeps' chain of dependent
+// rows and scattered reads — not by bandwidth: see bench/bench_bandwidth.cpp.) The Krylov solver's
+// products use A in double precision.
 #pragma once
 #include <cstdint>
 #include <memory>
