@@ -29,8 +29,9 @@ struct AggregationMultigrid::Hierarchy {
     std::vector<double> invDiag;
     // The cycle's copies of A's, P's and R's values in single precision (P and R keep no others): 8
     // bytes per entry instead of 12 (value and column) are fewer cache lines to wait for in the
-    // sweeps' scattered reads (~12 % per cycle at 1M). Still a fixed linear operator, as the Krylov solver needs; the
-    // solver's own products and residuals stay in double precision (matrix()), so the solution's accuracy is unchanged.
+    // sweeps' scattered reads (~12 % per cycle at 1M). Still a fixed linear operator, as the Krylov
+    // solver needs; its own products and residuals stay in double precision (matrix()), so the
+    // solution's accuracy is unchanged.
     std::vector<float> a32, p32, r32;
     // Work space, two entries per unknown: b and x of the coarser levels' cycles; tmp holds the
     // residual before restriction (and A x in a Jacobi step).
