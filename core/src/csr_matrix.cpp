@@ -5,26 +5,15 @@
 
 #include "row_accumulator.hpp"
 #include "row_chunks.hpp"
+#include "row_product.hpp"
 
 namespace straightest {
 
 void CsrMatrix::multiply2(const double* x, double* y) const {
   // Rows are independent: chunks of them run on all threads, each row summed as on one.
-  const int32_t* rowStart = start.data();
-  const int32_t* column = col.data();
-  const double* entry = value.data();
-  detail::forRowChunks(static_cast<size_t>(rows), [=](size_t begin, size_t end) {
-    for (size_t r = begin; r < end; ++r) {
-      double s0 = 0, s1 = 0;
-      for (int32_t k = rowStart[r]; k < rowStart[r + 1]; ++k) {
-        const double a = entry[k];
-        const int32_t j = column[k];
-        s0 += a * x[2 * j];
-        s1 += a * x[2 * j + 1];
-      }
-      y[2 * r] = s0;
-      y[2 * r + 1] = s1;
-    }
+  const detail::CsrRows rows(*this);
+  detail::forRowChunks(static_cast<size_t>(this->rows), [=](size_t begin, size_t end) {
+    for (size_t r = begin; r < end; ++r) detail::rowTimesTwoColumns(rows, r, x, y);
   });
 }
 

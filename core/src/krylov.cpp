@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "row_chunks.hpp"
+#include "row_product.hpp"
 #include "solve_progress.hpp"
 
 namespace straightest {
@@ -16,28 +17,18 @@ namespace {
 
 /// y = A x for the two interleaved columns, and N sums that add(i, sums) accumulates from each row just
 /// after it is computed (i = 2·row): one pass over the rows instead of a product and then a reduction,
-/// with the same arithmetic per row as CsrMatrix::multiply2 and the same chunks and order of the sums as
+/// with the same row kernel as CsrMatrix::multiply2 (row_product.hpp) and the same chunks and order of the sums as
 /// sumRowChunks — the same bits as the two passes.
 template <std::size_t N, class Add>
 std::array<double, N> productSums(const CsrMatrix& A, const std::vector<double>& x, std::vector<double>& y,
                                   const Add& add) {
-  const int32_t* rowStart = A.start.data();
-  const int32_t* column = A.col.data();
-  const double* entry = A.value.data();
+  const detail::CsrRows rows(A);
   const double* xv = x.data();
   double* yv = y.data();
   return detail::sumRowChunks<N>(static_cast<std::size_t>(A.rows),
                                  [&](std::size_t begin, std::size_t end, double* sum) {
                                    for (std::size_t r = begin; r < end; ++r) {
-                                     double s0 = 0, s1 = 0;
-                                     for (int32_t k = rowStart[r]; k < rowStart[r + 1]; ++k) {
-                                       const double a = entry[k];
-                                       const int32_t j = column[k];
-                                       s0 += a * xv[2 * j];
-                                       s1 += a * xv[2 * j + 1];
-                                     }
-                                     yv[2 * r] = s0;
-                                     yv[2 * r + 1] = s1;
+                                     detail::rowTimesTwoColumns(rows, r, xv, yv);
                                      add(2 * r, sum);
                                    }
                                  });
