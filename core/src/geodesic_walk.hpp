@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "cache_hints.hpp"
 #include "flat_faces.hpp"
 #include "straightest/geodesic_shoot.hpp"
 #include "straightest/progress.hpp"
@@ -42,15 +43,6 @@ inline double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
   const double ee = dot(e, e);
   const double t = ee > 0 ? std::clamp(dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
   return norm(p - (a + e * t));
-}
-
-/// A hint to start loading a cache line (a no-op where the compiler has no prefetch).
-inline void prefetch(const void* a) {
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(a);
-#else
-  (void)a;
-#endif
 }
 
 inline Error invalid(const std::string& message) { return Error{ErrorCode::InvalidArgument, message}; }
@@ -377,7 +369,7 @@ class Walk {
         // records it may read two faces ahead (the two one face ahead were started a step earlier).
         const int j1 = nextCorner(entered), j2 = nextCorner(j1);
         if (table_)
-          for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) prefetch(table_ + flat->beyond[i]);
+          for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) detail::prefetch(table_ + flat->beyond[i]);
         // Both candidates (j1: a → o, j2: o → b) are written out, then one is picked by the side of o (GCC
         // 12 at -O3 makes the pick a branch and divides for the picked edge only, as the disassembly shows;
         // the step costs ~250 instructions and is bound by their throughput more than by one chain).

@@ -11,9 +11,8 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
-#include <mutex>
 
-#include "parallel_for.hpp"
+#include "cache_hints.hpp"
 
 namespace straightest {
 
@@ -40,26 +39,6 @@ struct Exit {
 #define STRAIGHTEST_INLINE inline
 #endif
 
-// Keeps the branch it stands in: an empty volatile asm statement cannot be executed speculatively, so
-// the compiler does not turn the branch into conditional moves. Where a branch is predicted well, a
-// conditional move only puts its condition into the chain of dependent loads: Clang did so with the
-// walk's choice of exit (its two arms only assign), which made the WASM walk 1.6× slower than with the
-// branch (GCC keeps the branch; computed without it, the native walk was 1.6× slower too).
-#if defined(__GNUC__) || defined(__clang__)
-#define STRAIGHTEST_KEEP_BRANCH() __asm__ volatile("")
-#else
-#define STRAIGHTEST_KEEP_BRANCH() ((void)0)
-#endif
-
-template <class T>
-inline void prefetch(const T* p) {
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
 /// Starts loading the record of the face of halfedge k (any k, −1 included). Byte 8k lies in that
 /// record (24 bytes from byte 24 (k / 3): corner 0, corner 2 or twin 1), so no division is needed.
 inline void prefetchRecordOf(const FaceAdjacency* adjacency, int32_t k) {
@@ -70,7 +49,8 @@ inline void prefetchRecordOf(const FaceAdjacency* adjacency, int32_t k) {
   const int32_t value = reinterpret_cast<const int32_t*>(adjacency)[2 * std::max(k, 0)];
   __asm__ volatile("" ::"r"(value));
 #else
-  prefetch(reinterpret_cast<const char*>(reinterpret_cast<uintptr_t>(adjacency) + 8 * static_cast<intptr_t>(k)));
+  detail::prefetch(
+      reinterpret_cast<const char*>(reinterpret_cast<uintptr_t>(adjacency) + 8 * static_cast<intptr_t>(k)));
 #endif
 }
 
@@ -601,132 +581,6 @@ const StraightestPath& StraightestPathTracer::Impl::trace(const SurfacePoint& de
 void StraightestPathTracer::Impl::keepAsOtherArc(const StraightestPath& other) {
   result_.otherArcLength = other.length;
   result_.otherPositions.assign(other.positions.begin(), other.positions.end());  // empty unless keepPoints
-}
-
-std::vector<SurfacePoint> boundaryTargets(const TriMesh& mesh) {
-  std::vector<SurfacePoint> targets;
-  if (mesh.boundaryLoops().empty()) return targets;
-  for (int32_t v : mesh.boundaryLoops()[0]) targets.push_back(SurfacePoint::vertex(v));
-  return targets;
-}
-
-Expected<std::vector<SurfacePoint>> resolveTargets(const TriMesh& mesh, const std::vector<TargetSpec>& specs) {
-  std::vector<SurfacePoint> targets;
-  for (size_t i = 0; i < specs.size(); ++i) {
-    const bool one = std::holds_alternative<BoundaryVertices>(specs[i]);
-    if (one || std::holds_alternative<AllBoundaryVertices>(specs[i])) {
-      const char* name = one ? "boundary" : "all-boundaries";
-      if (mesh.boundaryLoops().empty())
-        return Error{ErrorCode::Topology,
-                     std::string("targets '") + name + "': the mesh is closed (no boundary loop): name the targets"};
-      for (const auto& loop : mesh.boundaryLoops()) {  // longest first
-        for (int32_t v : loop) targets.push_back(SurfacePoint::vertex(v));
-        if (one) break;
-      }
-      continue;
-    }
-    auto p = validateSurfacePoint(mesh, std::get<SurfacePoint>(specs[i]));
-    if (!p) return Error{p.error().code, "target " + std::to_string(i) + ": " + p.error().message};
-    targets.push_back(p.value());
-  }
-  return targets;
-}
-
-PathSummary summarize(const PathBatch& batch) {
-  PathSummary s;
-  s.paths = static_cast<int64_t>(batch.status.size());
-  s.byStatus.assign(kTraceStatusCount, 0);
-  double sum = 0;
-  for (size_t i = 0; i < batch.status.size(); ++i) {
-    ++s.byStatus[static_cast<size_t>(batch.status[i])];
-    s.facesCrossed += batch.facesCrossed[i];
-    s.maxFacesCrossed = std::max(s.maxFacesCrossed, batch.facesCrossed[i]);
-    if (!std::isnan(batch.otherArcLength[i])) ++s.otherArcs;
-    if (batch.status[i] != TraceStatus::Reached) continue;
-    ++s.reached;
-    sum += batch.length[i];
-    s.maxLength = std::max(s.maxLength, batch.length[i]);
-  }
-  s.meanLength = s.reached > 0 ? sum / static_cast<double>(s.reached) : 0.0;
-  return s;
-}
-
-Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
-                                          std::vector<SurfacePoint> targets, const TraceOptions& options,
-                                          const Progress& progress) {
-  Stopwatch time;
-  PathBatch batch;
-  // A tracer keeps per-walk state: each thread takes its own from this stack (a walk's result does not
-  // depend on the walks its tracer made before), so at most threadCount() tracers ever exist.
-  std::mutex idleMutex;
-  std::vector<std::unique_ptr<StraightestPathTracer>> idle;
-  idle.push_back(std::make_unique<StraightestPathTracer>(mesh, source, options));
-  batch.source = source;
-  batch.base = idle.back()->base();
-  batch.targets = std::move(targets);
-  const size_t n = batch.targets.size();
-  batch.targetPositions.resize(n);
-  batch.status.resize(n);
-  batch.length.resize(n);
-  batch.facesCrossed.resize(n);
-  batch.reversed.resize(n);
-  batch.otherArcLength.resize(n);
-  batch.directions.resize(n);
-  // Targets in chunks: the per-target values go straight to their slots; the points of each chunk to
-  // its own buffer, joined in target order at the end (the batch is the same for any thread count).
-  constexpr size_t kTargetsPerChunk = 8;  // small: progress moves by chunks
-  const size_t chunks = detail::chunkCount(n, kTargetsPerChunk);
-  std::vector<std::vector<Vec3>> chunkPoints(chunks), chunkOtherPoints(chunks);
-  std::vector<int64_t> pointCount(n), otherPointCount(n);
-  record(options.timings, "prepare", time.lap());
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  auto traceChunk = [&](size_t chunk, size_t begin, size_t end) {
-    std::unique_ptr<StraightestPathTracer> tracer;
-    {
-      std::lock_guard<std::mutex> lock(idleMutex);
-      if (!idle.empty()) {
-        tracer = std::move(idle.back());
-        idle.pop_back();
-      }
-    }
-    if (!tracer) tracer = std::make_unique<StraightestPathTracer>(mesh, source, options);
-    for (size_t i = begin; i < end; ++i) {
-      const StraightestPath& path = tracer->trace(batch.targets[i]);
-      batch.status[i] = path.status;
-      batch.length[i] = path.length;
-      batch.facesCrossed[i] = path.facesCrossed;
-      batch.reversed[i] = path.reversed;
-      batch.otherArcLength[i] = path.otherArcLength;
-      const Vec3 D = position(mesh, batch.targets[i]);
-      batch.targetPositions[i] = D;
-      const auto direction = inPlaneDirection(batch.base, D);
-      batch.directions[i] = direction ? *direction : Vec3{nan, nan, nan};
-      chunkPoints[chunk].insert(chunkPoints[chunk].end(), path.positions.begin(), path.positions.end());
-      pointCount[i] = static_cast<int64_t>(path.positions.size());
-      chunkOtherPoints[chunk].insert(chunkOtherPoints[chunk].end(), path.otherPositions.begin(),
-                                     path.otherPositions.end());
-      otherPointCount[i] = static_cast<int64_t>(path.otherPositions.size());
-    }
-    std::lock_guard<std::mutex> lock(idleMutex);
-    idle.push_back(std::move(tracer));
-  };
-  if (!detail::parallelFor(n, kTargetsPerChunk, traceChunk, progress, "trace"))
-    return cancelledError("straightest paths");
-  auto join = [n](std::vector<std::vector<Vec3>>& parts, const std::vector<int64_t>& counts, std::vector<Vec3>& points,
-                  std::vector<int64_t>& offsets) {
-    offsets.resize(n + 1);
-    offsets[0] = 0;
-    for (size_t i = 0; i < n; ++i) offsets[i + 1] = offsets[i] + counts[i];
-    points.reserve(static_cast<size_t>(offsets[n]));
-    for (std::vector<Vec3>& part : parts) {
-      points.insert(points.end(), part.begin(), part.end());
-      std::vector<Vec3>().swap(part);
-    }
-  };
-  join(chunkPoints, pointCount, batch.points, batch.offsets);
-  join(chunkOtherPoints, otherPointCount, batch.otherPoints, batch.otherOffsets);
-  record(options.timings, "trace", time.lap());
-  return batch;
 }
 
 }  // namespace straightest
