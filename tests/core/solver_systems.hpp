@@ -2,7 +2,10 @@
 // M-matrix whose condition grows with the mesh, the case the solvers are built for), small
 // hand-made matrices, and dense copies to check the sparse kernels against.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <random>
 #include <vector>
 
 #include "straightest/boundary_map.hpp"
@@ -55,6 +58,27 @@ inline double columnResidual(const CsrMatrix& A, const std::vector<double>& b, c
     b2 += b[i] * b[i];
   }
   return std::sqrt(r2 / b2);
+}
+
+/// The same system with its unknowns renumbered at random (row and column i of the result are row and
+/// column order[i] of s): a numbering where neighbours are scattered, unlike a mesh's.
+inline InteriorSystem scattered(const InteriorSystem& s, unsigned seed) {
+  std::vector<int32_t> order(s.A.rows), position(s.A.rows);
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937(seed));
+  for (int32_t i = 0; i < s.A.rows; ++i) position[order[i]] = i;
+  InteriorSystem out;
+  out.A.rows = out.A.cols = s.A.rows;
+  for (const int32_t old : order) {
+    for (int32_t k = s.A.start[old]; k < s.A.start[old + 1]; ++k) {
+      out.A.col.push_back(position[s.A.col[k]]);
+      out.A.value.push_back(s.A.value[k]);
+    }
+    out.A.start.push_back(static_cast<int32_t>(out.A.col.size()));
+    out.rhs.push_back(s.rhs[2 * static_cast<size_t>(old)]);
+    out.rhs.push_back(s.rhs[2 * static_cast<size_t>(old) + 1]);
+  }
+  return out;
 }
 
 }  // namespace straightest::testing
