@@ -19,7 +19,6 @@ namespace {
 
 using unfolding::corner;
 using unfolding::lineMeetsSegment;
-using unfolding::toFrame;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// A vertex whose total angle exceeds 2π by more than rounding is a saddle: shortest paths may bend there.
@@ -38,16 +37,29 @@ constexpr double kQueueResolution = 1.0 / 64;
 /// The filter drops a window only when a corner is shorter by more than rounding (relative).
 constexpr double kFilterMargin = 1e-12;
 
-/// What the propagation reads of a halfedge h, in one record: a face's three take 144 bytes, where the
+/// What the propagation reads of a halfedge h, in one record: a face's three take 216 bytes, where the
 /// lengths, corners, vertices and twins in arrays of their own cost a cache miss each in the inner loop.
 struct Halfedge {
-  double len;    // |h|
-  Vec2 corner;   // face(h)'s third corner in h's frame (unfolding::oppositeCorner)
-  double angle;  // face(h)'s angle at tail(h), from the three edge lengths (for the saddles)
-  int32_t twin;  // −1 on the boundary
-  int32_t tail;  // the vertex h leaves (head(h) is tail(next(h)), face(h)'s third corner tail(prev(h)))
-  int32_t edge;  // the edge's number, for its record of windows (−1: boundary)
+  double len;       // |h|
+  Vec2 corner;      // face(h)'s third corner c in h's frame (unfolding::oppositeCorner)
+  Vec2 toCorner;    // the unit vector from tail(h) to c, and from c to head(h), in h's frame: the axes of
+  Vec2 fromCorner;  // the children's frames (unfolding::toFrame's u, divided once here instead of per window)
+  int32_t twin;     // −1 on the boundary
+  int32_t tail;     // the vertex h leaves (head(h) is tail(next(h)), face(h)'s third corner tail(prev(h)))
+  int32_t edge;     // the edge's number, for its record of windows (−1: boundary)
 };
+
+/// unfolding::toFrame(q, from, to) with its unit axis u = (to − from)/|to − from| given: the same bits.
+Vec2 inFrame(const Vec2& q, const Vec2& from, const Vec2& u) {
+  const Vec2 d = q - from;
+  return {dot(d, u), cross(u, d)};
+}
+
+/// unfolding::toFrame's unit axis from `from` to `to`.
+Vec2 unitAxis(const Vec2& from, const Vec2& to) {
+  const Vec2 axis = to - from;
+  return axis / unfolding::length(axis);
+}
 
 /// The angle between two sides a and b of a triangle whose third side is o.
 double angleBetween(double a, double b, double o) {
@@ -56,10 +68,12 @@ double angleBetween(double a, double b, double o) {
 }
 
 /// The records, face by face from the three lengths (as unfolding::halfedgeLengths and oppositeCorner make
-/// them: the same bits as the back-trace's frames), written once.
-detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
+/// them: the same bits as the back-trace's frames), written once; and each face's angle at tail(h), from
+/// the three edge lengths, in `angle` (for the saddles).
+detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh, std::vector<double>& angle) {
   detail::HugeVector<Halfedge> half;
   half.reserve(3 * static_cast<size_t>(mesh.numFaces()));
+  angle.resize(3 * static_cast<size_t>(mesh.numFaces()));
   for (int32_t f = 0; f < mesh.numFaces(); ++f) {
     double len[3];
     for (int k = 0; k < 3; ++k)
@@ -67,8 +81,10 @@ detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const int32_t h = 3 * f + k;
       const double next = len[(k + 1) % 3], prev = len[(k + 2) % 3];
-      half.push_back(Halfedge{len[k], corner(len[k], prev, next), angleBetween(len[k], prev, next), mesh.twin(h),
-                              mesh.tail(h), -1});
+      const Vec2 c = corner(len[k], prev, next);
+      half.push_back(
+          Halfedge{len[k], c, unitAxis(Vec2{0, 0}, c), unitAxis(c, Vec2{len[k], 0}), mesh.twin(h), mesh.tail(h), -1});
+      angle[h] = angleBetween(len[k], prev, next);
     }
   }
   return half;
@@ -104,14 +120,14 @@ class Propagation {
         cap_(cap),
         mesh_(mesh),
         out_(out),
-        half_(halfedges(mesh)),
+        half_(halfedges(mesh, angle_)),
         pseudo_(mesh.numVertices(), 0),
         emitted_(mesh.numVertices(), kInf),
         queue_(meanLength(half_) * kQueueResolution) {
     out_.distances.assign(mesh.numVertices(), kInf);
     out_.parents.assign(mesh.numVertices(), GeodesicParent{});
     std::vector<double> angle(mesh.numVertices(), 0.0);
-    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) angle[half_[h].tail] += half_[h].angle;
+    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) angle[half_[h].tail] += angle_[h];
     for (int32_t v = 0; v < mesh.numVertices(); ++v)
       pseudo_[v] = mesh.isBoundaryVertex(v) || angle[v] > kTwoPi + kSaddleExcess;
     int32_t edges = 0;
@@ -198,7 +214,7 @@ class Propagation {
   double len(int32_t h) const { return half_[h].len; }
 
   /// The angle of face(h) at tail(h).
-  double cornerAngle(int32_t h) const { return half_[h].angle; }
+  double cornerAngle(int32_t h) const { return angle_[h]; }
 
   /// The directions in which a shortest path through saddle v may continue: at least π away, on both
   /// sides, from the path it arrived by (a shorter path would cut the corner otherwise). As fan angles
@@ -420,7 +436,8 @@ class Propagation {
       const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
       const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
       if (p0 <= 0) update(half_[h].tail, w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, half_[nextH].tail);
+      if (child >= 0)
+        addWindow(child, p0, p1, inFrame(image, a, half_[h].toCorner), w.sigma, w.origin, half_[nextH].tail);
     }
     // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
     if (xc < w.b1) {
@@ -430,7 +447,8 @@ class Propagation {
       const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
       if (q1 >= lcb)
         update(half_[nextH].tail, w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, half_[h].tail);
+      if (child >= 0)
+        addWindow(child, q0, q1, inFrame(image, c, half_[h].fromCorner), w.sigma, w.origin, half_[h].tail);
     }
   }
 
@@ -438,6 +456,7 @@ class Propagation {
   const double cap_;
   const TriMesh& mesh_;
   ExactGeodesics& out_;
+  std::vector<double> angle_;          // per halfedge: face(h)'s angle at tail(h)
   detail::HugeVector<Halfedge> half_;  // per halfedge: what the propagation reads of it (Halfedge)
   std::vector<uint8_t> pseudo_;
   std::vector<double> emitted_;                   // distance at a vertex's last emission

@@ -86,7 +86,8 @@ class MinQueue {
   static constexpr int kChunk = 16;        // entries per chunk
   static constexpr double kMaxSlot = 4.0e18;
 
-  struct Chunk {
+  /// Aligned to a cache line, so that a 64-byte entry (the propagation's window) is one line, not two.
+  struct alignas(64) Chunk {
     Payload items[kChunk];
     int32_t below = -1;  // the next chunk of the same bucket's stack (full), or of the free list
   };
