@@ -45,7 +45,9 @@ struct Halfedge {
   Vec2 toCorner;    // the unit vector from tail(h) to c, and from c to head(h), in h's frame: the axes of
   Vec2 fromCorner;  // the children's frames (unfolding::toFrame's u, divided once here instead of per window)
   int32_t twin;     // −1 on the boundary
-  int32_t tail;     // the vertex h leaves (head(h) is tail(next(h)), face(h)'s third corner tail(prev(h)))
+  int32_t tail;     // the vertex h leaves (face(h)'s third corner is tail(prev(h)))
+  int32_t head;     // the vertex h enters, tail(next(h)) (here too: the padding had room, and a window's
+                    // filters read both ends of its edge)
   int32_t edge;     // the edge's number, for its record of windows (−1: boundary)
 };
 
@@ -82,8 +84,8 @@ detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh, std::vector<double>&
       const int32_t h = 3 * f + k;
       const double next = len[(k + 1) % 3], prev = len[(k + 2) % 3];
       const Vec2 c = corner(len[k], prev, next);
-      half.push_back(
-          Halfedge{len[k], c, unitAxis(Vec2{0, 0}, c), unitAxis(c, Vec2{len[k], 0}), mesh.twin(h), mesh.tail(h), -1});
+      half.push_back(Halfedge{len[k], c, unitAxis(Vec2{0, 0}, c), unitAxis(c, Vec2{len[k], 0}), mesh.twin(h),
+                              mesh.tail(h), mesh.head(h), -1});
       angle[h] = angleBetween(len[k], prev, next);
     }
   }
@@ -108,7 +110,12 @@ struct Window {
 
   /// The least distance over the interval, the queue's order: at the image's foot, or at the nearer end
   /// (the same bits as σ + |image − clamp(image.x)|, without a square root).
-  double nearest() const { return image.x < b0 ? f0 : image.x > b1 ? f1 : sigma + std::fabs(image.y); }
+  double nearest() const {
+    // Selects rather than branches (the side the image's foot falls on is a coin toss from window to window).
+    const double foot = sigma + std::fabs(image.y);
+    const double right = image.x > b1 ? f1 : foot;
+    return image.x < b0 ? f0 : right;
+  }
 };
 
 class Propagation {
@@ -158,15 +165,13 @@ class Propagation {
       if (w.halfedge < 0) emitFromVertex(-1 - w.halfedge, false);
       else propagate(w);
     }
+    out_.stats.maxQueue = static_cast<int64_t>(queue_.peak());
     if (!progress("distances", 1.0)) return cancelledError("exact geodesic distances");
     return true;
   }
 
  private:
-  void push(const Window& w) {
-    queue_.push(w.nearest(), w);
-    out_.stats.maxQueue = std::max<int64_t>(out_.stats.maxQueue, static_cast<int64_t>(queue_.size()));
-  }
+  void push(const Window& w) { queue_.push(w.nearest(), w); }
 
   void update(int32_t v, double d, const GeodesicParent& parent) {
     if (!(d < out_.distances[v])) return;
@@ -318,7 +323,7 @@ class Propagation {
       return;
     }
     const double* d = out_.distances.data();
-    const int32_t tail = half_[h].tail, head = half_[TriMesh::next(h)].tail;
+    const int32_t tail = half_[h].tail, head = half_[h].head;
     if (shorter(d[tail] + b1, w.f1) || shorter(d[head] + (l - b0), w.f0)) {
       ++out_.stats.filtered;
       return;
@@ -403,8 +408,7 @@ class Propagation {
   bool useless(const Window& w, const Vec2& c, int32_t vc) {
     const double* d = out_.distances.data();
     const double l = len(w.halfedge);
-    if (shorter(d[half_[w.halfedge].tail] + w.b1, w.f1) ||
-        shorter(d[half_[TriMesh::next(w.halfedge)].tail] + (l - w.b0), w.f0) ||
+    if (shorter(d[half_[w.halfedge].tail] + w.b1, w.f1) || shorter(d[half_[w.halfedge].head] + (l - w.b0), w.f0) ||
         cornerShorter(d[vc], c, Vec2{w.b0, 0}, Vec2{w.b1, 0}, w.nearest())) {
       ++out_.stats.filtered;
       return true;
@@ -415,7 +419,8 @@ class Propagation {
   /// Carries window w across face(w.halfedge): its rays leave through the other two edges, split at the
   /// opposite corner c, which gets its distance when the window sees it.
   void propagate(const Window& w) {
-    const int32_t h = w.halfedge, nextH = TriMesh::next(h), prevH = TriMesh::prev(h);
+    const int32_t h = w.halfedge, k = h % 3;  // one division by 3 for both neighbours
+    const int32_t nextH = k == 2 ? h - 2 : h + 1, prevH = k == 0 ? h + 2 : h - 1;
     const double l = len(h);
     const Vec2 a{0, 0}, b{l, 0}, c = half_[h].corner;
     const Vec2& image = w.image;
@@ -436,8 +441,7 @@ class Propagation {
       const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
       const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
       if (p0 <= 0) update(half_[h].tail, w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
-      if (child >= 0)
-        addWindow(child, p0, p1, inFrame(image, a, half_[h].toCorner), w.sigma, w.origin, half_[nextH].tail);
+      if (child >= 0) addWindow(child, p0, p1, inFrame(image, a, half_[h].toCorner), w.sigma, w.origin, half_[h].head);
     }
     // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
     if (xc < w.b1) {
@@ -445,8 +449,7 @@ class Propagation {
       const double lcb = len(nextH);
       const double q0 = xc > w.b0 ? 0.0 : lineMeetsSegment(image, Vec2{w.b0, 0}, c, b, 0.0) * lcb;
       const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
-      if (q1 >= lcb)
-        update(half_[nextH].tail, w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
+      if (q1 >= lcb) update(half_[h].head, w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
       if (child >= 0)
         addWindow(child, q0, q1, inFrame(image, c, half_[h].fromCorner), w.sigma, w.origin, half_[h].tail);
     }

@@ -35,14 +35,18 @@ class MinQueue {
 
   bool empty() const { return size_ == 0; }
   size_t size() const { return size_; }
+  /// The most entries queued at once so far.
+  size_t peak() const { return peak_; }
 
   /// Queues payload with key (≥ 0; a key in an interval before the last one popped counts as in that one).
   void push(double key, const Payload& payload) {
     const double scaled = key * inverse_;
-    uint64_t slot = scaled < static_cast<double>(current_) || std::isnan(scaled) ? current_
-                    : scaled >= kMaxSlot                                         ? kMaxSlot
-                                                                                 : static_cast<uint64_t>(scaled);
-    ++size_;
+    // Through signed integers (slots stay below kMaxSlot < 2⁶³, so the same values): x86-64 converts
+    // between double and uint64 only by a branch and two conversions.
+    const uint64_t slot = scaled < static_cast<double>(static_cast<int64_t>(current_)) || std::isnan(scaled) ? current_
+                          : scaled >= kMaxSlot                                                               ? kMaxSlot
+                                               : static_cast<uint64_t>(static_cast<int64_t>(scaled));
+    peak_ = std::max(peak_, ++size_);
     if (slot - current_ < kRing) {
       pushToBucket(slot & (kRing - 1), payload);
       return;
@@ -128,7 +132,7 @@ class MinQueue {
   std::vector<Far> far_;  // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
   int32_t free_ = -1;     // the free list of chunks
   uint64_t current_ = 0;  // the bucket (slot) being popped
-  size_t size_ = 0, inRing_ = 0;
+  size_t size_ = 0, inRing_ = 0, peak_ = 0;
 };
 
 }  // namespace straightest::detail
