@@ -37,7 +37,7 @@ constexpr double kQueueResolution = 1.0 / 64;
 /// The filter drops a window only when a corner is shorter by more than rounding (relative).
 constexpr double kFilterMargin = 1e-12;
 
-/// What the propagation reads of a halfedge h, in one record: a face's three take 216 bytes, where the
+/// What the propagation reads of a halfedge h, in one record: a face's three take 240 bytes, where the
 /// lengths, corners, vertices and twins in arrays of their own cost a cache miss each in the inner loop.
 struct Halfedge {
   double len;       // |h|
@@ -49,6 +49,9 @@ struct Halfedge {
   int32_t head;     // the vertex h enters, tail(next(h)) (here too: the padding had room, and a window's
                     // filters read both ends of its edge)
   int32_t edge;     // the edge's number, for its record of windows (−1: boundary)
+  double angle;     // face(h)'s angle at tail(h), from the three edge lengths (for the saddles; here rather
+                    // than in an array of its own: 8 bytes a halfedge more in memory the propagation
+                    // touches anyway, where a separate array is mapped, and faulted in, on every call)
 };
 
 /// unfolding::toFrame(q, from, to) with its unit axis u = (to − from)/|to − from| given: the same bits.
@@ -70,12 +73,10 @@ double angleBetween(double a, double b, double o) {
 }
 
 /// The records, face by face from the three lengths (as unfolding::halfedgeLengths and oppositeCorner make
-/// them: the same bits as the back-trace's frames), written once; and each face's angle at tail(h), from
-/// the three edge lengths, in `angle` (for the saddles).
-detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh, std::vector<double>& angle) {
+/// them: the same bits as the back-trace's frames), written once.
+detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
   detail::HugeVector<Halfedge> half;
   half.reserve(3 * static_cast<size_t>(mesh.numFaces()));
-  angle.resize(3 * static_cast<size_t>(mesh.numFaces()));
   for (int32_t f = 0; f < mesh.numFaces(); ++f) {
     double len[3];
     for (int k = 0; k < 3; ++k)
@@ -85,8 +86,7 @@ detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh, std::vector<double>&
       const double next = len[(k + 1) % 3], prev = len[(k + 2) % 3];
       const Vec2 c = corner(len[k], prev, next);
       half.push_back(Halfedge{len[k], c, unitAxis(Vec2{0, 0}, c), unitAxis(c, Vec2{len[k], 0}), mesh.twin(h),
-                              mesh.tail(h), mesh.head(h), -1});
-      angle[h] = angleBetween(len[k], prev, next);
+                              mesh.tail(h), mesh.head(h), -1, angleBetween(len[k], prev, next)});
     }
   }
   return half;
@@ -127,14 +127,14 @@ class Propagation {
         cap_(cap),
         mesh_(mesh),
         out_(out),
-        half_(halfedges(mesh, angle_)),
+        half_(halfedges(mesh)),
         pseudo_(mesh.numVertices(), 0),
         emitted_(mesh.numVertices(), kInf),
         queue_(meanLength(half_) * kQueueResolution) {
     out_.distances.assign(mesh.numVertices(), kInf);
     out_.parents.assign(mesh.numVertices(), GeodesicParent{});
     std::vector<double> angle(mesh.numVertices(), 0.0);
-    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) angle[half_[h].tail] += angle_[h];
+    for (int32_t h = 0; h < 3 * mesh.numFaces(); ++h) angle[half_[h].tail] += half_[h].angle;
     for (int32_t v = 0; v < mesh.numVertices(); ++v)
       pseudo_[v] = mesh.isBoundaryVertex(v) || angle[v] > kTwoPi + kSaddleExcess;
     int32_t edges = 0;
@@ -219,7 +219,7 @@ class Propagation {
   double len(int32_t h) const { return half_[h].len; }
 
   /// The angle of face(h) at tail(h).
-  double cornerAngle(int32_t h) const { return angle_[h]; }
+  double cornerAngle(int32_t h) const { return half_[h].angle; }
 
   /// The directions in which a shortest path through saddle v may continue: at least π away, on both
   /// sides, from the path it arrived by (a shorter path would cut the corner otherwise). As fan angles
@@ -459,7 +459,6 @@ class Propagation {
   const double cap_;
   const TriMesh& mesh_;
   ExactGeodesics& out_;
-  std::vector<double> angle_;          // per halfedge: face(h)'s angle at tail(h)
   detail::HugeVector<Halfedge> half_;  // per halfedge: what the propagation reads of it (Halfedge)
   std::vector<uint8_t> pseudo_;
   std::vector<double> emitted_;                   // distance at a vertex's last emission
