@@ -42,10 +42,10 @@ class MinQueue {
   void push(double key, const Payload& payload) {
     const double scaled = key * inverse_;
     // Through signed integers (slots stay below kMaxSlot < 2⁶³, so the same values): x86-64 converts
-    // between double and uint64 only by a branch and two conversions.
-    const uint64_t slot = scaled < static_cast<double>(static_cast<int64_t>(current_)) || std::isnan(scaled) ? current_
-                          : scaled >= kMaxSlot                                                               ? kMaxSlot
-                                               : static_cast<uint64_t>(static_cast<int64_t>(scaled));
+    // between double and uint64 only by a branch and two conversions; and the front's slot as a double kept.
+    const uint64_t slot = !(scaled >= currentKey_) ? current_  // before the front, or NaN
+                          : scaled >= kMaxSlot     ? kMaxSlot
+                                                   : static_cast<uint64_t>(static_cast<int64_t>(scaled));
     peak_ = std::max(peak_, ++size_);
     if (slot - current_ < kRing) {
       pushToBucket(slot & (kRing - 1), payload);
@@ -76,6 +76,7 @@ class MinQueue {
       }
       if (inRing_ == 0) current_ = far_.front().slot;  // an empty ring: jump to the far heap's nearest
       else ++current_;
+      currentKey_ = static_cast<double>(static_cast<int64_t>(current_));
       // The far heap's entries now within the ring's reach move into it.
       while (!far_.empty() && far_.front().slot - current_ < kRing) {
         pushToBucket(far_.front().slot & (kRing - 1), far_.front().payload);
@@ -129,9 +130,10 @@ class MinQueue {
   const double inverse_;
   HugeVector<Chunk> chunks_;
   std::vector<Bucket> buckets_ = std::vector<Bucket>(kRing);
-  std::vector<Far> far_;  // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
-  int32_t free_ = -1;     // the free list of chunks
-  uint64_t current_ = 0;  // the bucket (slot) being popped
+  std::vector<Far> far_;     // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
+  int32_t free_ = -1;        // the free list of chunks
+  uint64_t current_ = 0;     // the bucket (slot) being popped
+  double currentKey_ = 0.0;  // current_ as a double
   size_t size_ = 0, inRing_ = 0, peak_ = 0;
 };
 
