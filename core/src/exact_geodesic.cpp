@@ -19,7 +19,6 @@ namespace {
 
 using unfolding::corner;
 using unfolding::lineMeetsSegment;
-using unfolding::toFrame;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// A vertex whose total angle exceeds 2π by more than rounding is a saddle: shortest paths may bend there.
@@ -38,16 +37,34 @@ constexpr double kQueueResolution = 1.0 / 64;
 /// The filter drops a window only when a corner is shorter by more than rounding (relative).
 constexpr double kFilterMargin = 1e-12;
 
-/// What the propagation reads of a halfedge h, in one record: a face's three take 144 bytes, where the
+/// What the propagation reads of a halfedge h, in one record: a face's three take 240 bytes, where the
 /// lengths, corners, vertices and twins in arrays of their own cost a cache miss each in the inner loop.
 struct Halfedge {
-  double len;    // |h|
-  Vec2 corner;   // face(h)'s third corner in h's frame (unfolding::oppositeCorner)
-  double angle;  // face(h)'s angle at tail(h), from the three edge lengths (for the saddles)
-  int32_t twin;  // −1 on the boundary
-  int32_t tail;  // the vertex h leaves (head(h) is tail(next(h)), face(h)'s third corner tail(prev(h)))
-  int32_t edge;  // the edge's number, for its record of windows (−1: boundary)
+  double len;       // |h|
+  Vec2 corner;      // face(h)'s third corner c in h's frame (unfolding::oppositeCorner)
+  Vec2 toCorner;    // the unit vector from tail(h) to c, and from c to head(h), in h's frame: the axes of
+  Vec2 fromCorner;  // the children's frames (unfolding::toFrame's u, divided once here instead of per window)
+  int32_t twin;     // −1 on the boundary
+  int32_t tail;     // the vertex h leaves (face(h)'s third corner is tail(prev(h)))
+  int32_t head;     // the vertex h enters, tail(next(h)) (here too: the padding had room, and a window's
+                    // filters read both ends of its edge)
+  int32_t edge;     // the edge's number, for its record of windows (−1: boundary)
+  double angle;     // face(h)'s angle at tail(h), from the three edge lengths (for the saddles; here rather
+                    // than in an array of its own: 8 bytes a halfedge more in memory the propagation
+                    // touches anyway, where a separate array is mapped, and faulted in, on every call)
 };
+
+/// unfolding::toFrame(q, from, to) with its unit axis u = (to − from)/|to − from| given: the same bits.
+Vec2 inFrame(const Vec2& q, const Vec2& from, const Vec2& u) {
+  const Vec2 d = q - from;
+  return {dot(d, u), cross(u, d)};
+}
+
+/// unfolding::toFrame's unit axis from `from` to `to`.
+Vec2 unitAxis(const Vec2& from, const Vec2& to) {
+  const Vec2 axis = to - from;
+  return axis / unfolding::length(axis);
+}
 
 /// The angle between two sides a and b of a triangle whose third side is o.
 double angleBetween(double a, double b, double o) {
@@ -67,8 +84,9 @@ detail::HugeVector<Halfedge> halfedges(const TriMesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const int32_t h = 3 * f + k;
       const double next = len[(k + 1) % 3], prev = len[(k + 2) % 3];
-      half.push_back(Halfedge{len[k], corner(len[k], prev, next), angleBetween(len[k], prev, next), mesh.twin(h),
-                              mesh.tail(h), -1});
+      const Vec2 c = corner(len[k], prev, next);
+      half.push_back(Halfedge{len[k], c, unitAxis(Vec2{0, 0}, c), unitAxis(c, Vec2{len[k], 0}), mesh.twin(h),
+                              mesh.tail(h), mesh.head(h), -1, angleBetween(len[k], prev, next)});
     }
   }
   return half;
@@ -142,15 +160,13 @@ class Propagation {
       if (w.halfedge < 0) emitFromVertex(-1 - w.halfedge, false);
       else propagate(w);
     }
+    out_.stats.maxQueue = static_cast<int64_t>(queue_.peak());
     if (!progress("distances", 1.0)) return cancelledError("exact geodesic distances");
     return true;
   }
 
  private:
-  void push(const Window& w) {
-    queue_.push(w.nearest(), w);
-    out_.stats.maxQueue = std::max<int64_t>(out_.stats.maxQueue, static_cast<int64_t>(queue_.size()));
-  }
+  void push(const Window& w) { queue_.push(w.nearest(), w); }
 
   void update(int32_t v, double d, const GeodesicParent& parent) {
     if (!(d < out_.distances[v])) return;
@@ -284,7 +300,8 @@ class Propagation {
   /// Adds the window [b0, b1] on halfedge h unless it is too narrow or the filter (the corners of the face it
   /// leaves, h's endpoints and `third`, a vertex of that face; −1: none) shows it useless.
   void addWindow(int32_t h, double b0, double b1, const Vec2& image, double sigma, int32_t origin, int32_t third) {
-    const double l = len(h);
+    const Halfedge& e = half_[h];
+    const double l = e.len;
     b0 = std::max(b0, 0.0);
     b1 = std::min(b1, l);
     if (!(b1 - b0 > kMinWindowRel * l)) return;
@@ -297,25 +314,25 @@ class Propagation {
       push(w);
       return;
     }
-    if (dominated(h, b0, b1, image, sigma)) {
+    Seen& seen = seen_[e.edge];
+    if (dominated(h, e, seen, b0, b1, image, sigma)) {
       ++out_.stats.filtered;
       return;
     }
     const double* d = out_.distances.data();
-    const int32_t tail = half_[h].tail, head = half_[TriMesh::next(h)].tail;
-    if (shorter(d[tail] + b1, w.f1) || shorter(d[head] + (l - b0), w.f0)) {
+    if (shorter(d[e.tail] + b1, w.f1) || shorter(d[e.head] + (l - b0), w.f0)) {
       ++out_.stats.filtered;
       return;
     }
     if (third >= 0) {
       // third's position in h's frame: the corner of face(twin(h)) opposite h, below the axis.
-      const Vec2& t = half_[half_[h].twin].corner;
+      const Vec2& t = half_[e.twin].corner;
       if (cornerShorter(d[third], Vec2{l - t.x, -t.y}, x0, x1, w.nearest())) {
         ++out_.stats.filtered;
         return;
       }
     }
-    remember(h, b0, b1, image, sigma);
+    remember(h, e, seen, b0, b1, image, sigma);
     ++out_.stats.windows;
     push(w);
   }
@@ -338,9 +355,9 @@ class Propagation {
   };
 
   /// A window's interval and image in the frame of its edge's lower-numbered halfedge.
-  void toEdgeFrame(int32_t h, double& b0, double& b1, double& ix, double& iy) const {
-    if (h < half_[h].twin) return;
-    const double l = len(h), c0 = l - b1, c1 = l - b0;
+  static void toEdgeFrame(int32_t h, const Halfedge& e, double& b0, double& b1, double& ix, double& iy) {
+    if (h < e.twin) return;
+    const double l = e.len, c0 = l - b1, c1 = l - b0;
     b0 = c0;
     b1 = c1;
     ix = l - ix;
@@ -349,10 +366,11 @@ class Propagation {
 
   /// Records the window as its edge's latest: the one later windows on the edge are compared with
   /// (dominated). One record per edge caught 98% of what eight did on the meshes measured.
-  void remember(int32_t h, double b0, double b1, const Vec2& image, double sigma) {
+  static void remember(int32_t h, const Halfedge& e, Seen& seen, double b0, double b1, const Vec2& image,
+                       double sigma) {
     double ix = image.x, iy = image.y;
-    toEdgeFrame(h, b0, b1, ix, iy);
-    seen_[half_[h].edge] = Seen{b0, b1, ix, iy, sigma};
+    toEdgeFrame(h, e, b0, b1, ix, iy);
+    seen = Seen{b0, b1, ix, iy, sigma};
   }
 
   /// True when the window recorded on the same edge (see remember) is shorter, by more than the filter's
@@ -362,10 +380,10 @@ class Propagation {
   /// (σs + |images − x|) is monotone between its breakpoints: where both rays meet the axis at the same
   /// angle (x on the line through the two images reflected to one side of the axis), and the images' feet
   /// (kinks when an image is on the axis); so its least value on [b0, b1] is at one of those or an end.
-  bool dominated(int32_t h, double b0, double b1, const Vec2& image, double sigma) const {
+  static bool dominated(int32_t h, const Halfedge& e, const Seen& s, double b0, double b1, const Vec2& image,
+                        double sigma) {
     double ix = image.x, iy = image.y;
-    toEdgeFrame(h, b0, b1, ix, iy);
-    const Seen& s = seen_[half_[h].edge];
+    toEdgeFrame(h, e, b0, b1, ix, iy);
     if (!(s.b0 <= b0 && s.b1 >= b1)) return false;
     const double ay = std::fabs(iy), sy = std::fabs(s.iy);
     auto beaten = [&](double x) {
@@ -384,11 +402,10 @@ class Propagation {
 
   /// The filter again when the window leaves the queue: the corners' distances may have shrunk since it
   /// was made. (Its edge's endpoints, and the corner c of the face it enters.)
-  bool useless(const Window& w, const Vec2& c, int32_t vc) {
+  bool useless(const Window& w, const Halfedge& edge, const Vec2& c, int32_t vc) {
     const double* d = out_.distances.data();
-    const double l = len(w.halfedge);
-    if (shorter(d[half_[w.halfedge].tail] + w.b1, w.f1) ||
-        shorter(d[half_[TriMesh::next(w.halfedge)].tail] + (l - w.b0), w.f0) ||
+    const double l = edge.len;
+    if (shorter(d[edge.tail] + w.b1, w.f1) || shorter(d[edge.head] + (l - w.b0), w.f0) ||
         cornerShorter(d[vc], c, Vec2{w.b0, 0}, Vec2{w.b1, 0}, w.nearest())) {
       ++out_.stats.filtered;
       return true;
@@ -399,12 +416,17 @@ class Propagation {
   /// Carries window w across face(w.halfedge): its rays leave through the other two edges, split at the
   /// opposite corner c, which gets its distance when the window sees it.
   void propagate(const Window& w) {
-    const int32_t h = w.halfedge, nextH = TriMesh::next(h), prevH = TriMesh::prev(h);
-    const double l = len(h);
-    const Vec2 a{0, 0}, b{l, 0}, c = half_[h].corner;
+    const int32_t h = w.halfedge, k = h % 3;  // one division by 3 for both neighbours
+    // The face's three records, read once (not through the vector at each use: its calls in between make
+    // the compiler load the vector's pointer again).
+    const Halfedge& here = half_[h];
+    const Halfedge& next = half_[h - k + (k + 1) % 3];  // arithmetic: a select here became a branch that
+    const Halfedge& prev = half_[h - k + (k + 2) % 3];  // mispredicts (k is a coin toss), ~5% slower
+    const double l = here.len;
+    const Vec2 a{0, 0}, b{l, 0}, c = here.corner;
     const Vec2& image = w.image;
-    const int32_t vc = half_[prevH].tail;
-    if (prune_ && useless(w, c, vc)) return;
+    const int32_t vc = prev.tail;
+    if (prune_ && useless(w, here, c, vc)) return;
     // Where the ray from the image through c crosses the axis.
     const double depth = c.y - image.y;
     const double xc = depth > 0 ? image.x + (c.x - image.x) * (-image.y) / depth : c.x;
@@ -413,24 +435,23 @@ class Propagation {
     const double slack = kSeenSlack * l;
     if (xc >= w.b0 - slack && xc <= w.b1 + slack)
       update(vc, w.sigma + unfolding::length(c - image), GeodesicParent{h, w.origin, image});
-    // The part left of c leaves through c–a (child on twin(prevH), frame a → c).
+    // The part left of c leaves through c–a (child on twin(prev), frame a → c).
     if (xc > w.b0) {
-      const int32_t child = half_[prevH].twin;
-      const double lac = len(prevH);
+      const int32_t child = prev.twin;
+      const double lac = prev.len;
       const double p0 = lineMeetsSegment(image, Vec2{w.b0, 0}, a, c, 0.0) * lac;
       const double p1 = xc < w.b1 ? lac : lineMeetsSegment(image, Vec2{w.b1, 0}, a, c, 1.0) * lac;
-      if (p0 <= 0) update(half_[h].tail, w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, p0, p1, toFrame(image, a, c), w.sigma, w.origin, half_[nextH].tail);
+      if (p0 <= 0) update(here.tail, w.sigma + unfolding::length(image - a), GeodesicParent{h, w.origin, image});
+      if (child >= 0) addWindow(child, p0, p1, inFrame(image, a, here.toCorner), w.sigma, w.origin, here.head);
     }
-    // The part right of c leaves through b–c (child on twin(nextH), frame c → b).
+    // The part right of c leaves through b–c (child on twin(next), frame c → b).
     if (xc < w.b1) {
-      const int32_t child = half_[nextH].twin;
-      const double lcb = len(nextH);
+      const int32_t child = next.twin;
+      const double lcb = next.len;
       const double q0 = xc > w.b0 ? 0.0 : lineMeetsSegment(image, Vec2{w.b0, 0}, c, b, 0.0) * lcb;
       const double q1 = lineMeetsSegment(image, Vec2{w.b1, 0}, c, b, 1.0) * lcb;
-      if (q1 >= lcb)
-        update(half_[nextH].tail, w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
-      if (child >= 0) addWindow(child, q0, q1, toFrame(image, c, b), w.sigma, w.origin, half_[h].tail);
+      if (q1 >= lcb) update(here.head, w.sigma + unfolding::length(image - b), GeodesicParent{h, w.origin, image});
+      if (child >= 0) addWindow(child, q0, q1, inFrame(image, c, here.fromCorner), w.sigma, w.origin, here.tail);
     }
   }
 

@@ -35,14 +35,18 @@ class MinQueue {
 
   bool empty() const { return size_ == 0; }
   size_t size() const { return size_; }
+  /// The most entries queued at once so far.
+  size_t peak() const { return peak_; }
 
   /// Queues payload with key (≥ 0; a key in an interval before the last one popped counts as in that one).
   void push(double key, const Payload& payload) {
     const double scaled = key * inverse_;
-    uint64_t slot = scaled < static_cast<double>(current_) || std::isnan(scaled) ? current_
-                    : scaled >= kMaxSlot                                         ? kMaxSlot
-                                                                                 : static_cast<uint64_t>(scaled);
-    ++size_;
+    // Through signed integers (slots stay below kMaxSlot < 2⁶³, so the same values): x86-64 converts
+    // between double and uint64 only by a branch and two conversions; and the front's slot as a double kept.
+    const uint64_t slot = !(scaled >= currentKey_) ? current_  // before the front, or NaN
+                          : scaled >= kMaxSlot     ? kMaxSlot
+                                                   : static_cast<uint64_t>(static_cast<int64_t>(scaled));
+    peak_ = std::max(peak_, ++size_);
     if (slot - current_ < kRing) {
       pushToBucket(slot & (kRing - 1), payload);
       return;
@@ -72,6 +76,7 @@ class MinQueue {
       }
       if (inRing_ == 0) current_ = far_.front().slot;  // an empty ring: jump to the far heap's nearest
       else ++current_;
+      currentKey_ = static_cast<double>(static_cast<int64_t>(current_));
       // The far heap's entries now within the ring's reach move into it.
       while (!far_.empty() && far_.front().slot - current_ < kRing) {
         pushToBucket(far_.front().slot & (kRing - 1), far_.front().payload);
@@ -86,7 +91,8 @@ class MinQueue {
   static constexpr int kChunk = 16;        // entries per chunk
   static constexpr double kMaxSlot = 4.0e18;
 
-  struct Chunk {
+  /// Aligned to a cache line, so that a 64-byte entry (the propagation's window) is one line, not two.
+  struct alignas(64) Chunk {
     Payload items[kChunk];
     int32_t below = -1;  // the next chunk of the same bucket's stack (full), or of the free list
   };
@@ -124,10 +130,11 @@ class MinQueue {
   const double inverse_;
   HugeVector<Chunk> chunks_;
   std::vector<Bucket> buckets_ = std::vector<Bucket>(kRing);
-  std::vector<Far> far_;  // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
-  int32_t free_ = -1;     // the free list of chunks
-  uint64_t current_ = 0;  // the bucket (slot) being popped
-  size_t size_ = 0, inRing_ = 0;
+  std::vector<Far> far_;     // a min-heap by slot (laterSlot) of the entries beyond the ring's reach
+  int32_t free_ = -1;        // the free list of chunks
+  uint64_t current_ = 0;     // the bucket (slot) being popped
+  double currentKey_ = 0.0;  // current_ as a double
+  size_t size_ = 0, inRing_ = 0, peak_ = 0;
 };
 
 }  // namespace straightest::detail

@@ -34,7 +34,9 @@ struct HugePageAllocator {
       return static_cast<T*>(p);
     }
 #endif
-    return static_cast<T*>(::operator new(n * sizeof(T)));
+    if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__)
+      return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{alignof(T)}));
+    else return static_cast<T*>(::operator new(n * sizeof(T)));
   }
 
   void deallocate(T* p, size_t n) {
@@ -46,7 +48,8 @@ struct HugePageAllocator {
 #else
     (void)n;
 #endif
-    ::operator delete(p);
+    if constexpr (alignof(T) > __STDCPP_DEFAULT_NEW_ALIGNMENT__) ::operator delete (p, std::align_val_t{alignof(T)});
+    else ::operator delete(p);
   }
 
   template <typename U>
