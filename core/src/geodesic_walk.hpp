@@ -30,10 +30,11 @@ inline double cornerAngle(const TriMesh& mesh, int32_t h) {
   return std::atan2(norm(cross(a, b)), dot(a, b));
 }
 
-/// The unit direction in face(h) at angle beta from h (counter-clockwise, toward the face).
-inline Vec3 directionInFace(const TriMesh& mesh, int32_t h, double beta) {
+/// The unit direction in face(h) at angle beta from h (counter-clockwise, toward the face), given by its
+/// cosine c and sine s.
+inline Vec3 directionInFace(const TriMesh& mesh, int32_t h, double c, double s) {
   const Vec3 u = normalized(mesh.position(mesh.head(h)) - mesh.position(mesh.tail(h)));
-  return u * std::cos(beta) + cross(mesh.faceNormal(TriMesh::face(h)), u) * std::sin(beta);
+  return u * c + cross(mesh.faceNormal(TriMesh::face(h)), u) * s;
 }
 
 inline Vec3 projected(const Vec3& x, const Vec3& n) { return x - n * dot(x, n); }
@@ -72,10 +73,9 @@ class Walk {
   /// Maps the tangent vector `tangent` (in the plane of normal n) into a face around the source and walks.
   Expected<bool> run(const Vec3& tangent, const Vec3& n) {
     const SurfacePoint& s = shot_.source;
-    if (keep_) {
-      shot_.points.reserve(256);
-      shot_.positions.reserve(256);
-    }
+    // The source and the end only, without polylines (one allocation each, not two).
+    shot_.points.reserve(keep_ ? 256 : 2);
+    shot_.positions.reserve(keep_ ? 256 : 2);
     shot_.points.push_back(s);
     shot_.positions.push_back(position(mesh_, s));
     last_ = shot_.positions.back();
@@ -117,15 +117,16 @@ class Walk {
       const int32_t t = y > 0 ? h : mesh_.twin(h);
       if (t < 0) return invalid("the direction points off the surface: the source is on a boundary edge");
       const double beta = y > 0 ? std::atan2(y, x) : std::atan2(-y, -x);
-      shot_.direction = directionInFace(mesh_, t, beta);
+      const double c = std::cos(beta), sine = std::sin(beta);
+      shot_.direction = directionInFace(mesh_, t, c, sine);
       enter(TriMesh::face(t), t % 3);
       p_ = pointOnEdge(t % 3, t == h ? s.t : 1 - s.t);
-      d_ = turned(t % 3, beta);
+      d_ = turned(t % 3, c, sine);
       return walk();
     }
     auto started = startAtVertex(s.index, tangent, n);
     if (!started) return started.error();
-    shot_.direction = directionInFace(mesh_, 3 * face_ + fromCorner_, leftAt_);
+    shot_.direction = directionInFace(mesh_, 3 * face_ + fromCorner_, leftCos_, leftSin_);
     return walk();
   }
 
@@ -154,10 +155,10 @@ class Walk {
     const Vec2 a = flat_->at(k);
     return a + (flat_->at(nextCorner(k)) - a) * t;
   }
-  /// The unit direction at angle beta from edge k (counter-clockwise, toward the face).
-  Vec2 turned(int k, double beta) const {
+  /// The unit direction at angle beta from edge k (counter-clockwise, toward the face), given by its
+  /// cosine c and sine s.
+  Vec2 turned(int k, double c, double s) const {
     const Vec2 u = unit(flat_->at(nextCorner(k)) - flat_->at(k));
-    const double c = std::cos(beta), s = std::sin(beta);
     return Vec2{u.x * c - u.y * s, u.x * s + u.y * c};
   }
 
@@ -165,12 +166,22 @@ class Walk {
   /// corner angle; an interior vertex whose projection folds falls back to the angle scaled by θ/2π.
   Expected<bool> startAtVertex(int32_t v, const Vec3& tangent, const Vec3& n) {
     const Vec3& pv = mesh_.position(v);
+    const double tangent2 = dot(tangent, tangent);
     int32_t first = -1;
     for (int32_t h : mesh_.outgoingHalfedges(v)) {
       if (first < 0) first = h;
       const Vec3 p1 = projected(mesh_.position(mesh_.head(h)) - pv, n);
+      // Sectors that certainly fail the test below are passed without its two arctangents (the same
+      // choice, sooner): a = signedAngle(p1, tangent, n) = atan2(y, x) is below 0 wherever y < 0 and y / x
+      // does not underflow; and where a ≥ 0 and sector > 0, both are in [0, π], so a − sector is the angle
+      // from p2 to the tangent, whose sine (yy, scaled) clearly above 0 puts a above sector by far more
+      // than the arctangents' rounding.
+      const double y = dot(cross(p1, tangent), n), x = dot(p1, tangent);
+      if (y < 0 && !(-y < std::fabs(x) * 0x1p-800)) continue;
       const Vec3 p2 = projected(mesh_.position(mesh_.tail(TriMesh::prev(h))) - pv, n);
-      const double sector = signedAngle(p1, p2, n), a = signedAngle(p1, tangent, n);
+      const double yy = dot(cross(p2, tangent), n);
+      if (yy > 0 && yy * yy > 1e-18 * dot(p2, p2) * tangent2) continue;
+      const double sector = signedAngle(p1, p2, n), a = std::atan2(y, x);
       if (sector > 0 && a >= 0 && a <= sector) {
         leaveVertex(h, cornerAngle(mesh_, h) * a / sector);
         return true;
@@ -192,8 +203,9 @@ class Walk {
     enter(TriMesh::face(h), -1);
     fromCorner_ = k;
     p_ = flat_->at(k);
-    d_ = turned(k, beta);
-    leftAt_ = beta;
+    leftCos_ = std::cos(beta);
+    leftSin_ = std::sin(beta);
+    d_ = turned(k, leftCos_, leftSin_);
   }
 
   /// Leaves tail(h) at the angle `angle` counter-clockwise from halfedge h (reduced modulo the fan).
@@ -549,8 +561,8 @@ class Walk {
   FlatFace made_;  // the record of the current face, without a table
   int entered_ = -1, fromCorner_ = -1;
   Vec2 p_, d_;
-  double leftAt_ = 0;  // the angle of the last leaveVertex
-  Vec3 last_;          // the last point recorded in 3D (the source, when none was made since)
+  double leftCos_ = 1, leftSin_ = 0;  // the cosine and sine of the angle of the last leaveVertex
+  Vec3 last_;                         // the last point recorded in 3D (the source, when none was made since)
   SurfacePoint lastPoint_;
   int32_t lastEdge_ = -1, lastTwin_ = -1;  // the last point, when it is an edge crossing not yet made a point
   double lastT_ = 0;
