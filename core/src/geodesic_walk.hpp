@@ -313,6 +313,7 @@ class Walk {
   template <bool kTable>
   Expected<bool> walkWith() {
     const double requested = shot_.requestedLength, tolerance2 = vertexTolerance_ * vertexTolerance_;
+    const FlatFace* const table = table_;
     // The state lives in locals (registers) while the walk crosses edges; the members are written back
     // around the rare events that read and change them (a vertex, the end, a 3D point).
     int32_t face;
@@ -414,8 +415,8 @@ class Walk {
         // two faces the walk may enter after the next one. (Loading all four a face earlier, before the
         // side is known, cost more instructions than it saved.)
         if constexpr (kTable) {
-          detail::prefetch(table_ + flat->beyond[2 * k]);
-          detail::prefetch(table_ + flat->beyond[2 * k + 1]);
+          detail::prefetch(table + flat->beyond[2 * k]);
+          detail::prefetch(table + flat->beyond[2 * k + 1]);
         }
         const Vec2 e = head - tail;
         const double den = cross(d, e), inverse = 1 / den;
@@ -487,7 +488,7 @@ class Walk {
       entered = twin - 3 * face;
       fromCorner = -1;
       if constexpr (kTable) {
-        flat = table_ + face;
+        flat = table + face;
       } else {
         flat = flatOf(face);
       }
