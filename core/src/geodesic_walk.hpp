@@ -30,10 +30,11 @@ inline double cornerAngle(const TriMesh& mesh, int32_t h) {
   return std::atan2(norm(cross(a, b)), dot(a, b));
 }
 
-/// The unit direction in face(h) at angle beta from h (counter-clockwise, toward the face).
-inline Vec3 directionInFace(const TriMesh& mesh, int32_t h, double beta) {
+/// The unit direction in face(h) at angle beta from h (counter-clockwise, toward the face), given by its
+/// cosine c and sine s.
+inline Vec3 directionInFace(const TriMesh& mesh, int32_t h, double c, double s) {
   const Vec3 u = normalized(mesh.position(mesh.head(h)) - mesh.position(mesh.tail(h)));
-  return u * std::cos(beta) + cross(mesh.faceNormal(TriMesh::face(h)), u) * std::sin(beta);
+  return u * c + cross(mesh.faceNormal(TriMesh::face(h)), u) * s;
 }
 
 inline Vec3 projected(const Vec3& x, const Vec3& n) { return x - n * dot(x, n); }
@@ -72,10 +73,9 @@ class Walk {
   /// Maps the tangent vector `tangent` (in the plane of normal n) into a face around the source and walks.
   Expected<bool> run(const Vec3& tangent, const Vec3& n) {
     const SurfacePoint& s = shot_.source;
-    if (keep_) {
-      shot_.points.reserve(256);
-      shot_.positions.reserve(256);
-    }
+    // The source and the end only, without polylines (one allocation each, not two).
+    shot_.points.reserve(keep_ ? 256 : 2);
+    shot_.positions.reserve(keep_ ? 256 : 2);
     shot_.points.push_back(s);
     shot_.positions.push_back(position(mesh_, s));
     last_ = shot_.positions.back();
@@ -117,15 +117,16 @@ class Walk {
       const int32_t t = y > 0 ? h : mesh_.twin(h);
       if (t < 0) return invalid("the direction points off the surface: the source is on a boundary edge");
       const double beta = y > 0 ? std::atan2(y, x) : std::atan2(-y, -x);
-      shot_.direction = directionInFace(mesh_, t, beta);
+      const double c = std::cos(beta), sine = std::sin(beta);
+      shot_.direction = directionInFace(mesh_, t, c, sine);
       enter(TriMesh::face(t), t % 3);
       p_ = pointOnEdge(t % 3, t == h ? s.t : 1 - s.t);
-      d_ = turned(t % 3, beta);
+      d_ = turned(t % 3, c, sine);
       return walk();
     }
     auto started = startAtVertex(s.index, tangent, n);
     if (!started) return started.error();
-    shot_.direction = directionInFace(mesh_, 3 * face_ + fromCorner_, leftAt_);
+    shot_.direction = directionInFace(mesh_, 3 * face_ + fromCorner_, leftCos_, leftSin_);
     return walk();
   }
 
@@ -154,10 +155,10 @@ class Walk {
     const Vec2 a = flat_->at(k);
     return a + (flat_->at(nextCorner(k)) - a) * t;
   }
-  /// The unit direction at angle beta from edge k (counter-clockwise, toward the face).
-  Vec2 turned(int k, double beta) const {
+  /// The unit direction at angle beta from edge k (counter-clockwise, toward the face), given by its
+  /// cosine c and sine s.
+  Vec2 turned(int k, double c, double s) const {
     const Vec2 u = unit(flat_->at(nextCorner(k)) - flat_->at(k));
-    const double c = std::cos(beta), s = std::sin(beta);
     return Vec2{u.x * c - u.y * s, u.x * s + u.y * c};
   }
 
@@ -165,12 +166,22 @@ class Walk {
   /// corner angle; an interior vertex whose projection folds falls back to the angle scaled by θ/2π.
   Expected<bool> startAtVertex(int32_t v, const Vec3& tangent, const Vec3& n) {
     const Vec3& pv = mesh_.position(v);
+    const double tangent2 = dot(tangent, tangent);
     int32_t first = -1;
     for (int32_t h : mesh_.outgoingHalfedges(v)) {
       if (first < 0) first = h;
       const Vec3 p1 = projected(mesh_.position(mesh_.head(h)) - pv, n);
+      // Sectors that certainly fail the test below are passed without its two arctangents (the same
+      // choice, sooner): a = signedAngle(p1, tangent, n) = atan2(y, x) is below 0 wherever y < 0 and y / x
+      // does not underflow; and where a ≥ 0 and sector > 0, both are in [0, π], so a − sector is the angle
+      // from p2 to the tangent, whose sine (yy, scaled) clearly above 0 puts a above sector by far more
+      // than the arctangents' rounding.
+      const double y = dot(cross(p1, tangent), n), x = dot(p1, tangent);
+      if (y < 0 && !(-y < std::fabs(x) * 0x1p-800)) continue;
       const Vec3 p2 = projected(mesh_.position(mesh_.tail(TriMesh::prev(h))) - pv, n);
-      const double sector = signedAngle(p1, p2, n), a = signedAngle(p1, tangent, n);
+      const double yy = dot(cross(p2, tangent), n);
+      if (yy > 0 && yy * yy > 1e-18 * dot(p2, p2) * tangent2) continue;
+      const double sector = signedAngle(p1, p2, n), a = std::atan2(y, x);
       if (sector > 0 && a >= 0 && a <= sector) {
         leaveVertex(h, cornerAngle(mesh_, h) * a / sector);
         return true;
@@ -192,8 +203,9 @@ class Walk {
     enter(TriMesh::face(h), -1);
     fromCorner_ = k;
     p_ = flat_->at(k);
-    d_ = turned(k, beta);
-    leftAt_ = beta;
+    leftCos_ = std::cos(beta);
+    leftSin_ = std::sin(beta);
+    d_ = turned(k, leftCos_, leftSin_);
   }
 
   /// Leaves tail(h) at the angle `angle` counter-clockwise from halfedge h (reduced modulo the fan).
@@ -295,8 +307,13 @@ class Walk {
     return true;
   }
 
-  Expected<bool> walk() {
+  Expected<bool> walk() { return table_ ? walkWith<true>() : walkWith<false>(); }
+
+  /// The walk, specialized on whether records come from a table (kTable) or are made per face.
+  template <bool kTable>
+  Expected<bool> walkWith() {
     const double requested = shot_.requestedLength, tolerance2 = vertexTolerance_ * vertexTolerance_;
+    const FlatFace* const table = table_;
     // The state lives in locals (registers) while the walk crosses edges; the members are written back
     // around the rare events that read and change them (a vertex, the end, a 3D point).
     int32_t face;
@@ -308,6 +325,24 @@ class Walk {
     double px, py, dx, dy;
     double length;
     int64_t faces;
+    // The current face's corners in the order of its entered edge r: b → a is that edge, o the corner
+    // opposite it, j1 (a → o) and j2 (o → b) the edges out (valid while entered ≥ 0). Set by one switch
+    // when the walk enters a face, so that the step picks nothing by index.
+    Vec2 a, b, o;
+    int j1 = 0, j2 = 0;
+    auto turn = [&] {
+      const Vec2 c0{0.0, 0.0}, c1{flat->length, 0.0}, c2 = flat->corner;  // flat->at(k), the same bits
+      switch (entered) {
+        case 0: b = c0, a = c1, o = c2, j1 = 1, j2 = 2; break;
+        case 1: b = c1, a = c2, o = c0, j1 = 2, j2 = 0; break;
+        default: b = c2, a = c0, o = c1, j1 = 0, j2 = 1; break;
+      }
+    };
+    // The last edge crossed since load(), kept here and written to the members by store() (without 3D
+    // points, crossEdge would store them every step).
+    int32_t lastH = -1, lastTwin = -1;
+    double lastT = 0;
+    const bool need3d = need3d_;
     auto store = [&] {
       face_ = face;
       flat_ = flat;
@@ -317,6 +352,13 @@ class Walk {
       d_ = Vec2{dx, dy};
       shot_.length = length;
       shot_.facesCrossed = faces;
+      if (lastH >= 0) {
+        lastEdge_ = lastH;
+        lastTwin_ = lastTwin;
+        lastT_ = lastT;
+        have3d_ = false;
+        lastH = -1;
+      }
     };
     auto load = [&] {
       face = face_;
@@ -329,6 +371,7 @@ class Walk {
       dy = d_.y;
       length = shot_.length;
       faces = shot_.facesCrossed;
+      if (entered >= 0) turn();
     };
     load();
     auto stop = [&](ShootStatus status) {
@@ -336,83 +379,81 @@ class Walk {
       shot_.status = status;
       return finish();
     };
+    // One test a step for both the step bound and the progress report (every 65536 steps).
+    const int64_t maxSteps = maxSteps_;
+    int64_t checkAt = std::min<int64_t>(maxSteps, 65535);
     for (int64_t step = 0;; ++step) {
-      if (step >= maxSteps_) return stop(ShootStatus::StepLimit);
-      if ((step & 65535) == 65535 && !report_(length / requested)) return cancelledError("geodesic shooting");
+      if (step >= checkAt) {
+        if (step >= maxSteps) return stop(ShootStatus::StepLimit);
+        if (!report_(length / requested)) return cancelledError("geodesic shooting");
+        checkAt = std::min(maxSteps, step + 65536);
+      }
       const Vec2 p{px, py}, d{dx, dy};
       const double remaining = requested - length;
       if (remaining <= 0) return stop(ShootStatus::ReachedLength);  // a vertex passing ended within rounding
-      int exit = -1;                                                // the edge left through
+      int exit = -1, exitHead = -1;                                 // the edge left through, its head
       double exitS = kInf, exitT = 0;
       Vec2 from, edge;  // the exit edge's tail and extent, its squared length and that's inverse
       double edgeLength2 = -1, inverseLength2 = 0;
-      // The ray p + s d leaves through edge a → a + e where it crosses from the face's side (den > 0) first.
-      auto consider = [&](int k, const Vec2& a, const Vec2& e) {
-        const double den = cross(d, e);
-        if (!(den > 0)) return;
-        const Vec2 ap = a - p;
-        const double inverse = 1 / den;
+      bool picked = false;
+      if (entered >= 0) {
+        // Entered through edge b → a: the ray leaves through the edge on the side of the opposite corner o
+        // it passes, j1 or j2. The side of o first, then the one edge it picks: the same operations on
+        // the same values as working out both edges and picking one (the walk before), at half the
+        // arithmetic. A branch, not a select: the next record's address depends on the side, and
+        // predicted, its load need not wait for the arithmetic (as in the tracer: STRAIGHTEST_KEEP_BRANCH).
+        const Vec2 ap2 = o - p;
+        Vec2 tail, head, ap;
+        int k, kHead;
+        if (cross(ap2, d) < 0) {
+          STRAIGHTEST_KEEP_BRANCH();
+          tail = a, head = o, ap = a - p, k = j1, kHead = j2;
+        } else {
+          tail = o, head = b, ap = ap2, k = j2, kHead = entered;
+        }
+        // On a large mesh the walk waits for memory (faces all over it): start loading the records of the
+        // two faces the walk may enter after the next one. (Loading all four a face earlier, before the
+        // side is known, or all six, measured no faster, at ~10 more instructions a face.)
+        if constexpr (kTable) {
+          detail::prefetch(table + flat->beyond[2 * k]);
+          detail::prefetch(table + flat->beyond[2 * k + 1]);
+        }
+        const Vec2 e = head - tail;
+        const double den = cross(d, e), inverse = 1 / den;
         const double s = cross(ap, e) * inverse;
-        if (s < exitS) {
+        if (den > 0 && s < kInf) {  // as exitOf would take it
+          exit = k;
+          exitHead = kHead;
           exitS = s;
           exitT = cross(ap, d) * inverse;
-          exit = k;
+          from = tail;
+          edge = e;
+          edgeLength2 = dot(e, e);
+          inverseLength2 = 1 / edgeLength2;
+          picked = true;
         }
-      };
-      auto considerEdge = [&](int k) {
-        const Vec2 a = flat->at(k);
-        consider(k, a, flat->at(nextCorner(k)) - a);
-      };
-      if (entered >= 0) {
-        // Entered through edge j: the ray leaves through the edge on the side of the opposite corner it
-        // passes. On a large mesh the walk waits for memory (faces all over it): start loading the four
-        // records it may read two faces ahead (the two one face ahead were started a step earlier).
-        const int j1 = nextCorner(entered), j2 = nextCorner(j1);
-        if (table_)
-          for (int i : {2 * j1, 2 * j1 + 1, 2 * j2, 2 * j2 + 1}) detail::prefetch(table_ + flat->beyond[i]);
-        // Both candidates (j1: a → o, j2: o → b) are written out, then one is picked by the side of o (GCC
-        // 12 at -O3 makes the pick a branch and divides for the picked edge only, as the disassembly shows;
-        // the step costs ~250 instructions and is bound by their throughput more than by one chain).
-        const Vec2 a = flat->at(j1), o = flat->at(j2), b = flat->at(entered);
-        const Vec2 e1 = o - a, e2 = b - o, ap1 = a - p, ap2 = o - p;
-        const double den1 = cross(d, e1), den2 = cross(d, e2);
-        const double inverse1 = 1 / den1, inverse2 = 1 / den2;
-        const double s1 = cross(ap1, e1) * inverse1, s2 = cross(ap2, e2) * inverse2;
-        const double t1 = cross(ap1, d) * inverse1, t2 = cross(ap2, d) * inverse2;
-        const double squared1 = dot(e1, e1), squared2 = dot(e2, e2);
-        const double inverseSquared1 = 1 / squared1, inverseSquared2 = 1 / squared2;
-        const bool first = cross(ap2, d) < 0;
-        if (first ? den1 > 0 && s1 < kInf : den2 > 0 && s2 < kInf) {  // as consider() would take it
-          exit = first ? j1 : j2;
-          exitS = first ? s1 : s2;
-          exitT = first ? t1 : t2;
-          from = first ? a : o;
-          edge = first ? e1 : e2;
-          edgeLength2 = first ? squared1 : squared2;
-          inverseLength2 = first ? inverseSquared1 : inverseSquared2;
-        }
-        if (exit < 0) {  // rounding at the corner: let both edges compete
-          considerEdge(j1);
-          considerEdge(j2);
-        }
-      } else if (fromCorner >= 0) {
-        considerEdge(nextCorner(fromCorner));
-      } else {
-        for (int k = 0; k < 3; ++k) considerEdge(k);
       }
-      if (exit < 0) return stop(ShootStatus::NoExit);
+      if (!picked) {
+        if (entered >= 0) {  // rounding at the corner: let both edges compete
+          exitOf(flat, p, d, j1, j2, exit, exitS, exitT);
+        } else if (fromCorner >= 0) {  // only the edge opposite the corner left
+          exitOf(flat, p, d, nextCorner(fromCorner), -1, exit, exitS, exitT);
+        } else {
+          exitOf(flat, p, d, 0, 1, exit, exitS, exitT);
+          exitOf(flat, p, d, 2, -1, exit, exitS, exitT);
+        }
+        if (exit < 0) return stop(ShootStatus::NoExit);
+        exitHead = nextCorner(exit);
+        from = flat->at(exit);
+        edge = flat->at(exitHead) - from;
+        edgeLength2 = dot(edge, edge);
+        inverseLength2 = 1 / edgeLength2;
+      }
       exitS = std::max(exitS, 0.0);
       if (remaining <= exitS) {  // the length ends inside this face
         store();
         endInFace(p + d * remaining, remaining);
         return finish();
-      }
-      const int exitHead = nextCorner(exit);
-      if (edgeLength2 < 0) {  // not worked out with the candidates
-        from = flat->at(exit);
-        edge = flat->at(exitHead) - from;
-        edgeLength2 = dot(edge, edge);
-        inverseLength2 = 1 / edgeLength2;
       }
       const double t = std::clamp(exitT, 0.0, 1.0);
       const int vertexCorner = t * t * edgeLength2 <= tolerance2               ? exit
@@ -431,25 +472,56 @@ class Walk {
       const double segment = unfolding::length(from + edge * t - p);
       length += segment;
       ++faces;
-      crossEdge(h, twin, t);
+      if (need3d) {
+        crossEdge(h, twin, t);
+      } else {
+        lastH = h;
+        lastTwin = twin;
+        lastT = t;
+      }
       if (twin < 0) return stop(ShootStatus::HitBoundary);
       // Unfold: the twin runs from this edge's head to its tail, its face on the other side. The motion
       // into the next face's frame takes `edge` to −g (g: the twin, tail to head, in that frame) and this
       // edge's tail to the twin's head; d keeps its components along the edge and across it.
       const double along = dot(d, edge), across = cross(edge, d);
-      face = TriMesh::face(twin);
+      face = static_cast<int32_t>(static_cast<uint32_t>(twin) / 3u);
       entered = twin - 3 * face;
       fromCorner = -1;
-      flat = flatOf(face);
-      const Vec2 tailG = flat->at(entered), headG = flat->at(nextCorner(entered)), g = headG - tailG;
+      if constexpr (kTable) {
+        flat = table + face;
+      } else {
+        flat = flatOf(face);
+      }
+      turn();
+      const Vec2 g = a - b;  // the twin: tail b, head a
       // d = (−g · along + perp(−g) · across) / |edge|², perp(x, y) = (−y, x).
       Vec2 nextD = Vec2{-g.x * along + g.y * across, -g.y * along - g.x * across} * inverseLength2;
       if ((step & 63) == 0) nextD = unit(nextD);
-      const Vec2 nextP = headG - g * t;
+      const Vec2 nextP = a - g * t;
       px = nextP.x;
       py = nextP.y;
       dx = nextD.x;
       dy = nextD.y;
+    }
+  }
+
+  /// The exit through edge k1 (and k2 ≥ 0) of the face, where the ray p + s d crosses from the face's side
+  /// (den > 0) first: exit, exitS and exitT updated when one is before exitS.
+  static void exitOf(const FlatFace* flat, const Vec2& p, const Vec2& d, int k1, int k2, int& exit, double& exitS,
+                     double& exitT) {
+    for (int k : {k1, k2}) {
+      if (k < 0) continue;
+      const Vec2 a = flat->at(k), e = flat->at(nextCorner(k)) - a;
+      const double den = cross(d, e);
+      if (!(den > 0)) continue;
+      const Vec2 ap = a - p;
+      const double inverse = 1 / den;
+      const double s = cross(ap, e) * inverse;
+      if (s < exitS) {
+        exitS = s;
+        exitT = cross(ap, d) * inverse;
+        exit = k;
+      }
     }
   }
 
@@ -490,8 +562,8 @@ class Walk {
   FlatFace made_;  // the record of the current face, without a table
   int entered_ = -1, fromCorner_ = -1;
   Vec2 p_, d_;
-  double leftAt_ = 0;  // the angle of the last leaveVertex
-  Vec3 last_;          // the last point recorded in 3D (the source, when none was made since)
+  double leftCos_ = 1, leftSin_ = 0;  // the cosine and sine of the angle of the last leaveVertex
+  Vec3 last_;                         // the last point recorded in 3D (the source, when none was made since)
   SurfacePoint lastPoint_;
   int32_t lastEdge_ = -1, lastTwin_ = -1;  // the last point, when it is an edge crossing not yet made a point
   double lastT_ = 0;

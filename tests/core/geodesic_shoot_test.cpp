@@ -78,6 +78,45 @@ TEST(GeodesicShoot, AngleZeroFollowsTheFirstOutgoingEdge) {
   EXPECT_NEAR(norm(g.endPosition - (mesh.position(v) + edge * 0.5)), 0.0, 1e-12);
 }
 
+// The start at a vertex, written out as geodesic_shoot.hpp states it (every sector's two angles by arctangents,
+// the first sector holding the tangent, the same fraction of its corner angle): the walk, which passes most
+// sectors without their arctangents, leaves in the same direction, bit for bit.
+TEST(GeodesicShoot, AVertexSourceLeavesInTheSectorThatHoldsTheTangentBitForBit) {
+  const TriMesh mesh = makeHeightField(12);
+  auto signedAngle = [](const Vec3& a, const Vec3& b, const Vec3& n) {
+    return std::atan2(dot(cross(a, b), n), dot(a, b));
+  };
+  auto projected = [](const Vec3& x, const Vec3& n) { return x - n * dot(x, n); };
+  int compared = 0;
+  for (int32_t v = 0; v < mesh.numVertices(); v += 5) {
+    const TangentFrame frame = tangentFrame(mesh, SurfacePoint::vertex(v)).value();
+    const Vec3& n = frame.normal;
+    const Vec3& pv = mesh.position(v);
+    for (int i = 0; i < 72; ++i) {
+      const double angle = i * (2 * kPi / 72) + 1e-3;
+      auto shot = shootGeodesicAtAngle(mesh, SurfacePoint::vertex(v), angle, 1e-3);
+      const Vec3 tangent = normalized(projected(frame.axis0 * std::cos(angle) + frame.axis90 * std::sin(angle), n));
+      for (int32_t h : mesh.outgoingHalfedges(v)) {
+        const Vec3 p1 = projected(mesh.position(mesh.head(h)) - pv, n);
+        const Vec3 p2 = projected(mesh.position(mesh.tail(TriMesh::prev(h))) - pv, n);
+        const double sector = signedAngle(p1, p2, n), a = signedAngle(p1, tangent, n);
+        if (!(sector > 0 && a >= 0 && a <= sector)) continue;
+        const Vec3 u = mesh.position(mesh.head(h)) - pv, w = mesh.position(mesh.tail(TriMesh::prev(h))) - pv;
+        const double beta = std::atan2(norm(cross(u, w)), dot(u, w)) * a / sector;
+        const Vec3 e = normalized(u);
+        const Vec3 expected = e * std::cos(beta) + cross(mesh.faceNormal(TriMesh::face(h)), e) * std::sin(beta);
+        ASSERT_TRUE(shot) << shot.error().message;
+        EXPECT_EQ(shot.value().direction.x, expected.x) << "vertex " << v << " angle " << i;
+        EXPECT_EQ(shot.value().direction.y, expected.y) << "vertex " << v << " angle " << i;
+        EXPECT_EQ(shot.value().direction.z, expected.z) << "vertex " << v << " angle " << i;
+        ++compared;
+        break;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
+}
+
 TEST(GeodesicShoot, IsAHelixOfTheAnalyticPitchOnACylinder) {
   const testing::Prism c = testing::prism(24, 60, 1.0, 0.1);
   const double gamma = 0.13;  // rise angle over the horizontal
