@@ -175,5 +175,44 @@ TEST(InteriorWeights, AreRowsOfOneRingNeighboursSummingToOneAndTheirSystemKeepsC
   }
 }
 
+TEST(InteriorWeights, ShapePreservingOnesReproduceThePlanarCentreOfARingOfAnyValence) {
+  // Floater's weights have linear precision: for a flat one ring the polar map is the ring itself (up
+  // to a rotation), so Σ w_k p_k = p. Rings of 3 to 40 neighbours at random angles (gaps below π) and
+  // distances; each neighbour's opposite segment is searched among all the others.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int d = 3; d <= 40; ++d) {
+    for (int trial = 0; trial < 5; ++trial) {
+      std::vector<double> gaps(d);
+      double total = 0;
+      for (double& g : gaps) total += g = 0.2 + unit(rng);
+      const Vec3 centre{0.3, -0.2, 0};
+      std::vector<Vec3> positions{centre};
+      std::vector<Triangle> triangles;
+      double angle = unit(rng);
+      bool gapsBelowPi = true;
+      for (int k = 0; k < d; ++k) {
+        gapsBelowPi = gapsBelowPi && gaps[k] * kTwoPi / total < kPi - 1e-3;
+        const double r = 0.5 + 2 * unit(rng);
+        positions.push_back(centre + Vec3{r * std::cos(angle), r * std::sin(angle), 0});
+        angle += gaps[k] * kTwoPi / total;
+        triangles.push_back({0, 1 + k, 1 + (k + 1) % d});
+      }
+      if (!gapsBelowPi) continue;
+      const TriMesh mesh = TriMesh::build(positions, triangles).value();
+      const InteriorWeights W = interiorWeights(mesh, WeightKind::ShapePreserving);
+      ASSERT_EQ(W.rows, std::vector<int32_t>{0});
+      EXPECT_EQ(W.uniformFallbacks, 0) << d;
+      Vec3 sum{};
+      for (int32_t k = W.weights.start[0]; k < W.weights.start[1]; ++k) {
+        EXPECT_GT(W.weights.value[k], -1e-12) << d;
+        sum = sum + positions[W.weights.col[k]] * W.weights.value[k];
+      }
+      EXPECT_NEAR(sum[0], centre[0], 1e-12) << d;
+      EXPECT_NEAR(sum[1], centre[1], 1e-12) << d;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace straightest
