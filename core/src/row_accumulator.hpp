@@ -63,13 +63,18 @@ template <class Row>
 CsrMatrix buildRows(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dropZeros, const Row& row) {
   const int32_t pieces = std::max(1, std::min(kBuildPieces, rows / kBuildPieceRows));
   auto pieceBegin = [&](int32_t p) { return static_cast<int32_t>(static_cast<int64_t>(rows) * p / pieces); };
+  // The pieces' arrays are reserved here, on the calling thread: a block a worker thread allocates
+  // comes from that thread's own malloc arena, which gives its pages back to the system when the
+  // block is freed, so every product faulted them in afresh (6000 faults a call at 1M, −20 % speed).
   std::vector<CsrMatrix> parts(pieces);
+  for (int32_t p = 0; p < pieces; ++p) {
+    parts[p].start.reserve(static_cast<size_t>(pieceBegin(p + 1) - pieceBegin(p)) + 1);
+    parts[p].col.reserve(expectedNonZeros / pieces);
+    parts[p].value.reserve(expectedNonZeros / pieces);
+  }
   detail::parallelFor(static_cast<std::size_t>(pieces), 1, [&](std::size_t p, std::size_t, std::size_t) {
     CsrMatrix& part = parts[p];
     const int32_t begin = pieceBegin(static_cast<int32_t>(p)), end = pieceBegin(static_cast<int32_t>(p) + 1);
-    part.start.reserve(static_cast<size_t>(end - begin) + 1);
-    part.col.reserve(expectedNonZeros / pieces);
-    part.value.reserve(expectedNonZeros / pieces);
     RowAccumulator acc(cols);
     for (int32_t r = begin; r < end; ++r) {
       row(r, acc);
