@@ -5,6 +5,9 @@
 // the closest 16- or 17-digit one. (std::to_chars for double would do it, but Emscripten 3.1.6's libc++
 // lacks it.) vertices keep the mesh's order, so `vt` k belongs to vertex k. With a uv per
 // face corner (a cut mesh's map) each distinct uv is one `vt`, in the order faces first use it.
+// Formatting is the writer's whole cost (up to three snprintf per number: ~3.5 s for a 1M-vertex map),
+// so runs of lines are formatted on all threads into their own strings and appended in order: the text
+// is the same for any thread count.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -13,17 +16,24 @@
 #include <initializer_list>
 #include <unordered_map>
 
+#include <fast_float/fast_float.h>
+
+#include "parallel_for.hpp"
 #include "straightest/mesh_io.hpp"
 
 namespace straightest {
 namespace {
 
-/// The shortest of %.15g, %.16g, %.17g that strtod reads back as x (the last always does).
+/// The shortest of %.15g, %.16g, %.17g that reads back as x (the last always does). Read back with
+/// fast_float, correctly rounded as strtod is, so the same choice.
 void appendNumber(std::string& out, double x) {
   char text[40];
   for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, x);
-    if (digits == 17 || !std::isfinite(x) || std::strtod(text, nullptr) == x) break;
+    const int length = std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (digits == 17 || !std::isfinite(x)) break;
+    double back = 0;
+    const auto read = fast_float::from_chars(text, text + length, back);
+    if (read.ec == std::errc() && back == x) break;
   }
   out += text;
 }
@@ -37,28 +47,59 @@ void appendLine(std::string& out, const char* keyword, std::initializer_list<dou
   out += '\n';
 }
 
+/// line(out, i) for i in [0, count), in order; runs of lines formatted on all threads.
+template <class Line>
+void appendLines(std::string& out, size_t count, const Line& line) {
+  constexpr size_t kLinesPerRun = 16384;
+  std::vector<std::string> runs(detail::chunkCount(count, kLinesPerRun));
+  detail::parallelFor(count, kLinesPerRun, [&](size_t run, size_t begin, size_t end) {
+    std::string& text = runs[run];
+    text.reserve((end - begin) * 48);
+    for (size_t i = begin; i < end; ++i) line(text, i);
+  });
+  size_t total = out.size();
+  for (const std::string& text : runs) total += text.size();
+  out.reserve(total);
+  for (std::string& text : runs) {
+    out += text;
+    std::string().swap(text);
+  }
+}
+
+void appendFace(std::string& out, const Triangle& t, const int32_t* vt) {
+  char line[160];
+  if (vt) std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", t[0] + 1, vt[0], t[1] + 1, vt[1], t[2] + 1, vt[2]);
+  else std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+  out += line;
+}
+
+void appendPositions(std::string& out, const TriMesh& mesh) {
+  const std::vector<Vec3>& positions = mesh.positions();
+  appendLines(out, positions.size(), [&](std::string& text, size_t i) {
+    appendLine(text, "v", {positions[i].x, positions[i].y, positions[i].z});
+  });
+}
+
 }  // namespace
 
 std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv) {
   std::string out = "# written by straightest\n";
-  char line[160];
-  for (const Vec3& p : mesh.positions()) appendLine(out, "v", {p.x, p.y, p.z});
+  appendPositions(out, mesh);
   if (uv)
-    for (const Vec2& t : *uv) appendLine(out, "vt", {t.x, t.y});
-  for (const Triangle& t : mesh.triangles()) {
-    if (uv)
-      std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1,
-                    t[2] + 1);
-    else std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
-    out += line;
-  }
+    appendLines(out, uv->size(), [&](std::string& text, size_t i) {
+      appendLine(text, "vt", {(*uv)[i].x, (*uv)[i].y});
+    });
+  appendLines(out, static_cast<size_t>(mesh.numFaces()), [&](std::string& text, size_t f) {
+    const Triangle& t = mesh.triangle(static_cast<int32_t>(f));
+    const int32_t vt[3] = {t[0] + 1, t[1] + 1, t[2] + 1};
+    appendFace(text, t, uv ? vt : nullptr);
+  });
   return out;
 }
 
 std::string writeObjWithCornerUv(const TriMesh& mesh, const std::vector<Vec2>& cornerUv) {
   std::string out = "# written by straightest (a vt per distinct corner uv: seams split)\n";
-  char line[160];
-  for (const Vec3& p : mesh.positions()) appendLine(out, "v", {p.x, p.y, p.z});
+  appendPositions(out, mesh);
   // Distinct by exact value (bit pattern, with +0 and −0 as one): the copies of a vertex on one side of
   // a seam carry the very same doubles, the two sides different ones.
   struct Key {
@@ -89,14 +130,9 @@ std::string writeObjWithCornerUv(const TriMesh& mesh, const std::vector<Vec2>& c
       vt[3 * f + k] = it->second;
     }
   }
-  for (size_t f = 0; f < nf; ++f) {
-    const Triangle& t = mesh.triangle(static_cast<int32_t>(f));
-    if (vt[3 * f] > 0)
-      std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", t[0] + 1, vt[3 * f], t[1] + 1, vt[3 * f + 1], t[2] + 1,
-                    vt[3 * f + 2]);
-    else std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
-    out += line;
-  }
+  appendLines(out, nf, [&](std::string& text, size_t f) {
+    appendFace(text, mesh.triangle(static_cast<int32_t>(f)), vt[3 * f] > 0 ? &vt[3 * f] : nullptr);
+  });
   return out;
 }
 

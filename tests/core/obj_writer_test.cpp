@@ -1,5 +1,5 @@
 // The OBJ writer: what it writes reads back as the same mesh, exactly; with uv, one `vt` per vertex
-// in vertex order and v/vt corners.
+// in vertex order and v/vt corners; the same text whatever the thread count.
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "straightest/mesh_io.hpp"
+#include "straightest/threads.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {
@@ -58,6 +59,27 @@ TEST(ObjWriter, WritesOneTextureCoordinatePerVertexAndVSlashVtCorners) {
   auto again = loadMesh(text, MeshFormat::Obj);
   ASSERT_TRUE(again.ok()) << again.error().message;
   expectSameMesh(mesh, again.value());
+}
+
+TEST(ObjWriter, WritesTheSameTextOnOneAndSeveralThreads) {
+  // 40k vertices and 80k faces: several runs of lines, formatted by different threads.
+  const TriMesh mesh = testing::flatGrid(200, testing::GridPattern::Jittered);
+  std::vector<Vec2> uv, cornerUv;
+  for (int32_t v = 0; v < mesh.numVertices(); ++v) uv.push_back({std::sin(0.37 * v), 1.0 / (v + 3)});
+  for (const Triangle& t : mesh.triangles())
+    for (int k = 0; k < 3; ++k) cornerUv.push_back(uv[t[k]]);
+  std::vector<std::string> texts;
+  for (int threads : {1, 3}) {
+    setThreadCount(threads);
+    texts.push_back(writeObj(mesh, &uv) + writeObjWithCornerUv(mesh, cornerUv));
+  }
+  setThreadCount(0);
+  EXPECT_EQ(texts[0], texts[1]);
+  const std::string plain = writeObj(mesh, &uv);
+  auto again = loadMesh(plain, MeshFormat::Obj);
+  ASSERT_TRUE(again.ok()) << again.error().message;
+  expectSameMesh(mesh, again.value());
+  EXPECT_EQ(countLinesStartingWith(plain, "vt "), uv.size());
 }
 
 TEST(ObjWriter, WritesTheShortestDigitsThatReadBackAsTheSameDouble) {
