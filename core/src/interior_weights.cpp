@@ -30,7 +30,7 @@ bool originBarycentric(const Vec2& a, const Vec2& b, const Vec2& c, double out[3
 struct RowScratch {
   std::vector<int32_t> ring;
   std::vector<Vec3> e;
-  std::vector<double> l, theta, w, psi;
+  std::vector<double> l, theta, w;
   std::vector<Vec2> q;
 };
 
@@ -39,7 +39,7 @@ struct RowScratch {
 bool rowWeights(const TriMesh& mesh, int32_t v, WeightKind kind, RowScratch& s) {
   std::vector<int32_t>& ring = s.ring;
   std::vector<Vec3>& e = s.e;
-  std::vector<double>&l = s.l, &theta = s.theta, &w = s.w, &psi = s.psi;
+  std::vector<double>&l = s.l, &theta = s.theta, &w = s.w;
   std::vector<Vec2>& q = s.q;
   // One ring in counter-clockwise order: neighbours k and k+1 span face(h_k).
   ring.clear();
@@ -83,41 +83,26 @@ bool rowWeights(const TriMesh& mesh, int32_t v, WeightKind kind, RowScratch& s) 
         }
         break;
       case WeightKind::ShapePreserving: {
-        // Geodesic polar map of the ring, then Floater's averaged barycentric coordinates: for each k,
-        // the segment (q_a, q_b) across the origin from q_k. Its triangle with q_k holds the origin,
-        // i.e. the direction opposite q_k lies in the segment's angular span; the polar angles grow
-        // with k, so one pointer that only moves forward finds every k's segment (O(d), not O(d²)
-        // barycentric tries). The segment just before it is tried first, as the scan in ring order
-        // (kept as the fallback when rounding puts the direction outside both) would meet it first
-        // when the direction passes through their shared corner.
+        // Geodesic polar map of the ring, then Floater's averaged barycentric coordinates.
         q.resize(d);
-        psi.resize(d);
-        double angle = 0;
+        double psi = 0;
         for (size_t k = 0; k < d; ++k) {
-          psi[k] = angle;
-          q[k] = Vec2{std::cos(angle), std::sin(angle)} * l[k];
-          angle += theta[k] * kTwoPi / thetaSum;
+          q[k] = Vec2{std::cos(psi), std::sin(psi)} * l[k];
+          psi += theta[k] * kTwoPi / thetaSum;
         }
-        // Polar angle of ring position i ≥ 0 counted on past d (one more turn per wrap).
-        auto unwrapped = [&](size_t i) { return psi[i % d] + kTwoPi * static_cast<double>(i / d); };
-        auto tryBarycentric = [&](size_t k, size_t a) {
-          const size_t b = next(a);
-          double mu[3];
-          if (!originBarycentric(q[k], q[a], q[b], mu)) return false;
-          if (!(mu[0] >= -1e-12 && mu[1] >= -1e-12 && mu[2] >= -1e-12)) return false;
-          w[k] += mu[0];
-          w[a] += mu[1];
-          w[b] += mu[2];
-          return true;
-        };
-        size_t at = 1;  // unwrapped ring position of the segment's first corner
         for (size_t k = 0; k < d && ok; ++k) {
-          const double opposite = psi[k] + kPi;
-          at = std::max(at, k + 1);
-          while (at + 2 < k + d && unwrapped(at + 1) <= opposite) ++at;
-          const size_t s = at - k;  // the segment's place in the ring scan below, 1 ≤ s ≤ d − 2
-          bool found = (s > 1 && tryBarycentric(k, (at - 1) % d)) || tryBarycentric(k, at % d);
-          for (size_t t = 1, a = next(k); t + 1 < d && !found; ++t, a = next(a)) found = tryBarycentric(k, a);
+          bool found = false;
+          for (size_t s = 1, a = next(k); s + 1 < d && !found; ++s, a = next(a)) {
+            const size_t b = next(a);  // the segment (q_a, q_b), a = k + s
+            double mu[3];
+            if (!originBarycentric(q[k], q[a], q[b], mu)) continue;
+            if (mu[0] >= -1e-12 && mu[1] >= -1e-12 && mu[2] >= -1e-12) {
+              w[k] += mu[0];
+              w[a] += mu[1];
+              w[b] += mu[2];
+              found = true;
+            }
+          }
           ok = found;
         }
         break;
