@@ -23,30 +23,24 @@ namespace straightest {
 namespace {
 
 /// The order of a level's Gauss–Seidel sweeps, fixed at setup from the matrix alone. The rows are cut
-/// into blocks of consecutive rows, how many depending only on the row count; a block's inner rows have
-/// every column inside the block, its border rows do not. A forward sweep relaxes the blocks' inner rows,
-/// block after block, then the border rows in ascending order; a backward sweep the exact reverse. No
-/// inner row reads another block, so the blocks run on all threads and the sweep is one and the same
-/// Gauss–Seidel sweep — the same bits — on any number of threads. The border rows, swept on one thread,
-/// are the few rows next to a cut (3 % at 1M on a height field; all of them only on a mesh whose
-/// neighbours are scattered across the numbering, where the sweep is the plain sequential one).
+/// into blocks (detail::rowPieces: fixed by the row count); a block's inner rows have every column
+/// inside the block, its border rows do not. A forward sweep relaxes the blocks' inner rows, block after
+/// block, then the border rows in ascending order; a backward sweep the exact reverse. No inner row reads
+/// another block, so the blocks run on all threads and the sweep is one and the same Gauss–Seidel sweep
+/// — the same bits — on any number of threads. The border rows, swept on one thread, are the few rows
+/// next to a cut (3 % at 1M on a height field; all of them only on a mesh whose neighbours are scattered
+/// across the numbering, where the sweep is the plain sequential one).
 struct SweepOrder {
   std::vector<int32_t> blockStart;   // every block's first row, then the row count
   std::vector<int32_t> border;       // the border rows, ascending
   std::vector<int32_t> blockBorder;  // every block's first entry in border, then border.size()
 };
 
-/// At most this many blocks, of at least this many rows: below, a block is too little work to hand to a
-/// thread, and each cut adds border rows.
-constexpr int32_t kSweepBlocks = 16, kSweepBlockMinRows = 16384;
-
 SweepOrder sweepOrder(const CsrMatrix& A) {
-  const int32_t n = A.rows;
-  const int32_t blocks = std::clamp(n / kSweepBlockMinRows, 1, kSweepBlocks);
   SweepOrder order;
-  for (int32_t k = 0; k <= blocks; ++k)
-    order.blockStart.push_back(static_cast<int32_t>(static_cast<int64_t>(n) * k / blocks));
-  for (int32_t k = 0; k < blocks; ++k) {
+  order.blockStart = detail::rowPieces(A.rows);
+  const size_t blocks = order.blockStart.size() - 1;
+  for (size_t k = 0; k < blocks; ++k) {
     order.blockBorder.push_back(static_cast<int32_t>(order.border.size()));
     const int32_t begin = order.blockStart[k], end = order.blockStart[k + 1];
     for (int32_t i = begin; i < end; ++i) {

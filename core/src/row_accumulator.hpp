@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "parallel_for.hpp"
+#include "row_chunks.hpp"
 #include "straightest/csr_matrix.hpp"
 
 namespace straightest {
@@ -30,8 +31,8 @@ class RowAccumulator {
   }
   /// Appends the row to m (dropping exact zeros when asked) and clears the accumulator. The row is
   /// compacted in place and appended as two ranges: growing m's arrays by resize() instead zero-filled
-  /// the new entries before they were overwritten, a call per row (in WebAssembly a loop: 7 % of a 1M
-  /// parameterization).
+  /// the new entries before they were overwritten, a call per row (in WebAssembly a call and a loop per
+  /// row: ~4 % of a 1M parameterization in Node).
   void flushInto(CsrMatrix& m, bool dropZeros) {
     int32_t kept = 0;
     for (int32_t k = 0; k < used_; ++k) {
@@ -53,30 +54,28 @@ class RowAccumulator {
 };
 
 /// The matrix whose row r is what row(r, acc) adds to the accumulator (rows × cols; exact zeros dropped
-/// when asked). The rows are cut into pieces that depend only on their count (at most kBuildPieces, of
-/// at least kBuildPieceRows rows), built on all threads, each with its own accumulator, into its own
-/// arrays, then copied after one another: entry for entry the matrix one pass over the rows gives, for
-/// any thread count. One accumulator per piece (not per chunk of rows) because each holds a slot per
-/// column. expectedNonZeros: a reservation for the whole matrix (0: none).
-inline constexpr int32_t kBuildPieces = 16, kBuildPieceRows = 16384;
+/// when asked). The rows are cut into detail::rowPieces (fixed by their count), built on all threads,
+/// each piece with its own accumulator into its own arrays, then copied after one another: entry for
+/// entry the matrix one pass over the rows gives, for any thread count. expectedNonZeros: a reservation
+/// for the whole matrix (0: none).
 template <class Row>
 CsrMatrix buildRows(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dropZeros, const Row& row) {
-  const int32_t pieces = std::max(1, std::min(kBuildPieces, rows / kBuildPieceRows));
-  auto pieceBegin = [&](int32_t p) { return static_cast<int32_t>(static_cast<int64_t>(rows) * p / pieces); };
+  const std::vector<int32_t> first = detail::rowPieces(rows);
+  const auto pieces = static_cast<int32_t>(first.size() - 1);
   // The pieces' arrays are reserved here, on the calling thread: a block a worker thread allocates
-  // comes from that thread's own malloc arena, which gives its pages back to the system when the
-  // block is freed, so every product faulted them in afresh (6000 faults a call at 1M, −20 % speed).
+  // comes from that thread's own malloc arena, which gives its pages back when the block is freed.
+  // With the reservation made by the workers, repeated multigrid setups at 1M on 2 threads faulted
+  // 1100–1500 times each in some repeats (the first one 5000–8600 times); now ~0 (the first ~1400).
   std::vector<CsrMatrix> parts(pieces);
   for (int32_t p = 0; p < pieces; ++p) {
-    parts[p].start.reserve(static_cast<size_t>(pieceBegin(p + 1) - pieceBegin(p)) + 1);
+    parts[p].start.reserve(static_cast<size_t>(first[p + 1] - first[p]) + 1);
     parts[p].col.reserve(expectedNonZeros / pieces);
     parts[p].value.reserve(expectedNonZeros / pieces);
   }
   detail::parallelFor(static_cast<std::size_t>(pieces), 1, [&](std::size_t p, std::size_t, std::size_t) {
     CsrMatrix& part = parts[p];
-    const int32_t begin = pieceBegin(static_cast<int32_t>(p)), end = pieceBegin(static_cast<int32_t>(p) + 1);
     RowAccumulator acc(cols);
-    for (int32_t r = begin; r < end; ++r) {
+    for (int32_t r = first[p]; r < first[p + 1]; ++r) {
       row(r, acc);
       acc.flushInto(part, dropZeros);
     }
