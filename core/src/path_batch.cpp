@@ -87,8 +87,13 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
   batch.directions.resize(n);
   // Targets in chunks: the per-target values go straight to their slots; the points of each chunk to
   // its own buffer, joined in target order at the end (the batch is the same for any thread count).
-  constexpr size_t kTargetsPerChunk = 8;  // small: progress moves by chunks
-  const size_t chunks = detail::chunkCount(n, kTargetsPerChunk);
+  // A chunk is a run of neighbouring targets, whose paths cross nearly the same faces: the longer the
+  // runs a thread walks, the more of the mesh it finds in its own caches. About 32 chunks (at least 8
+  // targets each, at most 1024) keep progress and cancellation fine-grained and the threads' shares
+  // even. On the 1M height field's 3996 boundary targets, 2 threads took 49 ms with runs of 8 and
+  // 35–43 ms with runs of 125–128 (1 thread: 63–92 ms either way).
+  const size_t targetsPerChunk = std::clamp<size_t>((n + 31) / 32, 8, 1024);
+  const size_t chunks = detail::chunkCount(n, targetsPerChunk);
   std::vector<std::vector<Vec3>> chunkPoints(chunks), chunkOtherPoints(chunks);
   std::vector<int64_t> pointCount(n), otherPointCount(n);
   record(options.timings, "prepare", time.lap());
@@ -123,7 +128,7 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
     std::lock_guard<std::mutex> lock(idleMutex);
     idle.push_back(std::move(tracer));
   };
-  if (!detail::parallelFor(n, kTargetsPerChunk, traceChunk, progress, "trace"))
+  if (!detail::parallelFor(n, targetsPerChunk, traceChunk, progress, "trace"))
     return cancelledError("straightest paths");
   auto join = [n](std::vector<std::vector<Vec3>>& parts, const std::vector<int64_t>& counts, std::vector<Vec3>& points,
                   std::vector<int64_t>& offsets) {
