@@ -149,6 +149,38 @@ void expectFallbackRadiiNearTheGeodesic(int n, Place place, Exact exact) {
   EXPECT_LT(worst, graphWorst);  // closer than the edge graph it replaces
 }
 
+/// boundaryChords and boundaryEars look only at the loop's rings; these are the scans over every halfedge
+/// and face they must agree with (the same entries in the same order).
+TEST(BoundaryChordsAndEars, FromTheLoopsRingsAreWhatAScanOfTheWholeMeshFinds) {
+  for (const double radius : {3.2, 4.5, 5.6, 6.9}) {
+    const TriMesh flat = testing::gridOfCells(15, [radius](int i, int j) {
+      return std::hypot(i + 0.5 - 7, j + 0.5 - 7) < radius;
+    });
+    const std::vector<int32_t>& loop = flat.boundaryLoops().at(0);
+    std::vector<int32_t> position(flat.numVertices(), -1);
+    for (size_t i = 0; i < loop.size(); ++i) position[loop[i]] = static_cast<int32_t>(i);
+    std::vector<std::array<int32_t, 2>> chords;
+    for (int32_t h = 0; h < 3 * flat.numFaces(); ++h) {
+      const int32_t t = flat.twin(h);
+      if (t < 0 || t < h) continue;
+      const int32_t a = position[flat.tail(h)], b = position[flat.head(h)];
+      if (a >= 0 && b >= 0) chords.push_back({a, b});
+    }
+    std::vector<std::array<int32_t, 3>> faceEars;
+    for (int32_t f = 0; f < flat.numFaces(); ++f) {
+      const Triangle& t = flat.triangle(f);
+      if (position[t[0]] >= 0 && position[t[1]] >= 0 && position[t[2]] >= 0)
+        faceEars.push_back({position[t[0]], position[t[1]], position[t[2]]});
+    }
+    ASSERT_GE(chords.size(), 4u) << "radius " << radius << ": the staircase must have chords";
+    ASSERT_GE(faceEars.size(), 4u) << "radius " << radius << ": the staircase must have ears";
+    EXPECT_EQ(boundaryChords(flat, loop), chords) << "radius " << radius;
+    const std::vector<BoundaryEar> ears = boundaryEars(flat, loop);
+    ASSERT_GE(ears.size(), faceEars.size());
+    for (size_t k = 0; k < faceEars.size(); ++k) EXPECT_EQ(ears[k].corners, faceEars[k]) << "radius " << radius;
+  }
+}
+
 TEST(FallbackRadii, AreWithinTheHeatMethodsAccuracyOfTheGeodesicOnACylinder) {
   // A quarter of a cylinder of radius 2 (angle φ = 0.05 i), height 0.1 j: geodesics are helices, of length
   // √((2 Δφ)² + Δz²).
