@@ -75,24 +75,11 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
   });
   double rNorm2[2] = {rSums[0], rSums[1]};
   double r0Norm2[2] = {rNorm2[0], rNorm2[1]};
+  // r0·r for the coming iteration: computed in the pass that writes r (here r = r0, so it is |r|²), not in
+  // a pass of its own that would read both vectors again.
+  double r0DotR[2] = {rNorm2[0], rNorm2[1]};
   double rho[2] = {1, 1}, alpha[2] = {1, 1}, omega[2] = {1, 1};
   bool active[2];
-  // Σ u_i w_i per column.
-  auto dot2 = [n](const std::vector<double>& u, const std::vector<double>& w, double out[2]) {
-    const double* uv = u.data();
-    const double* wv = w.data();
-    const auto sums = sumRowChunks<2>(n, [uv, wv](size_t begin, size_t end, double* sum) {
-      double d0 = 0, d1 = 0;
-      for (size_t i = 2 * begin; i < 2 * end; i += 2) {
-        d0 += uv[i] * wv[i];
-        d1 += uv[i + 1] * wv[i + 1];
-      }
-      sum[0] = d0;
-      sum[1] = d1;
-    });
-    out[0] = sums[0];
-    out[1] = sums[1];
-  };
   auto relative = [&](int c) { return bNorm2[c] > 0 ? std::sqrt(rNorm2[c] / bNorm2[c]) : 0.0; };
   auto update = [&]() {
     for (int c = 0; c < 2; ++c) {
@@ -111,9 +98,8 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
     // p = r (finite, unlike whatever its stale recurrences would give).
     double beta[2], rhoOld[2] = {rho[0], rho[1]};
     double dot[2];
-    dot2(r0, r, dot);
     for (int c = 0; c < 2; ++c) {
-      rho[c] = dot[c];
+      rho[c] = r0DotR[c];
       if (active[c] && std::abs(rho[c]) < eps2 * r0Norm2[c]) {
         // r has become orthogonal to r0: restart this column's recurrence from its true residual.
         A.multiply2(x.data(), t.data());
@@ -136,7 +122,7 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
     });
     M(p.data(), y.data());
     {
-      // v = A y and r0·v in one pass over the rows (the same chunks and order as a separate dot2).
+      // v = A y and r0·v in one pass over the rows (the same chunks and order as a separate sum).
       const auto sums = productSums<2>(A, y, v, [&](size_t i, double* sum) {
         sum[0] += r0[i] * v[i];
         sum[1] += r0[i + 1] * v[i + 1];
@@ -193,8 +179,8 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
     // Inactive columns (converged before or at the half step) get coefficients 0: x and r stay.
     const double a0 = active[0] ? alpha[0] : 0.0, a1 = active[1] ? alpha[1] : 0.0;
     const double o0 = active[0] ? omega[0] : 0.0, o1 = active[1] ? omega[1] : 0.0;
-    const auto newSums = sumRowChunks<2>(n, [&](size_t begin, size_t end, double* sum) {
-      double n0 = 0, n1 = 0;
+    const auto newSums = sumRowChunks<4>(n, [&](size_t begin, size_t end, double* sum) {
+      double n0 = 0, n1 = 0, d0 = 0, d1 = 0;
       for (size_t i = 2 * begin; i < 2 * end; i += 2) {
         x[i] += a0 * y[i] + o0 * z[i];
         x[i + 1] += a1 * y[i + 1] + o1 * z[i + 1];
@@ -202,12 +188,18 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
         r[i + 1] = s[i + 1] - o1 * t[i + 1];
         n0 += r[i] * r[i];
         n1 += r[i + 1] * r[i + 1];
+        d0 += r0[i] * r[i];
+        d1 += r0[i + 1] * r[i + 1];
       }
       sum[0] = n0;
       sum[1] = n1;
+      sum[2] = d0;
+      sum[3] = d1;
     });
     rNorm2[0] = newSums[0];
     rNorm2[1] = newSums[1];
+    r0DotR[0] = newSums[2];
+    r0DotR[1] = newSums[3];
     for (int c = 0; c < 2; ++c) {
       if (!active[c]) continue;
       if (!std::isfinite(rNorm2[c]) || !std::isfinite(alpha[c]) || !std::isfinite(omega[c])) return stats;
