@@ -88,11 +88,12 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
   // Targets in chunks: the per-target values go straight to their slots; the points of each chunk to
   // its own buffer, joined in target order at the end (the batch is the same for any thread count).
   // A chunk is a run of neighbouring targets, whose paths cross nearly the same faces: the longer the
-  // runs a thread walks, the more of the mesh it finds in its own caches. About 32 chunks (at least 8
-  // targets each, at most 1024) keep progress and cancellation fine-grained and the threads' shares
-  // even. On the 1M height field's 3996 boundary targets, 2 threads took 49 ms with runs of 8 and
-  // 35–43 ms with runs of 125–128 (1 thread: 63–92 ms either way).
-  const size_t targetsPerChunk = std::clamp<size_t>((n + 31) / 32, 8, 1024);
+  // runs a thread walks, the more of the mesh it finds in its own caches. About 16 chunks (at least 8
+  // targets each; at most 1024, a few milliseconds of walking, so that progress moves and a cancel is
+  // heard) keep the threads' shares even. On the 1M height field's 3996 boundary targets (1 thread:
+  // 64–68 ms), 2 threads took 49–54 ms in runs of 8 targets, and in 128 / 64 / 32 / 16 / 8 / 4 chunks
+  // 39 / 37–38 / 36–37 / 35 / 36 / 35–36 ms.
+  const size_t targetsPerChunk = std::clamp<size_t>((n + 15) / 16, 8, 1024);
   const size_t chunks = detail::chunkCount(n, targetsPerChunk);
   std::vector<std::vector<Vec3>> chunkPoints(chunks), chunkOtherPoints(chunks);
   std::vector<int64_t> pointCount(n), otherPointCount(n);
