@@ -47,12 +47,43 @@ CsrMatrix transpose(const CsrMatrix& m) {
   return t;
 }
 
+namespace {
+
+/// Row r of a · b into acc: the entries of b's rows, scaled by a's row r, in a's and then b's order.
+inline void addRowProduct(const CsrMatrix& a, const CsrMatrix& b, int32_t r, RowAccumulator& acc) {
+  for (int32_t k = a.start[r]; k < a.start[r + 1]; ++k) {
+    const int32_t j = a.col[k];
+    const double v = a.value[k];
+    for (int32_t kk = b.start[j]; kk < b.start[j + 1]; ++kk) acc.add(b.col[kk], v * b.value[kk]);
+  }
+}
+
+}  // namespace
+
 CsrMatrix multiply(const CsrMatrix& a, const CsrMatrix& b, size_t expectedNonZeros) {
-  return buildRows(a.rows, b.cols, expectedNonZeros, false, [&a, &b](int32_t r, RowAccumulator& acc) {
+  return buildRows(a.rows, b.cols, expectedNonZeros, false,
+                   [&a, &b](int32_t r, RowAccumulator& acc) { addRowProduct(a, b, r, acc); });
+}
+
+RowPieces multiplyInPieces(const CsrMatrix& a, const CsrMatrix& b, size_t expectedNonZeros) {
+  return buildRowPieces(a.rows, b.cols, expectedNonZeros, false,
+                        [&a, &b](int32_t r, RowAccumulator& acc) { addRowProduct(a, b, r, acc); });
+}
+
+CsrMatrix multiply(const CsrMatrix& a, const RowPieces& b, size_t expectedNonZeros) {
+  const std::vector<int32_t>& first = b.first;
+  return buildRows(a.rows, b.cols, expectedNonZeros, false, [&](int32_t r, RowAccumulator& acc) {
+    // The part that holds row j: found by stepping from the previous entry's, as a's rows usually
+    // list nearby columns in ascending order (a restriction's rows are sorted).
+    size_t p = 0;
     for (int32_t k = a.start[r]; k < a.start[r + 1]; ++k) {
       const int32_t j = a.col[k];
+      while (j >= first[p + 1]) ++p;
+      while (j < first[p]) --p;
+      const CsrMatrix& part = b.parts[p];
+      const int32_t local = j - first[p];
       const double v = a.value[k];
-      for (int32_t kk = b.start[j]; kk < b.start[j + 1]; ++kk) acc.add(b.col[kk], v * b.value[kk]);
+      for (int32_t kk = part.start[local]; kk < part.start[local + 1]; ++kk) acc.add(part.col[kk], v * part.value[kk]);
     }
   });
 }

@@ -53,21 +53,35 @@ class RowAccumulator {
   int32_t used_ = 0;
 };
 
-/// The matrix whose row r is what row(r, acc) adds to the accumulator (rows × cols; exact zeros dropped
-/// when asked). The rows are cut into detail::rowPieces (fixed by their count), built on all threads,
-/// each piece with its own accumulator into its own arrays, then copied after one another: entry for
-/// entry the matrix one pass over the rows gives, for any thread count. expectedNonZeros: a reservation
-/// for the whole matrix (0: none).
+/// A matrix's rows built in pieces (detail::rowPieces), before they are copied after one another: part p
+/// holds rows first[p] … first[p + 1] − 1, numbered from 0 in it. A product whose right factor is used
+/// only by rows can read the pieces where they are (multiply below) instead of a copy of them all.
+struct RowPieces {
+  int32_t rows = 0, cols = 0;
+  std::vector<int32_t> first;  // every part's first row, then rows
+  std::vector<CsrMatrix> parts;
+};
+
+/// The rows × cols matrix whose row r is what row(r, acc) adds to the accumulator (exact zeros dropped when
+/// asked), in pieces: detail::rowPieces (fixed by the row count) built on all threads, each with its own
+/// accumulator into its own arrays. expectedNonZeros: a reservation for the whole matrix (0: none).
 template <class Row>
-CsrMatrix buildRows(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dropZeros, const Row& row) {
-  const std::vector<int32_t> first = detail::rowPieces(rows);
+RowPieces buildRowPieces(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dropZeros, const Row& row) {
+  RowPieces out;
+  out.rows = rows;
+  out.cols = cols;
+  out.first = detail::rowPieces(rows);
+  const std::vector<int32_t>& first = out.first;
   const auto pieces = static_cast<int32_t>(first.size() - 1);
   // The pieces' arrays are reserved here, on the calling thread: a block a worker thread allocates
   // comes from that thread's own malloc arena, which gives its pages back when the block is freed.
   // With the reservation made by the workers, repeated multigrid setups at 1M on 2 threads faulted
   // 1100–1500 times each in some repeats (the first one 5000–8600 times); now ~0 (the first ~1400).
-  std::vector<CsrMatrix> parts(pieces);
+  std::vector<CsrMatrix>& parts = out.parts;
+  parts.resize(pieces);
   for (int32_t p = 0; p < pieces; ++p) {
+    parts[p].rows = first[p + 1] - first[p];
+    parts[p].cols = cols;
     parts[p].start.reserve(static_cast<size_t>(first[p + 1] - first[p]) + 1);
     parts[p].col.reserve(expectedNonZeros / pieces);
     parts[p].value.reserve(expectedNonZeros / pieces);
@@ -80,23 +94,28 @@ CsrMatrix buildRows(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dr
       acc.flushInto(part, dropZeros);
     }
   });
-  if (pieces == 1) {
-    CsrMatrix m = std::move(parts[0]);
-    m.rows = rows;
-    m.cols = cols;
+  return out;
+}
+
+/// The pieces as one matrix: entry for entry the matrix one pass over the rows gives, for any thread
+/// count. One piece after another, each freed once copied (reserve and insert: no zero-fill of entries
+/// that are overwritten at once).
+inline CsrMatrix joinRowPieces(RowPieces pieces) {
+  if (pieces.parts.size() == 1) {
+    CsrMatrix m = std::move(pieces.parts[0]);
+    m.rows = pieces.rows;
+    m.cols = pieces.cols;
     return m;
   }
-  // One piece after another, each freed once copied (reserve and insert: no zero-fill of entries that
-  // are overwritten at once).
   size_t total = 0;
-  for (const CsrMatrix& part : parts) total += part.col.size();
+  for (const CsrMatrix& part : pieces.parts) total += part.col.size();
   CsrMatrix m;
-  m.rows = rows;
-  m.cols = cols;
-  m.start.reserve(static_cast<size_t>(rows) + 1);
+  m.rows = pieces.rows;
+  m.cols = pieces.cols;
+  m.start.reserve(static_cast<size_t>(pieces.rows) + 1);
   m.col.reserve(total);
   m.value.reserve(total);
-  for (CsrMatrix& part : parts) {
+  for (CsrMatrix& part : pieces.parts) {
     const auto shift = static_cast<int32_t>(m.col.size());
     for (size_t r = 1; r < part.start.size(); ++r) m.start.push_back(part.start[r] + shift);
     m.col.insert(m.col.end(), part.col.begin(), part.col.end());
@@ -105,5 +124,18 @@ CsrMatrix buildRows(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dr
   }
   return m;
 }
+
+/// The matrix whose row r is what row(r, acc) adds to the accumulator: buildRowPieces, joined.
+template <class Row>
+CsrMatrix buildRows(int32_t rows, int32_t cols, size_t expectedNonZeros, bool dropZeros, const Row& row) {
+  return joinRowPieces(buildRowPieces(rows, cols, expectedNonZeros, dropZeros, row));
+}
+
+/// a · b with b left in its pieces (defined in csr_matrix.cpp): the same entries, in the same order, as
+/// multiply(a, joinRowPieces(b)).
+CsrMatrix multiply(const CsrMatrix& a, const RowPieces& b, size_t expectedNonZeros);
+
+/// a · b by rows, left in its pieces (defined in csr_matrix.cpp).
+RowPieces multiplyInPieces(const CsrMatrix& a, const CsrMatrix& b, size_t expectedNonZeros);
 
 }  // namespace straightest

@@ -6,6 +6,7 @@
 #include <set>
 #include <utility>
 
+#include "../../core/src/row_accumulator.hpp"
 #include "solver_systems.hpp"
 #include "straightest/csr_matrix.hpp"
 #include "straightest/samples.hpp"
@@ -106,6 +107,28 @@ TEST(CsrMatrix, ProductBuiltInPiecesOnSeveralThreadsIsTheRowByRowProduct) {
         EXPECT_EQ(c.value[c.start[r] + k], alone.value[k]) << "row " << r;
       }
     }
+  }
+  setThreadCount(0);
+}
+
+TEST(CsrMatrix, ProductWithARightFactorLeftInItsPiecesIsTheProductWithItJoined) {
+  // The multigrid's Pᵀ (A P) reads A P in the pieces it was built in; it must be the same matrix, entry
+  // for entry, as the product with the pieces joined. 40k rows: several pieces; the left factor's rows
+  // are unsorted and repeat columns, so the step from one entry's piece to the next goes both ways.
+  const CsrMatrix x = randomMatrix(40000, 2000, 7), y = randomMatrix(2000, 3000, 8);
+  const CsrMatrix a = randomMatrix(3000, 40000, 9);
+  for (int threads : {1, 3}) {
+    setThreadCount(threads);
+    const RowPieces pieces = multiplyInPieces(x, y, 0);
+    ASSERT_GE(pieces.parts.size(), 2u);
+    const CsrMatrix fromPieces = multiply(a, pieces, 0);
+    const CsrMatrix fromJoined = multiply(a, multiply(x, y));
+    ASSERT_TRUE(wellFormed(fromPieces));
+    EXPECT_EQ(fromPieces.rows, fromJoined.rows);
+    EXPECT_EQ(fromPieces.cols, fromJoined.cols);
+    EXPECT_EQ(fromPieces.start, fromJoined.start);
+    EXPECT_EQ(fromPieces.col, fromJoined.col);
+    EXPECT_EQ(fromPieces.value, fromJoined.value);
   }
   setThreadCount(0);
 }
