@@ -60,7 +60,10 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
   for (int c = 0; c < 2; ++c)
     if (bNorm2[c] == 0)
       for (size_t i = c; i < m; i += 2) x[i] = 0;  // the exact solution
-  std::vector<double> r(m), r0(m), p(m, 0.0), v(m, 0.0), y(m), z(m), s(m), t(m);
+  // s = r − α v is written over r (r is not needed once s is known, and r = s − ω t is then formed in
+  // place): seven vectors instead of eight, 16 bytes per row less memory to touch.
+  std::vector<double> r(m), r0(m), p(m, 0.0), v(m, 0.0), y(m), z(m), t(m);
+  std::vector<double>& s = r;
   A.multiply2(x.data(), t.data());
   const auto rSums = sumRowChunks<2>(n, [&](size_t begin, size_t end, double* sum) {
     double n0 = 0, n1 = 0;
@@ -137,8 +140,8 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
       const auto sums = sumRowChunks<2>(n, [&](size_t begin, size_t end, double* sum) {
         double n0 = 0, n1 = 0;
         for (size_t i = 2 * begin; i < 2 * end; i += 2) {
-          s[i] = r[i] - al0 * v[i];
-          s[i + 1] = r[i + 1] - al1 * v[i + 1];
+          s[i] -= al0 * v[i];
+          s[i + 1] -= al1 * v[i + 1];
           n0 += s[i] * s[i];
           n1 += s[i + 1] * s[i + 1];
         }
@@ -152,10 +155,7 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
     // often saves the last iteration's second V-cycle.
     for (int c = 0; c < 2; ++c) {
       if (!active[c] || !std::isfinite(alpha[c]) || sNorm2[c] > tolerance * tolerance * bNorm2[c]) continue;
-      for (size_t i = c; i < m; i += 2) {
-        x[i] += alpha[c] * y[i];
-        r[i] = s[i];
-      }
+      for (size_t i = c; i < m; i += 2) x[i] += alpha[c] * y[i];  // r already holds s
       rNorm2[c] = sNorm2[c];
       stats.relativeResidual[c] = relative(c);
       active[c] = false;
@@ -184,8 +184,8 @@ Expected<KrylovStats> solveTwoColumns(const CsrMatrix& A, const TwoColumnPrecond
       for (size_t i = 2 * begin; i < 2 * end; i += 2) {
         x[i] += a0 * y[i] + o0 * z[i];
         x[i + 1] += a1 * y[i + 1] + o1 * z[i + 1];
-        r[i] = s[i] - o0 * t[i];
-        r[i + 1] = s[i + 1] - o1 * t[i + 1];
+        r[i] -= o0 * t[i];  // r holds s
+        r[i + 1] -= o1 * t[i + 1];
         n0 += r[i] * r[i];
         n1 += r[i + 1] * r[i + 1];
         d0 += r0[i] * r[i];
