@@ -18,6 +18,7 @@
 
 #include "huge_pages.hpp"
 #include "json_writer.hpp"
+#include "memory_warmup.hpp"
 #include "straightest/enum_names.hpp"
 #include "straightest/exact_geodesic.hpp"
 #include "straightest/geodesic_distance.hpp"
@@ -474,7 +475,10 @@ int main(int argc, char** argv) {
   setThreadCount(o.threads);
   Expected<int> exitCode = guarded([&]() -> Expected<int> {
     const Stopwatch load;
+    std::optional<cli::MemoryWarmup> warmup;
+    if (o.command == "param") warmup.emplace(cli::parameterizationBytes(o.mesh));
     auto mesh = openMesh(o);
+    warmup.reset();
     const double loadMs = load.ms();
     if (!mesh) return fail(o, mesh.error());
     if (o.command == "paths") return runPaths(o, mesh.value(), loadMs);
