@@ -21,9 +21,10 @@ namespace straightest::cli {
 
 /// A lower estimate of the heap a measured-boundary parameterization of `mesh` takes, made before the mesh
 /// is read (0: none). The call grows the heap by ~315 bytes per vertex (the 1M height field: 314 MB);
-/// heightfield:N has N² vertices; an OBJ, OFF or PLY file has at least one vertex per ~300 bytes (OBJ with
-/// texture coordinates and normals ~250, plain OBJ and OFF ~80, binary PLY ~40), so ~1.05 × its size is
-/// not above what the call takes. Other files and the samples get none.
+/// heightfield:N has N² vertices. An OBJ, OFF or PLY file is taken to hold a vertex per ≤ 300 bytes: the 1M
+/// OBJ the CLI writes (texture coordinates included) holds one per 189, the plain 1M OBJ and OFF one
+/// per 84 and 82, and binary PLY stores less per vertex than text. So ~1.05 × the file's size stays below
+/// what the call takes. Other files (an ASCII STL takes far more bytes per vertex) and the samples get none.
 inline std::size_t parameterizationBytes(const std::string& mesh) {
   const std::string field = "heightfield:";
   double bytes = 0;

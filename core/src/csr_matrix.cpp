@@ -49,13 +49,14 @@ CsrMatrix transpose(const CsrMatrix& m) {
 
 namespace {
 
+/// v times row j of m, into acc.
+inline void addScaledRow(const CsrMatrix& m, int32_t j, double v, RowAccumulator& acc) {
+  for (int32_t k = m.start[j]; k < m.start[j + 1]; ++k) acc.add(m.col[k], v * m.value[k]);
+}
+
 /// Row r of a · b into acc: the entries of b's rows, scaled by a's row r, in a's and then b's order.
 inline void addRowProduct(const CsrMatrix& a, const CsrMatrix& b, int32_t r, RowAccumulator& acc) {
-  for (int32_t k = a.start[r]; k < a.start[r + 1]; ++k) {
-    const int32_t j = a.col[k];
-    const double v = a.value[k];
-    for (int32_t kk = b.start[j]; kk < b.start[j + 1]; ++kk) acc.add(b.col[kk], v * b.value[kk]);
-  }
+  for (int32_t k = a.start[r]; k < a.start[r + 1]; ++k) addScaledRow(b, a.col[k], a.value[k], acc);
 }
 
 }  // namespace
@@ -80,10 +81,7 @@ CsrMatrix multiply(const CsrMatrix& a, const RowPieces& b, size_t expectedNonZer
       const int32_t j = a.col[k];
       while (j >= first[p + 1]) ++p;
       while (j < first[p]) --p;
-      const CsrMatrix& part = b.parts[p];
-      const int32_t local = j - first[p];
-      const double v = a.value[k];
-      for (int32_t kk = part.start[local]; kk < part.start[local + 1]; ++kk) acc.add(part.col[kk], v * part.value[kk]);
+      addScaledRow(b.parts[p], j - first[p], a.value[k], acc);
     }
   });
 }
