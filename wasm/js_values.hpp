@@ -81,7 +81,7 @@ class JsWriter {
   void nothing(const char* name) { out_.set(name, val::null()); }
   void counts(const char* name, const std::vector<int64_t>& xs);
   void texts(const char* name, const std::vector<std::string>& xs) { out_.set(name, stringArray(xs)); }
-  void textColumn(const char* name, const std::vector<std::string>& xs) { texts(name, xs); }
+  void textColumn(const char* name, const std::vector<std::string>& xs);  // one text per item (few distinct)
   void points(const char* name, const std::vector<SurfacePoint>& ps);
   template <class Fill>
   void object(const char* name, Fill&& fill) {

@@ -30,12 +30,14 @@ test('on a flat grid every boundary path is reached at its Euclidean length', ()
   mesh.delete();
 });
 
-test('face points are valid sources and targets', () => {
+test('face and edge points are valid sources and targets, and the targets come back as given', () => {
   const mesh = st.sample('cap');
-  const r = mesh.straightestPaths({ source: { face: 0, bary: [0.2, 0.3, 0.5] }, targets: [{ face: 100, bary: [1 / 3, 1 / 3, 1 / 3] }, 50] });
-  assert.equal(r.count, 2);
-  assert.deepEqual(r.statuses, ['reached', 'reached']);
-  assert.ok(r.lengths[0] > 0 && r.lengths[1] > 0);
+  const targets = [{ face: 100, bary: [1 / 3, 1 / 3, 1 / 3] }, 50, { halfedge: 30, t: 0.25 }];
+  const r = mesh.straightestPaths({ source: { face: 0, bary: [0.2, 0.3, 0.5] }, targets });
+  assert.equal(r.count, 3);
+  assert.deepEqual(r.statuses, ['reached', 'reached', 'reached']);
+  assert.deepEqual(r.targets, [targets[0], { vertex: 50 }, targets[2]]);
+  assert.ok(r.lengths[0] > 0 && r.lengths[1] > 0 && r.lengths[2] > 0);
   mesh.delete();
 });
 
