@@ -8,6 +8,7 @@
 #include <malloc.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "js_values.hpp"
@@ -22,6 +23,7 @@
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
 #include "straightest/threads.hpp"
+#include "straightest/warm_up.hpp"
 
 using emscripten::val;
 using namespace straightest;
@@ -311,8 +313,9 @@ Expected<val> meshResult(Expected<TriMesh>&& mesh) {
 
 /// `bytes` is a Uint8Array (index.js's toBytes). It is copied once, from the JS array straight into
 /// the module's memory (a std::string parameter copies twice: into Embind's transfer buffer, then into
-/// the string), and read in place from there.
-val loadMeshBytes(const val& bytes, const std::string& formatName, const val& options) {
+/// the string), and read in place from there. With `warmUp`, the parse and build run while another
+/// thread warms up for the first call (warm_up.hpp; the threaded module only).
+val loadMeshBytes(const val& bytes, const std::string& formatName, const val& options, bool warmUp) {
   return respond([&]() -> Expected<val> {
     auto format = parseMeshFormat(formatName);
     if (!format) return format.error();
@@ -321,15 +324,30 @@ val loadMeshBytes(const val& bytes, const std::string& formatName, const val& op
     // Nothing allocates between making the view and filling it, so the view stays valid (growing the
     // memory would detach it).
     val(emscripten::typed_memory_view(size, reinterpret_cast<unsigned char*>(content.get()))).call<void>("set", bytes);
-    return meshResult(loadMesh(std::string_view(content.get(), size), format.value(), limitsFrom(options)));
+    const std::string_view text(content.get(), size);
+    WarmUp what;
+    if (warmUp) what = WarmUp{0, text, format.value(), true};
+    std::optional<Expected<TriMesh>> mesh;
+    loadWhileWarmingUp(what, [&] { mesh = loadMesh(text, format.value(), limitsFrom(options)); });
+    return meshResult(std::move(*mesh));
   });
 }
 
-val meshFromArrays(const val& positions, const val& indices, const val& options) {
+val meshFromArrays(const val& positions, const val& indices, const val& options, bool warmUp) {
   return respond([&]() -> Expected<val> {
-    const auto xyz = emscripten::convertJSArrayToNumberVector<double>(positions);
-    const auto idx = emscripten::convertJSArrayToNumberVector<double>(indices);
-    return meshResult(meshFromFlatArrays(xyz, idx, limitsFrom(options)));
+    // The vertex count, for the warm-up's estimate only (the conversion below checks the arrays).
+    const val length = positions.isNull() || positions.isUndefined() ? val(0) : val(positions["length"]);
+    const double count = length.isNumber() ? length.as<double>() / 3 : 0;
+    const auto vertices = count >= 1 && count < 1e12 ? static_cast<int64_t>(count) : int64_t{0};
+    WarmUp what;
+    if (warmUp) what = WarmUp{parameterizationHeapBytes(vertices), {}, MeshFormat::Auto, true};
+    std::optional<Expected<TriMesh>> mesh;
+    loadWhileWarmingUp(what, [&] {
+      const auto xyz = emscripten::convertJSArrayToNumberVector<double>(positions);
+      const auto idx = emscripten::convertJSArrayToNumberVector<double>(indices);
+      mesh = meshFromFlatArrays(xyz, idx, limitsFrom(options));
+    });
+    return meshResult(std::move(*mesh));
   });
 }
 

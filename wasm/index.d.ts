@@ -522,6 +522,14 @@ export class Straightest {
    * Assignable from 1 up to the count the module was loaded with; other values throw 'invalid_argument'.
    */
   threads: number;
+  /**
+   * Whether loadMesh and meshFromArrays warm up for the first call on a spare thread while they parse and
+   * build (the threaded module with 2 or more threads): they touch the memory a parameterization of the
+   * mesh will take, estimated from its size, and the first time run a small sample so the engine
+   * optimizes the hot code. Never slows a load by more than a step; changes no result. Default true;
+   * a value that is not a boolean throws a TypeError.
+   */
+  warmUp: boolean;
   /** Bytes of WASM memory reserved (grows, never shrinks). */
   readonly memoryBytes: number;
   /** Bytes currently allocated inside WASM memory. */
@@ -558,6 +566,8 @@ export interface CreateOptions {
    * single-threaded one elsewhere; 1 always loads the single-threaded one. Results do not depend on it.
    */
   threads?: number;
+  /** The initial value of Straightest.warmUp (default true). */
+  warmUp?: boolean;
   /** URL of straightest-core.wasm when it is not served next to the module; loads the single-threaded module. */
   wasmUrl?: string | URL;
   /** Emscripten's locateFile hook (name: 'straightest-core.wasm' or 'straightest-core-threads.wasm'). */

@@ -227,12 +227,28 @@ export class Straightest {
   #module;
   #names;
   #loadedThreads; // the threads the module was started for: its workers
+  #warmUp = true;
 
-  constructor(token, module) {
+  constructor(token, module, { warmUp = true } = {}) {
     if (token !== internal) throw new TypeError('Straightest has no public constructor: use await createStraightest()');
     this.#module = module;
     this.#names = module.nameLists();
     this.#loadedThreads = module.threadCount();
+    this.warmUp = warmUp;
+  }
+
+  /**
+   * Whether loadMesh and meshFromArrays use a spare thread, while they parse and build, to make the
+   * first call on the mesh run like a repeat: they touch the memory a parameterization of the mesh
+   * will take (an estimate from its size; the module's memory does not shrink) and, the first time,
+   * run a small sample so the engine optimizes the hot code. The threaded module only (with at least 2
+   * threads); it never makes a load slower than one step of it, and changes no result. Default true.
+   */
+  get warmUp() { return this.#warmUp; }
+
+  set warmUp(on) {
+    if (typeof on !== 'boolean') throw new TypeError('warmUp must be true or false');
+    this.#warmUp = on;
   }
 
   /** The trace statuses, in the core's order: 'reached' is the only success. */
@@ -270,12 +286,12 @@ export class Straightest {
 
   /** Parses an OBJ, OFF, PLY or STL file (PLY and STL ascii or binary) given as bytes (Uint8Array/ArrayBuffer) or text. */
   loadMesh(data, format = 'auto', limits = {}) {
-    return new Mesh(internal, unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), limits)).mesh);
+    return new Mesh(internal, unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), limits, this.#warmUp)).mesh);
   }
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
   meshFromArrays(positions, indices, limits = {}) {
-    return new Mesh(internal, unwrap(this.#module.meshFromArrays(positions, indices, limits)).mesh);
+    return new Mesh(internal, unwrap(this.#module.meshFromArrays(positions, indices, limits, this.#warmUp)).mesh);
   }
 
   /** Names of the built-in sample meshes. */
@@ -322,5 +338,5 @@ export class Straightest {
  * came back.
  */
 export async function createStraightest(options = {}) {
-  return new Straightest(internal, await startModule(options));
+  return new Straightest(internal, await startModule(options), options);
 }

@@ -4,7 +4,7 @@
 //
 // Protocol (every request has an `id`; exactly one final reply echoes it; 'progress' may come before):
 //   → { id, type: 'init', options }                      ← { id, type: 'result', value: names }
-//        options: createStraightest's (threads, wasmUrl, wasmBinary); the worker's own default otherwise;
+//        options: createStraightest's (threads, wasmUrl, wasmBinary, warmUp); the worker's own default otherwise;
 //        names: the module's name lists ({ sampleNames, boundaryKinds, weightKinds, … }, see NAME_LISTS)
 //        and `threads` (the threads the module runs on)
 //   → { id, type: 'module', method, args }                ← { id, type: 'result', value }

@@ -47,7 +47,7 @@ function defaultWorker() {
 /**
  * Starts the worker. options: `createWorker` (() => a module Worker running the package's
  * wasm/worker-entry.js, for bundlers that do not bundle `new Worker(new URL(…))` themselves; called
- * again after each cancel), plus createStraightest's `threads` / `wasmUrl` / `wasmBinary`, handed to the
+ * again after each cancel), plus createStraightest's `threads` / `wasmUrl` / `wasmBinary` / `warmUp`, handed to the
  * worker (the threaded module runs there when the worker is cross-origin isolated).
  */
 export async function createStraightestWorker(options = {}) {

@@ -32,8 +32,6 @@ bool looksBinary(std::string_view bytes) {
   return false;
 }
 
-MeshFormat detectTextFormat(std::string_view bytes);
-
 /// UTF-16 text: a byte-order mark, or ASCII with a NUL after (or before) each character.
 bool looksUtf16(std::string_view bytes) {
   if (bytes.size() >= 2 && ((bytes[0] == '\xFF' && bytes[1] == '\xFE') || (bytes[0] == '\xFE' && bytes[1] == '\xFF')))
@@ -48,13 +46,6 @@ bool looksUtf16(std::string_view bytes) {
     if (pattern) return true;
   }
   return false;
-}
-
-/// The binary formats by their signatures, then OFF by its keyword, otherwise OBJ.
-MeshFormat detectFormat(std::string_view bytes) {
-  if (looksLikePly(bytes)) return MeshFormat::Ply;
-  if (looksLikeBinaryStl(bytes) || looksLikeAsciiStl(bytes)) return MeshFormat::Stl;
-  return detectTextFormat(bytes);
 }
 
 /// OFF when the first token (after comments and blank lines) is an OFF keyword, otherwise OBJ.
@@ -72,6 +63,13 @@ MeshFormat detectTextFormat(std::string_view bytes) {
 }
 
 }  // namespace
+
+/// The binary formats by their signatures, then OFF by its keyword, otherwise OBJ.
+MeshFormat detectMeshFormat(std::string_view bytes) {
+  if (looksLikePly(bytes)) return MeshFormat::Ply;
+  if (looksLikeBinaryStl(bytes) || looksLikeAsciiStl(bytes)) return MeshFormat::Stl;
+  return detectTextFormat(bytes);
+}
 
 Expected<MeshFormat> parseMeshFormat(std::string_view name) {
   const std::string n = lower(name);
@@ -94,7 +92,7 @@ MeshFormat meshFormatFromFileName(std::string_view name) {
 
 Expected<PolygonSoup> parsePolygonSoup(std::string_view bytes, MeshFormat format, const BuildLimits& limits) {
   if (bytes.empty()) return Error{ErrorCode::Empty, "file is empty"};
-  if (format == MeshFormat::Auto) format = detectFormat(bytes);
+  if (format == MeshFormat::Auto) format = detectMeshFormat(bytes);
   if (format == MeshFormat::Ply) return readPly(bytes, limits);
   if (format == MeshFormat::Stl) return readStl(bytes, limits);
   if (looksUtf16(bytes)) return Error{ErrorCode::UnsupportedFormat, "UTF-16 text is not supported: save as UTF-8"};

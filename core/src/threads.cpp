@@ -267,5 +267,44 @@ bool parallelFor(std::size_t count, std::size_t grain, const Body& body, const P
 #endif
 }
 
+void runAlongside(const std::function<void(const std::atomic<bool>& stop)>& background,
+                  const std::function<void()>& foreground) {
+#if STRAIGHTEST_HAS_THREADS
+  if (threadCount() < 2 || ThreadPool::insideLoop()) return foreground();
+  ThreadPool& workers = pool();
+  std::unique_lock<std::mutex> busy(workers.busy, std::try_to_lock);
+  if (!busy.owns_lock()) return foreground();
+  workers.resize(threadCount() - 1);
+  std::atomic<bool> stop{false};
+  const Body body = [&](std::size_t, std::size_t, std::size_t) {
+    try {
+      background(stop);
+    } catch (...) {  // an aid only: its failure must not fail the caller's work
+    }
+  };
+  Job job;  // one chunk, which only a worker takes: the caller never calls runOne
+  job.count = job.grain = job.chunks = 1;
+  job.body = &body;
+  workers.start(job);
+  auto join = [&] {
+    stop = true;
+    job.stop = true;  // not taken yet: nobody will
+    ThreadPool::insideLoop() = false;
+    workers.finish(job, [] {});
+  };
+  ThreadPool::insideLoop() = true;  // foreground's own loops run serially: the pool is taken
+  try {
+    foreground();
+  } catch (...) {
+    join();
+    throw;
+  }
+  join();
+#else
+  (void)background;
+  foreground();
+#endif
+}
+
 }  // namespace detail
 }  // namespace straightest

@@ -1,14 +1,17 @@
 // The threaded loops (threads.hpp): traces to many targets, interior weights, stretch metrics and a
 // whole parameterization give bit-identical results with 1, 2 and 4 threads; progress is monotone and
 // reported on the calling thread only; a cancelled threaded trace returns Cancelled and leaves the pool
-// usable.
+// usable; runAlongside runs one background task beside the caller, and a load's warm-up built on it
+// changes nothing.
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstring>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -19,11 +22,13 @@
 
 #include "straightest/geodesic_distance.hpp"
 #include "straightest/interior_weights.hpp"
+#include "straightest/mesh_io.hpp"
 #include "straightest/parameterize.hpp"
 #include "straightest/samples.hpp"
 #include "straightest/straightest_path.hpp"
 #include "straightest/texture_stretch.hpp"
 #include "straightest/threads.hpp"
+#include "straightest/warm_up.hpp"
 
 namespace straightest {
 namespace {
@@ -320,6 +325,105 @@ TEST(Threads, CancelFromAnotherThreadStopsAThreadedTrace) {
   ASSERT_FALSE(batch.ok());
   EXPECT_EQ(batch.error().code, ErrorCode::Cancelled);
   EXPECT_EQ(calls, 2);  // no call after the one that said stop
+}
+
+/// runAlongside: background(stop) on a pool worker while the caller runs foreground.
+TEST(Threads, RunAlongsideRunsTheBackgroundOnAWorkerUntilTheForegroundReturns) {
+  if (!kThreads) GTEST_SKIP() << "no threads in this build";
+  ThreadCountScope scope(2);
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> started{false}, sawStop{false}, returned{false};
+  std::thread::id backgroundThread;
+  detail::runAlongside(
+      [&](const std::atomic<bool>& stop) {
+        backgroundThread = std::this_thread::get_id();
+        started = true;
+        while (!stop) std::this_thread::yield();
+        sawStop = true;
+        returned = true;
+      },
+      [&] {
+        // Wait until the worker has taken the background (a background not started by the end never runs).
+        for (int i = 0; i < 5000 && !started; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        EXPECT_FALSE(sawStop.load());  // it runs as long as the foreground does
+      });
+  ASSERT_TRUE(started.load());
+  EXPECT_TRUE(returned.load());  // joined before runAlongside returned
+  EXPECT_TRUE(sawStop.load());
+  EXPECT_NE(backgroundThread, caller);
+  // The pool is free again: a loop after it runs on both threads.
+  std::atomic<int> chunks{0};
+  EXPECT_TRUE(detail::parallelFor(64, 1, [&](size_t, size_t, size_t) { ++chunks; }));
+  EXPECT_EQ(chunks.load(), 64);
+}
+
+TEST(Threads, RunAlongsideOnOneThreadRunsOnlyTheForeground) {
+  ThreadCountScope scope(1);
+  bool foreground = false, background = false;
+  detail::runAlongside([&](const std::atomic<bool>&) { background = true; }, [&] { foreground = true; });
+  EXPECT_TRUE(foreground);
+  EXPECT_FALSE(background);
+}
+
+TEST(Threads, RunAlongsidePropagatesForegroundExceptionsAfterTheBackgroundStopsAndDropsBackgroundOnes) {
+  if (!kThreads) GTEST_SKIP() << "no threads in this build";
+  ThreadCountScope scope(2);
+  std::atomic<bool> started{false}, stopped{false};
+  auto waitForStart = [&] {
+    for (int i = 0; i < 5000 && !started; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  };
+  EXPECT_THROW(detail::runAlongside(
+                   [&](const std::atomic<bool>& stop) {
+                     started = true;
+                     while (!stop) std::this_thread::yield();
+                     stopped = true;
+                   },
+                   [&] {
+                     waitForStart();
+                     throw std::runtime_error("load failed");
+                   }),
+               std::runtime_error);
+  EXPECT_TRUE(stopped.load());
+  started = false;
+  bool foreground = false;
+  EXPECT_NO_THROW(detail::runAlongside(
+      [&](const std::atomic<bool>&) {
+        started = true;
+        throw std::runtime_error("warm-up failed");
+      },
+      [&] {
+        waitForStart();
+        foreground = true;
+      }));
+  EXPECT_TRUE(foreground);
+}
+
+/// The warm-up of a load (warm_up.hpp) runs beside it and changes nothing the mesh gives afterwards.
+TEST(Threads, LoadWhileWarmingUpLoadsTheSameMeshAndTheNextParameterizationIsBitIdentical) {
+  const TriMesh reference = makeHeightField(60);
+  ParamOptions options;
+  const auto before = parameterize(reference, options);
+  ASSERT_TRUE(before);
+  for (int threads : {1, 2}) {
+    ThreadCountScope scope(threads);
+    std::optional<TriMesh> mesh;
+    loadWhileWarmingUp(WarmUp{std::size_t{64} << 20, {}, MeshFormat::Auto, true}, [&] { mesh = makeHeightField(60); });
+    ASSERT_TRUE(mesh.has_value());
+    EXPECT_TRUE(sameBits(mesh->positions(), reference.positions()));
+    const auto after = parameterize(*mesh, options);
+    ASSERT_TRUE(after);
+    EXPECT_TRUE(sameBits(after.value().uv, before.value().uv)) << threads << " threads";
+    // A file's warm-up (its vertices counted on the worker, while the same bytes are parsed).
+    const std::string obj = writeObj(reference);
+    std::optional<Expected<TriMesh>> loaded;
+    loadWhileWarmingUp(WarmUp{0, obj, MeshFormat::Obj, true}, [&] { loaded = loadMesh(obj, MeshFormat::Obj); });
+    ASSERT_TRUE(loaded.has_value() && *loaded);
+    const auto plain = loadMesh(obj, MeshFormat::Obj);
+    ASSERT_TRUE(plain);
+    EXPECT_TRUE(sameBits(loaded->value().positions(), plain.value().positions()));
+    EXPECT_TRUE(
+        sameBits(parameterize(loaded->value(), options).value().uv, parameterize(plain.value(), options).value().uv));
+  }
 }
 
 }  // namespace

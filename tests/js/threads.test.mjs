@@ -152,3 +152,41 @@ test('the threaded module cancels from a progress callback, reports monotone pro
     mesh.delete();
   }
 });
+
+test('loads warm up for the first call on a spare thread without changing a result or keeping memory', async () => {
+  assert.equal((await createStraightest({ threads: 1 })).warmUp, true); // the default (a no-op on one thread)
+  const cold = await createStraightest({ threads: 2, warmUp: false });
+  assert.equal(cold.warmUp, false);
+  assert.throws(() => { cold.warmUp = 'yes'; }, TypeError);
+  const reference = measuredMap(cold);
+  const st = await createStraightest({ threads: 2 });
+  assert.equal(st.warmUp, true);
+  // An OFF file of 70 000 vertices: the heap the warm-up touches (~17 MB) is above its 16 MB floor.
+  const n = 265;
+  const lines = [`OFF\n${n * n} ${2 * (n - 1) * (n - 1)} 0`];
+  for (let j = 0; j < n; ++j) for (let i = 0; i < n; ++i) lines.push(`${i / (n - 1)} ${j / (n - 1)} ${0.2 * Math.sin(i / 20) * Math.cos(j / 30)}`);
+  for (let j = 0; j + 1 < n; ++j) {
+    for (let i = 0; i + 1 < n; ++i) {
+      const a = j * n + i;
+      lines.push(`3 ${a} ${a + 1} ${a + n + 1}`, `3 ${a} ${a + n + 1} ${a + n}`);
+    }
+  }
+  const off = `${lines.join('\n')}\n`;
+  // A warmed-up load of the map above (the first call also starts the pool's worker and its stack).
+  assertSameBits(measuredMap(st).uv, reference.uv, 'uv after a warmed-up load');
+  const heapBefore = st.heapUsedBytes;
+  const maps = [true, false].map((warmUp) => {
+    st.warmUp = warmUp;
+    const mesh = st.loadMesh(off, 'off');
+    try {
+      assert.equal(mesh.info().vertices, n * n);
+      return mesh.parameterize({ boundary: 'measured' });
+    } finally {
+      mesh.delete();
+    }
+  });
+  assert.equal(maps[0].bijective, true);
+  assertSameBits(maps[0].uv, maps[1].uv, 'uv with and without the warm-up');
+  // Everything the warm-ups took was given back (the module keeps its grown memory, not allocations).
+  assert.equal(st.heapUsedBytes, heapBefore);
+});

@@ -36,6 +36,9 @@ struct PolygonSoup {
   std::vector<std::string> notes;    // what the reader changed (e.g. STL triangles dropped by welding)
 };
 
+/// The format of a file's bytes as Auto reads them (see parsePolygonSoup).
+MeshFormat detectMeshFormat(std::string_view bytes);
+
 /// Parses bytes. Auto detects PLY by its magic line, binary STL by its size (84 + 50 per triangle),
 /// ASCII STL by `solid`, OFF by its header keyword, and otherwise reads OBJ; UTF-16 text and other
 /// binary data are rejected as such.
