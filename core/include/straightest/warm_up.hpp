@@ -33,6 +33,9 @@ std::size_t parameterizationHeapBytes(int64_t vertices);
 int64_t verticesInFile(std::string_view bytes, MeshFormat format);
 
 /// Calls load() on the calling thread while a worker of the thread pool does what `warmUp` says. The
+/// touched block is allocated on the worker: that serves WebAssembly's single heap; glibc would give it
+/// the worker's own arena, which is why the CLI allocates its block on its main thread instead
+/// (core/cli/memory_warmup.hpp). The
 /// warm-up stops when load returns (within ~1 MB of touching or one progress step of the sample), so it
 /// never delays the load by more than that. With one thread, or while the pool is taken, only load runs.
 void loadWhileWarmingUp(const WarmUp& warmUp, const std::function<void()>& load);
