@@ -10,6 +10,7 @@ import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { availableParallelism, cpus } from 'node:os';
 import { fileURLToPath } from 'node:url';
+import { mergeSections } from './doc-sections.mjs';
 
 const repeats = Number(process.env.REPEATS ?? 3);
 
@@ -109,11 +110,7 @@ ${table}
   process.stdout.write(`\n${section}`);
   const doc = fileURLToPath(new URL('../docs/BENCHMARKS.md', import.meta.url));
   if (!process.env.NO_WRITE && existsSync(doc)) {
-    const text = readFileSync(doc, 'utf8');
-    const at = text.indexOf('## Threads in WebAssembly');
-    const end = at < 0 ? -1 : text.indexOf('\n## ', at + 1);
-    const updated = at < 0 ? `${text.trimEnd()}\n\n${section}` : `${text.slice(0, at)}${section}${end < 0 ? '' : text.slice(end)}`;
-    writeFileSync(doc, updated);
+    writeFileSync(doc, mergeSections(readFileSync(doc, 'utf8'), section));
     process.stdout.write('wrote docs/BENCHMARKS.md\n');
   }
 }

@@ -1,12 +1,13 @@
 // npm run bench (after scripts/bench.sh built everything): runs every stage on every mesh natively and
 // as WASM under Node (median of several runs each, one process per mesh and target so peak memory is
-// per mesh), adds the CGAL comparison if scripts/bench-cgal.sh produced it, and writes
-// docs/BENCHMARKS.md. Every number in that file comes from this run.
+// per mesh), adds the CGAL comparison if scripts/bench-cgal.sh produced it, and writes its sections of
+// docs/BENCHMARKS.md (the file's head and the sections of these names; the others are kept).
 import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { mergeSections } from './doc-sections.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const repeats = Number(process.env.REPEATS ?? 3);
@@ -222,8 +223,13 @@ if (existsSync(cgalFile)) {
   const version = cgal.match(/^## straightest vs CGAL (\S+)/)?.[1] ?? '5.5';
   text += `\n## Against CGAL ${version} (scripts/bench-cgal.sh, native)\n\n${cgal.replace(/^## .*\n\n?/, '')}\n`;
 } else {
-  text += '\n## Against CGAL 5.5\n\nNot run (scripts/bench-cgal.sh did not produce build/bench/cgal.md).\n';
+  process.stdout.write('scripts/bench-cgal.sh did not produce build/bench/cgal.md: the CGAL section stays as it was\n');
 }
+// The sections written here replace theirs in docs/BENCHMARKS.md; the others (bench-wasm-threads.mjs's,
+// and those measured by hand) stay where they are.
 mkdirSync(join(root, 'docs'), { recursive: true });
-writeFileSync(join(root, 'docs/BENCHMARKS.md'), text);
+const doc = join(root, 'docs/BENCHMARKS.md');
+const cgalTitle = (title) => title.startsWith('Against CGAL');
+const sameSection = (a, b) => a === b || (cgalTitle(a) && cgalTitle(b));
+writeFileSync(doc, existsSync(doc) ? mergeSections(readFileSync(doc, 'utf8'), text, sameSection) : text);
 process.stdout.write('wrote docs/BENCHMARKS.md\n');
