@@ -325,28 +325,26 @@ val loadMeshBytes(const val& bytes, const std::string& formatName, const val& op
     // memory would detach it).
     val(emscripten::typed_memory_view(size, reinterpret_cast<unsigned char*>(content.get()))).call<void>("set", bytes);
     const std::string_view text(content.get(), size);
+    const BuildLimits limits = limitsFrom(options);  // read from JS before the warm-up starts
     WarmUp what;
     if (warmUp) what = WarmUp{0, text, format.value(), true};
     std::optional<Expected<TriMesh>> mesh;
-    loadWhileWarmingUp(what, [&] { mesh = loadMesh(text, format.value(), limitsFrom(options)); });
+    loadWhileWarmingUp(what, [&] { mesh = loadMesh(text, format.value(), limits); });
     return meshResult(std::move(*mesh));
   });
 }
 
 val meshFromArrays(const val& positions, const val& indices, const val& options, bool warmUp) {
   return respond([&]() -> Expected<val> {
-    // The vertex count, for the warm-up's estimate only (the conversion below checks the arrays).
-    const val length = positions.isNull() || positions.isUndefined() ? val(0) : val(positions["length"]);
-    const double count = length.isNumber() ? length.as<double>() / 3 : 0;
-    const auto vertices = count >= 1 && count < 1e12 ? static_cast<int64_t>(count) : int64_t{0};
+    // Converted before the warm-up starts: a JavaScript exception thrown here must not unwind through it.
+    const auto xyz = emscripten::convertJSArrayToNumberVector<double>(positions);
+    const auto idx = emscripten::convertJSArrayToNumberVector<double>(indices);
+    const BuildLimits limits = limitsFrom(options);
     WarmUp what;
-    if (warmUp) what = WarmUp{parameterizationHeapBytes(vertices), {}, MeshFormat::Auto, true};
+    if (warmUp)
+      what = WarmUp{parameterizationHeapBytes(static_cast<int64_t>(xyz.size() / 3)), {}, MeshFormat::Auto, true};
     std::optional<Expected<TriMesh>> mesh;
-    loadWhileWarmingUp(what, [&] {
-      const auto xyz = emscripten::convertJSArrayToNumberVector<double>(positions);
-      const auto idx = emscripten::convertJSArrayToNumberVector<double>(indices);
-      mesh = meshFromFlatArrays(xyz, idx, limitsFrom(options));
-    });
+    loadWhileWarmingUp(what, [&] { mesh = meshFromFlatArrays(xyz, idx, limits); });
     return meshResult(std::move(*mesh));
   });
 }

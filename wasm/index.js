@@ -18,6 +18,9 @@ function unwrap(result, hint = undefined) {
   return result;
 }
 
+/** An array, a typed array or another object with a numeric length (what the index.d.ts calls ArrayLike). */
+const isArrayLike = (a) => a !== null && typeof a === 'object' && typeof a.length === 'number';
+
 function toBytes(data) {
   if (typeof data === 'string') return new TextEncoder().encode(data);
   if (data instanceof Uint8Array) return data;
@@ -291,6 +294,8 @@ export class Straightest {
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
   meshFromArrays(positions, indices, limits = {}) {
+    // Checked here: a JavaScript error thrown inside the module would unwind its C++ frames unfinished.
+    if (!isArrayLike(positions) || !isArrayLike(indices)) throw new TypeError('meshFromArrays expects positions and indices as arrays (or typed arrays) of numbers');
     return new Mesh(internal, unwrap(this.#module.meshFromArrays(positions, indices, limits, this.#warmUp)).mesh);
   }
 

@@ -84,6 +84,8 @@ test('bad arguments are Errors with messages', () => {
   assert.throws(() => st.loadMesh('v 0 0 0', 'stl'), /binary STL needs at least 84 bytes/);
   assert.throws(() => st.loadMesh(42), TypeError);
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0], [0, 1, 2]), /not a multiple of 3/);
+  for (const notArrays of [[null, [0, 1, 2]], [[0, 0, 0], undefined], ['0 0 0', [0]], [3, [0]]])
+    assert.throws(() => st.meshFromArrays(...notArrays), TypeError);
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 1.5]), /not a vertex index/);
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 2], { maxVertices: 2 }), (e) => e.category === 'too_large');
 });
