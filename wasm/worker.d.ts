@@ -86,7 +86,7 @@ export interface StraightestWorker {
 }
 
 /** createStraightestWorker's options: where the worker and the WebAssembly module come from. */
-export interface WorkerCreateOptions extends Pick<CreateOptions, 'threads' | 'wasmUrl' | 'wasmBinary'> {
+export interface WorkerCreateOptions extends Pick<CreateOptions, 'threads' | 'wasmUrl' | 'wasmBinary' | 'warmUp'> {
   /** Makes the module worker (running the package's wasm/worker-entry.js); called again after each cancel. */
   createWorker?: () => Worker;
 }
