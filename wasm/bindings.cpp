@@ -327,7 +327,7 @@ val loadMeshBytes(const val& bytes, const std::string& formatName, const val& op
     const std::string_view text(content.get(), size);
     const BuildLimits limits = limitsFrom(options);  // read from JS before the warm-up starts
     WarmUp what;
-    if (warmUp) what = WarmUp{0, text, format.value(), true};
+    if (warmUp) what = WarmUp{0, text, format.value(), true, limits.maxVertices};
     std::optional<Expected<TriMesh>> mesh;
     loadWhileWarmingUp(what, [&] { mesh = loadMesh(text, format.value(), limits); });
     return meshResult(std::move(*mesh));
@@ -342,7 +342,11 @@ val meshFromArrays(const val& positions, const val& indices, const val& options,
     const BuildLimits limits = limitsFrom(options);
     WarmUp what;
     if (warmUp)
-      what = WarmUp{parameterizationHeapBytes(static_cast<int64_t>(xyz.size() / 3)), {}, MeshFormat::Auto, true};
+      what = WarmUp{parameterizationHeapBytes(std::min(static_cast<int64_t>(xyz.size() / 3), limits.maxVertices)),
+                    {},
+                    MeshFormat::Auto,
+                    true,
+                    limits.maxVertices};
     std::optional<Expected<TriMesh>> mesh;
     loadWhileWarmingUp(what, [&] { mesh = meshFromFlatArrays(xyz, idx, limits); });
     return meshResult(std::move(*mesh));

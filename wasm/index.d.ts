@@ -525,9 +525,11 @@ export class Straightest {
   /**
    * Whether loadMesh and meshFromArrays warm up for the first call on a spare thread while they parse and
    * build (the threaded module with 2 or more threads): they touch the memory a parameterization of the
-   * mesh will take, estimated from its size, and the first time run a small sample so the engine
-   * optimizes the hot code. Never slows a load by more than a step; changes no result. Default true;
-   * a value that is not a boolean throws a TypeError.
+   * mesh will take, estimated from its size (at most maxVertices' worth and half of what the memory can
+   * still grow by), and until once it ran to the end a small sample so the engine optimizes the hot
+   * code. Never slows a load by more than a step; changes no result. The module's memory keeps the size
+   * the warm-up grew it to (WebAssembly memory never shrinks). Default true; a value that is not a
+   * boolean throws a TypeError.
    */
   warmUp: boolean;
   /** Bytes of WASM memory reserved (grows, never shrinks). */
@@ -566,7 +568,7 @@ export interface CreateOptions {
    * single-threaded one elsewhere; 1 always loads the single-threaded one. Results do not depend on it.
    */
   threads?: number;
-  /** The initial value of Straightest.warmUp (default true). */
+  /** The initial value of Straightest.warmUp (default true; not a boolean: createStraightest rejects with a TypeError). */
   warmUp?: boolean;
   /** URL of straightest-core.wasm when it is not served next to the module; loads the single-threaded module. */
   wasmUrl?: string | URL;

@@ -21,6 +21,20 @@ function unwrap(result, hint = undefined) {
 /** An array, a typed array or another object with a numeric length (what the index.d.ts calls ArrayLike). */
 const isArrayLike = (a) => a !== null && typeof a === 'object' && typeof a.length === 'number';
 
+/**
+ * The numbers of an array-like as the module copies them without a JavaScript call that can throw: a
+ * typed array of numbers as it is, anything else converted here (a BigInt, a Symbol or a throwing
+ * getter fails in JavaScript, not inside the module's C++ frames).
+ */
+const numberArray = (a) => (ArrayBuffer.isView(a) && !(a instanceof DataView)
+  && !(a instanceof BigInt64Array) && !(a instanceof BigUint64Array) ? a : Float64Array.from(a));
+
+/** The warmUp option, or a TypeError (checked before a module is started for it). */
+function checkedWarmUp(on) {
+  if (typeof on !== 'boolean') throw new TypeError('warmUp must be true or false');
+  return on;
+}
+
 function toBytes(data) {
   if (typeof data === 'string') return new TextEncoder().encode(data);
   if (data instanceof Uint8Array) return data;
@@ -243,16 +257,14 @@ export class Straightest {
   /**
    * Whether loadMesh and meshFromArrays use a spare thread, while they parse and build, to make the
    * first call on the mesh run like a repeat: they touch the memory a parameterization of the mesh
-   * will take (an estimate from its size; the module's memory does not shrink) and, the first time,
-   * run a small sample so the engine optimizes the hot code. The threaded module only (with at least 2
+   * will take (an estimate from its size, capped by maxVertices and by half of what the memory can
+   * still grow by; the module's memory does not shrink) and, until once it ran to the end, run a small
+   * sample so the engine optimizes the hot code. The threaded module only (with at least 2
    * threads); it never makes a load slower than one step of it, and changes no result. Default true.
    */
   get warmUp() { return this.#warmUp; }
 
-  set warmUp(on) {
-    if (typeof on !== 'boolean') throw new TypeError('warmUp must be true or false');
-    this.#warmUp = on;
-  }
+  set warmUp(on) { this.#warmUp = checkedWarmUp(on); }
 
   /** The trace statuses, in the core's order: 'reached' is the only success. */
   get traceStatuses() { return [...this.#names.traceStatuses]; }
@@ -296,7 +308,8 @@ export class Straightest {
   meshFromArrays(positions, indices, limits = {}) {
     // Checked here: a JavaScript error thrown inside the module would unwind its C++ frames unfinished.
     if (!isArrayLike(positions) || !isArrayLike(indices)) throw new TypeError('meshFromArrays expects positions and indices as arrays (or typed arrays) of numbers');
-    return new Mesh(internal, unwrap(this.#module.meshFromArrays(positions, indices, limits, this.#warmUp)).mesh);
+    const [xyz, triangles] = [numberArray(positions), numberArray(indices)];
+    return new Mesh(internal, unwrap(this.#module.meshFromArrays(xyz, triangles, limits, this.#warmUp)).mesh);
   }
 
   /** Names of the built-in sample meshes. */
@@ -343,5 +356,6 @@ export class Straightest {
  * came back.
  */
 export async function createStraightest(options = {}) {
+  checkedWarmUp(options?.warmUp ?? true); // before the module and its workers start
   return new Straightest(internal, await startModule(options), options);
 }

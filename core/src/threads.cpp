@@ -274,7 +274,12 @@ void runAlongside(const std::function<void(const std::atomic<bool>& stop)>& back
   ThreadPool& workers = pool();
   std::unique_lock<std::mutex> busy(workers.busy, std::try_to_lock);
   if (!busy.owns_lock()) return foreground();
-  workers.resize(threadCount() - 1);
+  try {
+    workers.resize(threadCount() - 1);
+  } catch (...) {  // no worker could be started (std::system_error): the aid is dropped, the work runs alone
+    busy.unlock();
+    return foreground();
+  }
   std::atomic<bool> stop{false};
   const Body body = [&](std::size_t, std::size_t, std::size_t) {
     try {

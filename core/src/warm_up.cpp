@@ -6,7 +6,12 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
+
+#if defined(__EMSCRIPTEN__)
+#include <emscripten/heap.h>
+#endif
 
 #include "parallel_for.hpp"
 #include "straightest/parameterize.hpp"
@@ -52,6 +57,16 @@ int64_t wholeNumber(std::string_view token) {
   return value;
 }
 
+/// How far the heap can still grow: in WebAssembly up to the module's maximum memory; natively no bound
+/// is known (an allocation that cannot be served fails, and then nothing is touched).
+std::size_t heapHeadroom() {
+#if defined(__EMSCRIPTEN__)
+  return emscripten_get_heap_max() - emscripten_get_heap_size();
+#else
+  return std::numeric_limits<std::size_t>::max();
+#endif
+}
+
 std::atomic<bool> codeWarmed{false};  // the sample ran to the end once (one warm-up at a time: the pool)
 
 }  // namespace
@@ -64,14 +79,22 @@ std::size_t parameterizationHeapBytes(int64_t vertices) {
 #else
   constexpr double kBytesPerVertex = 310;
 #endif
-  return vertices > 0 ? static_cast<std::size_t>(kBytesPerVertex * static_cast<double>(vertices)) : 0;
+  if (vertices <= 0) return 0;
+  const double bytes = kBytesPerVertex * static_cast<double>(vertices);
+  constexpr auto kMost = std::numeric_limits<std::size_t>::max();
+  return bytes >= static_cast<double>(kMost) ? kMost : static_cast<std::size_t>(bytes);  // 32-bit size_t: saturate
 }
 
-int64_t verticesInFile(std::string_view bytes, MeshFormat format) {
+int64_t verticesInFile(std::string_view bytes, MeshFormat format, const std::atomic<bool>* stop) {
   if (format == MeshFormat::Auto) format = detectMeshFormat(bytes);
+  auto stopped = [&] { return stop && stop->load(std::memory_order_relaxed); };
   int64_t count = 0;
   if (format == MeshFormat::Obj) {
-    for (size_t at = 0; at < bytes.size();) {
+    for (size_t at = 0, look = 0; at < bytes.size();) {
+      if (at >= look) {  // a look at stop every megabyte: a failed load must not wait for the count
+        if (stopped()) return 0;
+        look = at + kTouchStep;
+      }
       const char* p = text::skipInlineSpace(bytes.data() + at, bytes.data() + bytes.size());
       const char* end = bytes.data() + bytes.size();
       if (end - p >= 2 && p[0] == 'v' && text::isInlineSpace(p[1])) ++count;
@@ -82,7 +105,8 @@ int64_t verticesInFile(std::string_view bytes, MeshFormat format) {
   }
   // OFF: the first number after the keyword; PLY: "element vertex N" before end_header.
   bool keyword = false;
-  text::forEachLine(bytes, [&](int64_t, std::string_view line) {
+  text::forEachLine(bytes, [&](int64_t lineNumber, std::string_view line) {
+    if (lineNumber % 4096 == 0 && stopped()) return false;  // a PLY header without end_header: whole file
     text::Tokens t;
     text::tokenize(text::stripComment(line), t, 3);
     const size_t n = std::min<size_t>(t.count, 3);
@@ -102,7 +126,7 @@ int64_t verticesInFile(std::string_view bytes, MeshFormat format) {
     }
     return true;
   });
-  return count;
+  return stopped() ? 0 : count;
 }
 
 void loadWhileWarmingUp(const WarmUp& warmUp, const std::function<void()>& load) {
@@ -114,8 +138,16 @@ void loadWhileWarmingUp(const WarmUp& warmUp, const std::function<void()>& load)
         // Code first: a sample round takes tens of milliseconds, and until the hot functions are
         // optimized every loop of the real call runs slower.
         if (code && exerciseHotLoops(stop)) codeWarmed = true;
-        const std::size_t heap = file ? parameterizationHeapBytes(verticesInFile(warmUp.meshFile, warmUp.format))
-                                      : warmUp.heapBytes;
+        if (stop) return;
+        std::size_t heap = warmUp.heapBytes;
+        if (file) {
+          // A header can claim any count: no more vertices than the limit and than the bytes can hold
+          // (3 per vertex at the least: binary PLY with one-byte coordinates).
+          const int64_t claimed = verticesInFile(warmUp.meshFile, warmUp.format, &stop);
+          heap = parameterizationHeapBytes(
+              std::min({claimed, warmUp.maxVertices, static_cast<int64_t>(warmUp.meshFile.size() / 3)}));
+        }
+        heap = std::min(heap, heapHeadroom() / 2);  // never what would make the load run out of memory
         if (heap >= kMinHeapBytes && !stop) touchHeap(heap, stop);
       },
       load);

@@ -426,5 +426,22 @@ TEST(Threads, LoadWhileWarmingUpLoadsTheSameMeshAndTheNextParameterizationIsBitI
   }
 }
 
+/// A load that fails returns its own error beside the warm-up, whatever the header claims (the count is
+/// capped by the limit and by what the bytes can hold, so nothing near the claim is allocated).
+TEST(Threads, ALoadThatFailsWhileWarmingUpReturnsItsError) {
+  const std::string lying = "OFF\n2000000000 1 0\n0 0 0\n";
+  BuildLimits limits;
+  limits.maxVertices = 1000;
+  for (int threads : {1, 2}) {
+    ThreadCountScope scope(threads);
+    std::optional<Expected<TriMesh>> loaded;
+    loadWhileWarmingUp(WarmUp{0, lying, MeshFormat::Off, true, limits.maxVertices},
+                       [&] { loaded = loadMesh(lying, MeshFormat::Off, limits); });
+    ASSERT_TRUE(loaded.has_value());
+    ASSERT_FALSE(*loaded);
+    EXPECT_EQ(loaded->error().code, loadMesh(lying, MeshFormat::Off, limits).error().code) << threads << " threads";
+  }
+}
+
 }  // namespace
 }  // namespace straightest

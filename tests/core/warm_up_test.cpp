@@ -1,5 +1,7 @@
 // The warm-up's estimates (warm_up.hpp): how much heap a load touches ahead of the first
 // parameterization, from a vertex count or from the vertices a mesh file holds.
+#include <atomic>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,21 @@ TEST(WarmUpEstimates, TheHeapGrowsWithTheVertexCountAndNothingIsTouchedForNoVert
   EXPECT_GE(million, std::size_t{200} << 20);
   EXPECT_LE(million, std::size_t{314} << 20);
   EXPECT_EQ(parameterizationHeapBytes(2000000), 2 * million);
+  // A header's count can be anything: the estimate saturates instead of overflowing (32-bit size_t too).
+  EXPECT_EQ(parameterizationHeapBytes(std::numeric_limits<int64_t>::max()), std::numeric_limits<std::size_t>::max());
+}
+
+TEST(WarmUpEstimates, ACountGivesUpWithNothingOnceTheLoadHasStopped) {
+  std::string obj;
+  for (int i = 0; i < 200000; ++i) obj += "v 0 0 0\n";  // 1.6 MB: more than one look at stop
+  std::atomic<bool> stop{false};
+  EXPECT_EQ(verticesInFile(obj, MeshFormat::Obj, &stop), 200000);
+  std::string plyWithoutEnd = "ply\nformat ascii 1.0\n";
+  for (int i = 0; i < 10000; ++i) plyWithoutEnd += "comment no end_header yet\n";
+  EXPECT_EQ(verticesInFile(plyWithoutEnd + "element vertex 7\n", MeshFormat::Ply, &stop), 7);
+  stop = true;
+  EXPECT_EQ(verticesInFile(obj, MeshFormat::Obj, &stop), 0);
+  EXPECT_EQ(verticesInFile(plyWithoutEnd + "element vertex 7\n", MeshFormat::Ply, &stop), 0);
 }
 
 TEST(WarmUpEstimates, AMeshFilesVertexCountComesFromItsHeaderOrItsVertexLinesWithoutParsing) {

@@ -86,6 +86,18 @@ test('bad arguments are Errors with messages', () => {
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0], [0, 1, 2]), /not a multiple of 3/);
   for (const notArrays of [[null, [0, 1, 2]], [[0, 0, 0], undefined], ['0 0 0', [0]], [3, [0]]])
     assert.throws(() => st.meshFromArrays(...notArrays), TypeError);
+  // Elements that are no numbers fail in JavaScript, before the module: nothing is left allocated in it.
+  const heapBefore = st.heapUsedBytes;
+  const triangle = [0, 0, 0, 1, 0, 0, 0, 1, 0];
+  const throwing = new Proxy([0, 1, 2], { get: (t, key) => { if (key === '1') throw new RangeError('no element'); return t[key]; } });
+  assert.throws(() => st.meshFromArrays(triangle, new BigInt64Array(3)), TypeError);
+  assert.throws(() => st.meshFromArrays(triangle, [0n, 1n, 2n]), TypeError);
+  assert.throws(() => st.meshFromArrays([Symbol('x'), 0, 0], [0, 1, 2]), TypeError);
+  assert.throws(() => st.meshFromArrays(triangle, throwing), /no element/);
+  assert.equal(st.heapUsedBytes, heapBefore);
+  const fromTyped = st.meshFromArrays(new Float32Array(triangle), new Uint32Array([0, 1, 2]));
+  assert.equal(fromTyped.info().faces, 1);
+  fromTyped.delete();
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 1.5]), /not a vertex index/);
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 2], { maxVertices: 2 }), (e) => e.category === 'too_large');
 });

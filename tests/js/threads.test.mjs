@@ -158,6 +158,7 @@ test('loads warm up for the first call on a spare thread without changing a resu
   const cold = await createStraightest({ threads: 2, warmUp: false });
   assert.equal(cold.warmUp, false);
   assert.throws(() => { cold.warmUp = 'yes'; }, TypeError);
+  await assert.rejects(createStraightest({ threads: 2, warmUp: 1 }), TypeError); // before any worker starts
   const reference = measuredMap(cold);
   const st = await createStraightest({ threads: 2 });
   assert.equal(st.warmUp, true);

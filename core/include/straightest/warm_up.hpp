@@ -5,9 +5,11 @@
 // after the load runs like a repeat. The warm-up changes no result: it touches memory it gives back, and
 // works on a sample of its own.
 #pragma once
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string_view>
 
 #include "straightest/mesh_io.hpp"
@@ -20,7 +22,8 @@ struct WarmUp {
   // on the warm-up's thread). They must stay valid until the load returns.
   std::string_view meshFile;
   MeshFormat format = MeshFormat::Auto;
-  bool code = false;  // run the hot loops on a small sample (the first time only: code stays compiled)
+  bool code = false;  // run the hot loops on a small sample (until once it ran to the end: code stays compiled)
+  int64_t maxVertices = std::numeric_limits<int64_t>::max();  // the load's limit: a file's count is capped there
 };
 
 /// A lower estimate of the fresh heap a measured-boundary parameterization of a disk with `vertices`
@@ -29,8 +32,8 @@ std::size_t parameterizationHeapBytes(int64_t vertices);
 
 /// The vertices a mesh file's bytes hold (Auto: detectMeshFormat), without parsing them: OFF and PLY
 /// declare the count in their headers, an OBJ has a `v` line per vertex; 0 for STL (it repeats every
-/// corner) and for a header that gives no count.
-int64_t verticesInFile(std::string_view bytes, MeshFormat format);
+/// corner) and for a header that gives no count. Once *stop is set it gives up (within a megabyte) with 0.
+int64_t verticesInFile(std::string_view bytes, MeshFormat format, const std::atomic<bool>* stop = nullptr);
 
 /// Calls load() on the calling thread while a worker of the thread pool does what `warmUp` says. The
 /// touched block is allocated on the worker: that serves WebAssembly's single heap; glibc would give it
