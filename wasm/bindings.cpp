@@ -7,6 +7,7 @@
 
 #include <malloc.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -278,6 +279,13 @@ class MeshHandle {
                                                      ") or 2 per face corner (" + std::to_string(perCorner) + ")"};
       std::vector<Vec2> coords(flat.size() / 2);
       for (size_t i = 0; i < coords.size(); ++i) coords[i] = {flat[2 * i], flat[2 * i + 1]};
+      // A corner without a map is NaN in cornerUv (a face of another component), and its f entry gets no vt;
+      // a vertex's vt is always written, so it must be a number ("vt nan nan" is no OBJ).
+      if (flat.size() == perVertex)
+        for (size_t i = 0; i < flat.size(); ++i)
+          if (!std::isfinite(flat[i]))
+            return Error{ErrorCode::NonFinite, "uv[" + std::to_string(i) + "] is " + std::to_string(flat[i]) +
+                                                   ", not a finite number (vertex " + std::to_string(i / 2) + ")"};
       o.set("text", flat.size() == perVertex ? writeObj(*mesh_, &coords) : writeObjWithCornerUv(*mesh_, coords));
       return o;
     });
@@ -325,7 +333,9 @@ val loadMeshBytes(const val& bytes, const std::string& formatName, const val& op
     // memory would detach it).
     val(emscripten::typed_memory_view(size, reinterpret_cast<unsigned char*>(content.get()))).call<void>("set", bytes);
     const std::string_view text(content.get(), size);
-    const BuildLimits limits = limitsFrom(options);  // read from JS before the warm-up starts
+    const auto checked = limitsFrom(options);  // read from JS before the warm-up starts
+    if (!checked) return checked.error();
+    const BuildLimits limits = checked.value();
     WarmUp what;
     if (warmUp) what = WarmUp{0, text, format.value(), true, limits.maxVertices};
     std::optional<Expected<TriMesh>> mesh;
@@ -339,7 +349,9 @@ val meshFromArrays(const val& positions, const val& indices, const val& options,
     // Converted before the warm-up starts: a JavaScript exception thrown here must not unwind through it.
     const auto xyz = emscripten::convertJSArrayToNumberVector<double>(positions);
     const auto idx = emscripten::convertJSArrayToNumberVector<double>(indices);
-    const BuildLimits limits = limitsFrom(options);
+    const auto checked = limitsFrom(options);
+    if (!checked) return checked.error();
+    const BuildLimits limits = checked.value();
     WarmUp what;
     if (warmUp)
       what = WarmUp{parameterizationHeapBytes(std::min(static_cast<int64_t>(xyz.size() / 3), limits.maxVertices)),

@@ -461,9 +461,9 @@ export class Mesh {
   boundaryLoops(): Int32Array[];
   /** Area-weighted unit vertex normals, x, y, z per vertex (zero for unreferenced vertices). */
   vertexNormals(): Float32Array;
-  /** Every boundary kind's polygon without a solve (see BoundaryPolygon). Throws 'topology' unless a disk. */
+  /** Every boundary kind's polygon without a solve (see BoundaryPolygon); a mesh that is not a disk is cut as parameterize cuts it. */
   boundaryPolygons(options?: BoundaryPolygonsOptions): BoundaryPolygon[];
-  /** Every boundary × weights parameterized and judged (see Comparison). Throws 'topology' unless a disk. */
+  /** Every boundary × weights parameterized and judged (see Comparison); a mesh that is not a disk is cut as parameterize cuts it. */
   compareParameterizations(options?: CompareOptions): Comparison;
   /** The interior vertex farthest from the boundary ("center of the mesh"). */
   defaultSource(): number;
@@ -484,11 +484,15 @@ export class Mesh {
    * (see ExactShortestPathsOptions, ExactShortestPaths).
    */
   exactShortestPaths(options?: ExactShortestPathsOptions): ExactShortestPaths;
-  /** Flattens a disk into [0, 1]² (see ParameterizeOptions). Throws 'topology' unless a disk. */
+  /**
+   * Flattens any manifold mesh into [0, 1]² (see ParameterizeOptions): a disk as it is, otherwise its largest
+   * component made a disk first (Parameterization.cut). Throws 'topology' when no vertex lies off the boundary.
+   */
   parameterize(options?: ParameterizeOptions): Parameterization;
   /**
    * OBJ text in the input's vertex order; with uv also `vt` lines (faces as v/vt): uv is 2 numbers per
-   * vertex, or 2 per face corner (Parameterization.cornerUv: one vt per distinct uv, the seam split).
+   * vertex (finite: else 'non_finite'), or 2 per face corner (Parameterization.cornerUv: one vt per
+   * distinct uv, the seam split; a NaN corner gets no vt).
    */
   toOBJ(uv?: ArrayLike<number>): string;
   /** x, y, z per vertex (a copy). */

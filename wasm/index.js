@@ -29,6 +29,33 @@ const isArrayLike = (a) => a !== null && typeof a === 'object' && typeof a.lengt
 const numberArray = (a) => (ArrayBuffer.isView(a) && !(a instanceof DataView)
   && !(a instanceof BigInt64Array) && !(a instanceof BigUint64Array) ? a : Float64Array.from(a));
 
+/**
+ * A call's options object as given (undefined: {}), or StraightestError 'invalid_argument' for anything
+ * that is not a plain object and for a name the call does not take: a misspelt option would otherwise be
+ * ignored, and the call would return a result for the default silently.
+ */
+function checkedOptions(options, known, call) {
+  if (options === undefined) return {};
+  if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+    throw new StraightestError(`${call} takes an object of options, got ${Array.isArray(options) ? 'an array' : String(options)}`,
+      'invalid_argument');
+  }
+  for (const name of Object.keys(options)) {
+    if (!known.includes(name)) {
+      throw new StraightestError(`${call}: unknown option '${name}' (it takes ${known.join(', ')})`, 'invalid_argument');
+    }
+  }
+  return options;
+}
+
+const LIMITS = ['maxVertices', 'maxFaces'];
+const PATHS = ['source', 'targets', 'points', 'onProgress'];
+const SHOT = ['source', 'direction', 'angle', 'toward', 'length', 'points', 'onProgress'];
+const PARAMETERIZE = ['source', 'boundary', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
+const POLYGONS = ['source', 'kinds', 'onProgress'];
+const COMPARE = ['source', 'boundaries', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
+const CREATE = ['threads', 'warmUp', 'wasmUrl', 'locateFile', 'wasmBinary'];
+
 /** The warmUp option, or a TypeError (checked before a module is started for it). */
 function checkedWarmUp(on) {
   if (typeof on !== 'boolean') throw new TypeError('warmUp must be true or false');
@@ -136,7 +163,8 @@ export class Mesh {
    * floats each). On a closed mesh both ways round the section are walked: the shorter arc is the
    * path, `backward` says which way it leaves, otherArcLengths/otherPoints/otherOffsets the other arc.
    */
-  straightestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
+  straightestPaths(options) {
+    const { source = 'auto', targets = 'boundary', points = true, onProgress } = checkedOptions(options, PATHS, 'straightestPaths');
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.straightestPaths(source, targets, !!points, progress), this.#hint);
   }
@@ -156,7 +184,8 @@ export class Mesh {
    * the cutting plane would take; length defaults to its straightest distance). Returns points (packed
    * x, y, z), length, facesCrossed, end, status and, with `toward`, missDistance.
    */
-  shootGeodesic({ source = 'auto', direction, angle, toward, length, points = true, onProgress } = {}) {
+  shootGeodesic(options) {
+    const { source = 'auto', direction, angle, toward, length, points = true, onProgress } = checkedOptions(options, SHOT, 'shootGeodesic');
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.shootGeodesic(source, { direction, angle, toward, length },
       !!points, progress), this.#hint);
@@ -167,7 +196,8 @@ export class Mesh {
    * 'all-boundaries' or an array of vertices (and such names). Returns targets, distances, and the
    * polylines packed like straightestPaths' (path i is points offsets[i]..offsets[i+1], 3 floats each).
    */
-  exactShortestPaths({ source = 'auto', targets = 'boundary', points = true, onProgress } = {}) {
+  exactShortestPaths(options) {
+    const { source = 'auto', targets = 'boundary', points = true, onProgress } = checkedOptions(options, PATHS, 'exactShortestPaths');
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.exactShortestPaths(source, targets, !!points, progress), this.#hint);
   }
@@ -182,10 +212,11 @@ export class Mesh {
    * Returns uv (2 floats per vertex, in [0, 1]²; one copy's for a seam vertex), cornerUv (2 floats per
    * face corner: the map to texture with, split along the seam), per-face stretch and the metrics.
    */
-  parameterize({
-    source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid',
-    maxIterations, timeBudgetMs, onProgress,
-  } = {}) {
+  parameterize(options) {
+    const {
+      source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid',
+      maxIterations, timeBudgetMs, onProgress,
+    } = checkedOptions(options, PARAMETERIZE, 'parameterize');
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.parameterize(source, String(boundary), String(weights),
       String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
@@ -197,7 +228,8 @@ export class Mesh {
    * null), loop, error, category }. Default kinds: every kind but 'free' (st.polygonBoundaryKinds),
    * whose boundary exists only after its refinement; asking for 'free' throws 'invalid_argument'.
    */
-  boundaryPolygons({ source = 'auto', kinds, onProgress } = {}) {
+  boundaryPolygons(options) {
+    const { source = 'auto', kinds, onProgress } = checkedOptions(options, POLYGONS, 'boundaryPolygons');
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.boundaryPolygons(source, kinds, progress), this.#hint).polygons;
   }
@@ -208,9 +240,10 @@ export class Mesh {
    * best } (best: the row boundary 'auto' would prefer, -1 when every row failed). Free rows refine
    * their weights' measured (or circle) map; maxIterations and timeBudgetMs cap that refinement.
    */
-  compareParameterizations({
-    source = 'auto', boundaries, weights, solver = 'multigrid', maxIterations, timeBudgetMs, onProgress,
-  } = {}) {
+  compareParameterizations(options) {
+    const {
+      source = 'auto', boundaries, weights, solver = 'multigrid', maxIterations, timeBudgetMs, onProgress,
+    } = checkedOptions(options, COMPARE, 'compareParameterizations');
     const handle = this.#live();
     return withProgress(onProgress, (progress) => handle.compareParameterizations(source, boundaries, weights,
       String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
@@ -220,7 +253,7 @@ export class Mesh {
    * The mesh as OBJ text (input vertex order); with uv also `vt` lines: 2 numbers per vertex (a vt per
    * vertex), or 2 per face corner (a parameterization's cornerUv: a vt per distinct uv, so seams split).
    */
-  toOBJ(uv) { return unwrap(this.#live().toObj(uv ?? null)).text; }
+  toOBJ(uv) { return unwrap(this.#live().toObj(uv === undefined || uv === null ? null : numberArray(uv))).text; }
 
   get deleted() { return !this.#handle; }
 
@@ -300,16 +333,18 @@ export class Straightest {
   formatFromFileName(name) { return this.#module.formatFromFileName(String(name ?? '')); }
 
   /** Parses an OBJ, OFF, PLY or STL file (PLY and STL ascii or binary) given as bytes (Uint8Array/ArrayBuffer) or text. */
-  loadMesh(data, format = 'auto', limits = {}) {
-    return new Mesh(internal, unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), limits, this.#warmUp)).mesh);
+  loadMesh(data, format = 'auto', limits) {
+    const checked = checkedOptions(limits, LIMITS, 'loadMesh');
+    return new Mesh(internal, unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), checked, this.#warmUp)).mesh);
   }
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
-  meshFromArrays(positions, indices, limits = {}) {
+  meshFromArrays(positions, indices, limits) {
     // Checked here: a JavaScript error thrown inside the module would unwind its C++ frames unfinished.
     if (!isArrayLike(positions) || !isArrayLike(indices)) throw new TypeError('meshFromArrays expects positions and indices as arrays (or typed arrays) of numbers');
     const [xyz, triangles] = [numberArray(positions), numberArray(indices)];
-    return new Mesh(internal, unwrap(this.#module.meshFromArrays(xyz, triangles, limits, this.#warmUp)).mesh);
+    const checked = checkedOptions(limits, LIMITS, 'meshFromArrays');
+    return new Mesh(internal, unwrap(this.#module.meshFromArrays(xyz, triangles, checked, this.#warmUp)).mesh);
   }
 
   /** Names of the built-in sample meshes. */
@@ -355,7 +390,8 @@ export class Straightest {
  * WebAssembly, or refused by the runtime — rejects with StraightestError 'io' naming the URL and what
  * came back.
  */
-export async function createStraightest(options = {}) {
-  checkedWarmUp(options?.warmUp ?? true); // before the module and its workers start
-  return new Straightest(internal, await startModule(options), options);
+export async function createStraightest(options) {
+  const checked = checkedOptions(options, CREATE, 'createStraightest'); // before the module and its workers start
+  checkedWarmUp(checked.warmUp ?? true);
+  return new Straightest(internal, await startModule(checked), checked);
 }

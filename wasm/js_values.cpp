@@ -127,12 +127,17 @@ Progress progressFrom(const val& fn) {
   return [fn](const char* stage, double fraction) { return !fn(std::string(stage), fraction).isFalse(); };
 }
 
-BuildLimits limitsFrom(const val& options) {
+Expected<BuildLimits> limitsFrom(const val& options) {
   BuildLimits limits;
   if (options.isUndefined() || options.isNull()) return limits;
-  const val mv = options["maxVertices"], mf = options["maxFaces"];
-  if (!mv.isUndefined()) limits.maxVertices = static_cast<int64_t>(mv.as<double>());
-  if (!mf.isUndefined()) limits.maxFaces = static_cast<int64_t>(mf.as<double>());
+  for (auto [name, cap] : {std::pair{"maxVertices", &limits.maxVertices}, std::pair{"maxFaces", &limits.maxFaces}}) {
+    const val given = options[name];
+    if (given.isUndefined() || given.isNull()) continue;
+    const double n = given.isNumber() ? given.as<double>() : -1;
+    if (!(n >= 1 && n <= 9007199254740992.0 && n == std::floor(n)))  // up to 2^53: exact as a double
+      return Error{ErrorCode::InvalidArgument, std::string(name) + " must be a positive integer"};
+    *cap = static_cast<int64_t>(n);
+  }
   return limits;
 }
 

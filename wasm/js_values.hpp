@@ -46,8 +46,9 @@ Expected<std::vector<E>> namesFrom(const val& names, const EnumName<E> (&table)[
 /// A JS function (stage, fraction) → false to cancel; undefined or null means none.
 Progress progressFrom(const val& fn);
 
-/// { maxVertices, maxFaces } (either may be missing).
-BuildLimits limitsFrom(const val& options);
+/// { maxVertices, maxFaces } (either may be missing: the core's default); InvalidArgument unless a
+/// positive integer.
+Expected<BuildLimits> limitsFrom(const val& options);
 
 /// The free boundary's { maxIterations, timeBudgetMs } (either may be missing: the core's default);
 /// InvalidArgument unless a positive integer / a positive number.

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <memory>
 
+#include <sys/stat.h>
+
 #include "obj_reader.hpp"
 #include "off_reader.hpp"
 #include "ply_reader.hpp"
@@ -115,6 +117,10 @@ Expected<TriMesh> loadMesh(std::string_view bytes, MeshFormat format, const Buil
 Expected<TriMesh> loadMeshFile(const std::string& path, const BuildLimits& limits) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) return Error{ErrorCode::Io, "cannot open '" + path + "': " + std::strerror(errno)};
+  // A directory opens for reading too, and its "size" would be taken for a file's.
+  struct stat info {};
+  if (fstat(fileno(file.get()), &info) == 0 && S_ISDIR(info.st_mode))
+    return Error{ErrorCode::Io, "cannot read '" + path + "': it is a directory"};
   // The whole file into one uninitialized buffer, read straight into it: one fread when the size is
   // known (a stream would copy every block once more, and a string would zero the buffer first), in
   // doubling steps when it is not (a pipe).

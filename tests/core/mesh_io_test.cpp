@@ -71,5 +71,12 @@ TEST(MeshFiles, MissingFileIsAnIoErrorNamingThePath) {
   EXPECT_NE(mesh.error().message.find("does/not/exist.obj"), std::string::npos) << mesh.error().message;
 }
 
+TEST(MeshFiles, ADirectoryIsAnIoErrorNotAFileTooLarge) {
+  auto mesh = loadMeshFile(testing::dataPath("bad"));
+  ASSERT_FALSE(mesh.ok());
+  EXPECT_EQ(mesh.error().code, ErrorCode::Io) << mesh.error().message;
+  EXPECT_NE(mesh.error().message.find("directory"), std::string::npos) << mesh.error().message;
+}
+
 }  // namespace
 }  // namespace straightest

@@ -102,6 +102,31 @@ test('bad arguments are Errors with messages', () => {
   assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 2], { maxVertices: 2 }), (e) => e.category === 'too_large');
 });
 
+test('a misspelt or unknown option is refused, not ignored for the default', async () => {
+  const invalid = (e) => e instanceof StraightestError && e.category === 'invalid_argument';
+  const mesh = st.sample('cap');
+  try {
+    assert.throws(() => mesh.parameterize({ boundry: 'free' }), (e) => invalid(e) && /unknown option 'boundry'/.test(e.message));
+    assert.throws(() => mesh.parameterize('free'), (e) => invalid(e) && /object of options/.test(e.message));
+    assert.throws(() => mesh.parameterize(null), invalid);
+    assert.throws(() => mesh.straightestPaths({ target: 'boundary' }), invalid);
+    assert.throws(() => mesh.exactShortestPaths([0]), invalid);
+    assert.throws(() => mesh.shootGeodesic({ angle: 0, lenght: 1 }), invalid);
+    assert.throws(() => mesh.boundaryPolygons({ boundary: 'free' }), invalid);
+    assert.throws(() => mesh.compareParameterizations({ boundary: 'circle' }), invalid);
+    // Known names, undefined values included, are taken as before.
+    assert.equal(mesh.parameterize({ boundary: 'circle', maxIterations: undefined }).boundary, 'circle');
+  } finally {
+    mesh.delete();
+  }
+  const triangle = 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n';
+  assert.throws(() => st.loadMesh(triangle, 'off', { maxVerts: 1 }), invalid);
+  for (const cap of [-1, 0, 1.5, NaN, '3'])
+    assert.throws(() => st.loadMesh(triangle, 'off', { maxVertices: cap }), (e) => invalid(e) && /maxVertices must be a positive integer/.test(e.message));
+  assert.throws(() => st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [0, 1, 2], { maxFaces: -2 }), invalid);
+  await assert.rejects(createStraightest({ thread: 1 }), invalid);
+});
+
 test('use after delete throws an Error; delete is idempotent', () => {
   const mesh = st.sample('cap');
   mesh.delete();

@@ -83,6 +83,10 @@ test('toOBJ with cornerUv writes a vt per distinct uv: the seam splits, and the 
   assert.equal(again.info().faces, mesh.info().faces);
   again.delete();
   assert.throws(() => mesh.toOBJ(new Float32Array(5)), /2 per face corner/);
+  // A vertex's vt is always written: it must be a number (a corner's NaN only drops its vt).
+  const perVertex = new Float64Array(2 * mesh.info().vertices).fill(0.5);
+  perVertex[7] = NaN;
+  assert.throws(() => mesh.toOBJ(perVertex), (e) => e.category === 'non_finite' && /uv\[7\]/.test(e.message));
   mesh.delete();
 });
 
