@@ -465,7 +465,10 @@ export class Mesh {
   boundaryPolygons(options?: BoundaryPolygonsOptions): BoundaryPolygon[];
   /** Every boundary × weights parameterized and judged (see Comparison); a mesh that is not a disk is cut as parameterize cuts it. */
   compareParameterizations(options?: CompareOptions): Comparison;
-  /** The interior vertex farthest from the boundary ("center of the mesh"). */
+  /**
+   * The interior vertex farthest from the boundary ("center of the mesh"). Throws 'topology' when every vertex
+   * lies on the boundary; there 'auto' sources are the middle of the largest face instead.
+   */
   defaultSource(): number;
   /** The base plane at a source (default 'auto'). */
   basePlane(source?: SurfacePoint | 'auto'): BasePlane;
@@ -486,7 +489,7 @@ export class Mesh {
   exactShortestPaths(options?: ExactShortestPathsOptions): ExactShortestPaths;
   /**
    * Flattens any manifold mesh into [0, 1]² (see ParameterizeOptions): a disk as it is, otherwise its largest
-   * component made a disk first (Parameterization.cut). Throws 'topology' when no vertex lies off the boundary.
+   * component made a disk first (Parameterization.cut).
    */
   parameterize(options?: ParameterizeOptions): Parameterization;
   /**

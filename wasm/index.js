@@ -149,7 +149,10 @@ export class Mesh {
   /** Area-weighted unit vertex normals, 3 floats per vertex (zero for unreferenced vertices). */
   vertexNormals() { return unwrap(this.#live().vertexNormals(), this.#hint).normals; }
 
-  /** The default source: the interior vertex farthest from the boundary ("center of the mesh"). */
+  /**
+   * The default source: the interior vertex farthest from the boundary ("center of the mesh"); 'topology'
+   * when every vertex lies on the boundary (there an 'auto' source is the middle of the largest face).
+   */
   defaultSource() { return unwrap(this.#live().defaultSource(), this.#hint).vertex; }
 
   /** The base plane at a source: { source, origin, normal, fallback, note }. */

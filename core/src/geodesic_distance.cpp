@@ -302,11 +302,21 @@ std::vector<double> HeatMethod::distances(const SurfacePoint& source) const {
   return out;
 }
 
+Expected<SurfacePoint> defaultSourcePoint(const TriMesh& mesh) {
+  auto v = defaultSource(mesh);
+  if (v) return SurfacePoint::vertex(v.value());
+  // Every vertex on the boundary (a lone triangle, a strip of quads): no vertex is inside, but the middle
+  // of a face is, and the largest face's is the farthest such point from the boundary among the centroids.
+  int32_t largest = -1;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f)
+    if (!mesh.isDegenerateFace(f) && (largest < 0 || mesh.faceArea(f) > mesh.faceArea(largest))) largest = f;
+  if (largest < 0) return v.error();
+  return SurfacePoint::face(largest, {1.0 / 3, 1.0 / 3, 1.0 / 3});
+}
+
 Expected<SurfacePoint> resolveSource(const TriMesh& mesh, const std::optional<SurfacePoint>& source) {
   if (source) return validateSurfacePoint(mesh, *source);
-  auto v = defaultSource(mesh);
-  if (!v) return v.error();
-  return SurfacePoint::vertex(v.value());
+  return defaultSourcePoint(mesh);
 }
 
 Expected<DistanceMethod> parseDistanceMethod(const std::string& name) {

@@ -76,6 +76,11 @@ Error notOnDisk(const std::string& what) {
 Expected<CutDisk> makeCutDisk(const TriMesh& mesh, const Progress& progress) {
   auto cut = cutToDisk(mesh, progress);
   if (!cut) return cut.error();
+  // Every component a lone triangle: a triangle soup, whose faces share no vertices (a non-indexed
+  // export). Mapping its largest triangle would look like an answer; its vertices need welding first.
+  if (cut.value().disk.numFaces() == 1 && cut.value().components > 1)
+    return Error{ErrorCode::Topology, "every one of the " + std::to_string(cut.value().components) +
+                                          " components is a single triangle: the faces share no vertices"};
   CutDisk c(std::move(cut).value());
   const TriMesh& disk = c.cut.disk;
   c.diskFaceOf.assign(mesh.numFaces(), -1);
@@ -173,7 +178,14 @@ Expected<SurfacePoint> diskDefaultSource(const CutDisk& c) {
   const TriMesh& disk = c.cut.disk;
   const TriMesh& real = c.real();
   auto v = defaultSource(disk);
-  if (!v) return v.error();
+  if (!v) {
+    // No vertex inside the disk: the middle of its largest real face (defaultSourcePoint).
+    auto p = defaultSourcePoint(real);
+    if (!p) return p.error();
+    SurfacePoint onDisk = p.value();
+    if (c.realFaces) onDisk.index = c.realFaceDisk[onDisk.index];
+    return onDisk;
+  }
   const auto usable = [&](int32_t u) {
     return c.cut.vertexOrigin[u] >= 0 && real.vertexHalfedge(u) >= 0 && !real.isBoundaryVertex(u);
   };

@@ -54,6 +54,37 @@ TEST(MeasuredBoundary, PlanarConvexPatchReproducesItselfWithEveryConvexCombinati
   }
 }
 
+/// A disk whose vertices all lie on its boundary (a lone triangle, a strip of quads, CGAL's quad.off) has
+/// no vertex for the default source: the middle of its largest face is the source, and a flat strip
+/// still maps onto itself.
+TEST(MeasuredBoundary, AStripWithEveryVertexOnTheBoundaryMapsOntoItselfFromItsLargestFacesMiddle) {
+  // Two quads side by side (4 triangles) with the last one the largest, and a lone triangle.
+  const TriMesh strip = testing::buildOrFail({{0, 0, 0}, {1, 0, 0}, {2.5, 0, 0}, {0, 1, 0}, {1, 1.2, 0}, {2.5, 1.1, 0}},
+                                             {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}});
+  const TriMesh triangle = testing::buildOrFail({{0, 0, 0}, {2, 0, 0}, {0.5, 1.5, 0}}, {{0, 1, 2}});
+  for (const TriMesh* mesh : {&strip, &triangle}) {
+    EXPECT_FALSE(defaultSource(*mesh).ok());  // no interior vertex
+    const auto source = resolveSource(*mesh, std::nullopt);
+    ASSERT_TRUE(source) << source.error().message;
+    EXPECT_EQ(source.value().kind, SurfacePoint::Kind::Face);
+    int32_t largest = 0;
+    for (int32_t f = 1; f < mesh->numFaces(); ++f)
+      if (mesh->faceArea(f) > mesh->faceArea(largest)) largest = f;
+    EXPECT_EQ(source.value().index, largest);
+    for (auto kind : {BoundaryKind::Measured, BoundaryKind::Circle, BoundaryKind::Free}) {
+      const Parameterization p = param(*mesh, kind, WeightKind::ShapePreserving);
+      EXPECT_TRUE(p.metrics.bijective) << boundaryKindName(kind);
+      if (kind == BoundaryKind::Measured) expectSimilarity(*mesh, p.uv);  // a flat disk measured from inside
+    }
+  }
+  // But a triangle soup (faces sharing no vertices) is refused, not mapped one triangle of many.
+  const TriMesh soup = testing::buildOrFail({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}, {3, 0, 0}, {2, 1, 0}},
+                                            {{0, 1, 2}, {3, 4, 5}});
+  const auto refused = parameterize(soup, ParamOptions{});
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().code, ErrorCode::Topology) << refused.error().message;
+}
+
 TEST(MeasuredBoundary, DevelopableCylinderPatchIsNearlyIsometric) {
   const double R = 1.0;
   const int n = 41;

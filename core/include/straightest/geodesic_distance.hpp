@@ -29,7 +29,11 @@ std::vector<double> dijkstraDistances(const TriMesh& mesh, const SurfacePoint& s
 /// area-weighted centroid. A Topology error when a mesh with boundary has no interior vertex.
 Expected<int32_t> defaultSource(const TriMesh& mesh);
 
-/// The one place "auto" becomes a point: nullopt → the default source (as a vertex); a given point is
+/// The default source as a point: defaultSource's vertex, or, when every vertex lies on the boundary, the
+/// centroid of the largest face (a Topology error only when every face is degenerate too).
+Expected<SurfacePoint> defaultSourcePoint(const TriMesh& mesh);
+
+/// The one place "auto" becomes a point: nullopt → defaultSourcePoint; a given point is
 /// validated (see validateSurfacePoint). Every caller (core, CLI, npm package) maps its "auto" to nullopt.
 Expected<SurfacePoint> resolveSource(const TriMesh& mesh, const std::optional<SurfacePoint>& source);
 
