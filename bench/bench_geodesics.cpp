@@ -19,13 +19,13 @@
 #include <vector>
 
 #include "../core/cli/huge_pages.hpp"
-#include "straightest/base_plane.hpp"
-#include "straightest/exact_geodesic.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/geodesic_shoot.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
+#include "straightest/geodesics/exact_geodesic.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/geodesics/geodesic_shoot.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/paths/base_plane.hpp"
+#include "straightest/paths/straightest_path.hpp"
 
 using namespace straightest;
 using Clock = std::chrono::steady_clock;

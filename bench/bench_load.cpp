@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "../core/cli/huge_pages.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
 
 using namespace straightest;
 using Clock = std::chrono::steady_clock;

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "../core/cli/huge_pages.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/parameterize.hpp"
 
 using namespace straightest;
 

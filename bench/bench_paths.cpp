@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "../core/cli/huge_pages.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
-#include "straightest/threads.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/paths/straightest_path.hpp"
 #include "thread_counts.hpp"
 
 using namespace straightest;

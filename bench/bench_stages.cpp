@@ -21,12 +21,12 @@
 #include <vector>
 
 #include "../core/cli/huge_pages.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
-#include "straightest/threads.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/paths/straightest_path.hpp"
 #include "thread_counts.hpp"
 
 #ifdef __EMSCRIPTEN__

@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "straightest/disk_cut.hpp"
-#include "straightest/mesh_io.hpp"
+#include "straightest/cut/disk_cut.hpp"
+#include "straightest/io/mesh_io.hpp"
 
 using namespace straightest;
 using Clock = std::chrono::steady_clock;

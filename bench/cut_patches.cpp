@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/trimesh.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/trimesh.hpp"
 
 using namespace straightest;
 

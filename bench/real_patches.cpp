@@ -21,9 +21,9 @@
 #include <utility>
 #include <vector>
 
-#include "straightest/mesh_io.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/timings.hpp"
+#include "straightest/base/timings.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/param/parameterize.hpp"
 
 using namespace straightest;
 

@@ -13,18 +13,18 @@
 #include <string>
 
 #include "js_values.hpp"
-#include "straightest/boundary_polygons.hpp"
-#include "straightest/compare_parameterizations.hpp"
-#include "straightest/enum_names.hpp"
-#include "straightest/exact_geodesic.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/geodesic_shoot.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
-#include "straightest/threads.hpp"
-#include "straightest/warm_up.hpp"
+#include "straightest/api/warm_up.hpp"
+#include "straightest/base/names.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/geodesics/exact_geodesic.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/geodesics/geodesic_shoot.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/boundary_polygons.hpp"
+#include "straightest/param/compare_parameterizations.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/paths/straightest_path.hpp"
 
 using emscripten::val;
 using namespace straightest;

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "straightest/progress.hpp"
-#include "straightest/result_fields.hpp"
+#include "straightest/api/result_fields.hpp"
+#include "straightest/base/progress.hpp"
 
 namespace straightest::js {
 

@@ -46,12 +46,12 @@
 
 #include <malloc.h>
 
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
-#include "straightest/texture_stretch.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/param/texture_stretch.hpp"
+#include "straightest/paths/straightest_path.hpp"
 
 #include "bench_support.hpp"
 #include "free_border.hpp"

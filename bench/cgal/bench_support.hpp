@@ -16,7 +16,7 @@
 
 #include <malloc.h>
 
-#include "straightest/texture_stretch.hpp"
+#include "straightest/param/texture_stretch.hpp"
 
 namespace bench_cgal {
 

@@ -16,9 +16,9 @@
 
 #include "bench_support.hpp"
 #include "free_border.hpp"
-#include "straightest/exact_geodesic.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/mesh_io.hpp"
+#include "straightest/geodesics/exact_geodesic.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/io/mesh_io.hpp"
 
 using namespace straightest;
 using namespace bench_cgal;

@@ -7,7 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
-#include "straightest/parameterize.hpp"
+#include "straightest/param/parameterize.hpp"
 
 namespace bench_cgal {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "straightest/result_fields.hpp"
+#include "straightest/api/result_fields.hpp"
 
 namespace straightest::cli {
 

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/base_plane.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/paths/base_plane.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

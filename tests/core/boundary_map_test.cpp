@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/boundary_map.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/boundary_map.hpp"
+#include "straightest/param/parameterize.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/boundary_overlaps.hpp"
-#include "straightest/texture_stretch.hpp"
+#include "straightest/param/boundary_overlaps.hpp"
+#include "straightest/param/texture_stretch.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

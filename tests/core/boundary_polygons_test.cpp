@@ -2,9 +2,9 @@
 // parameterization with that boundary.
 #include <gtest/gtest.h>
 
-#include "straightest/boundary_polygons.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/boundary_polygons.hpp"
+#include "straightest/param/parameterize.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/paths/straightest_path.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

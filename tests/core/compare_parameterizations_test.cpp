@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/compare_parameterizations.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/compare_parameterizations.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

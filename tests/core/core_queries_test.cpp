@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/base_plane.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/paths/base_plane.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

@@ -6,11 +6,11 @@
 #include <set>
 #include <utility>
 
-#include "../../core/src/row_accumulator.hpp"
+#include "../../core/solver/src/row_accumulator.hpp"
 #include "solver_systems.hpp"
-#include "straightest/csr_matrix.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/threads.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/solver/csr_matrix.hpp"
 
 namespace straightest {
 namespace {

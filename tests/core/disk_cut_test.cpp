@@ -1,6 +1,6 @@
 // cutToDisk: every manifold mesh made a disk — the largest component, holes filled, closed surfaces cut
 // along a path (genus 0) or a tree–cotree cut graph (genus ≥ 1) — and the maps back to the mesh.
-#include "straightest/disk_cut.hpp"
+#include "straightest/cut/disk_cut.hpp"
 
 #include <gtest/gtest.h>
 

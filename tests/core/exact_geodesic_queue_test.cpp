@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "../../core/src/exact_geodesic_queue.hpp"
+#include "../../core/geodesics/src/exact_geodesic_queue.hpp"
 
 namespace straightest {
 namespace {

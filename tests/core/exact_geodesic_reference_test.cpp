@@ -9,10 +9,10 @@
 #include <random>
 #include <vector>
 
-#include "../../core/src/exact_geodesic_reference.hpp"
+#include "../../core/geodesics/src/exact_geodesic_reference.hpp"
 #include "geodesic_surfaces.hpp"
-#include "straightest/exact_geodesic.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/geodesics/exact_geodesic.hpp"
+#include "straightest/mesh/samples.hpp"
 
 namespace straightest {
 namespace {

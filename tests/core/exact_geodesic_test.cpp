@@ -2,17 +2,17 @@
 // around the reflex corner of an L), the unrolled cone and cylinder; the metric's own laws (symmetry,
 // triangle inequality, 1-Lipschitz along edges); exact ≤ straightest and exact ≤ graph on every vertex of
 // the samples; back-traced paths as long as the distances they explain.
-#include "straightest/exact_geodesic.hpp"
+#include "straightest/geodesics/exact_geodesic.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "geodesic_surfaces.hpp"
-#include "straightest/enum_names.hpp"
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
+#include "straightest/base/names.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/paths/straightest_path.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

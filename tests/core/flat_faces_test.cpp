@@ -8,8 +8,8 @@
 #include <cstring>
 #include <vector>
 
-#include "../../core/src/flat_faces.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/mesh/flat_faces.hpp"
+#include "straightest/mesh/samples.hpp"
 
 namespace straightest {
 namespace {

@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/free_boundary.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/texture_stretch.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/free_boundary.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/param/texture_stretch.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

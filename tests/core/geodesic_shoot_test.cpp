@@ -1,7 +1,7 @@
 // Straightest geodesics as an initial value problem (Polthier–Schmies): straight lines on a plane, helices
 // of the analytic pitch on a cylinder, half of the total angle on each side through a vertex, the miss of a
 // destination on a cone that the cutting plane reaches, the tangent frame's convention, and bad input.
-#include "straightest/geodesic_shoot.hpp"
+#include "straightest/geodesics/geodesic_shoot.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <cmath>
 
 #include "geodesic_surfaces.hpp"
-#include "straightest/base_plane.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/paths/base_plane.hpp"
+#include "straightest/paths/straightest_path.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

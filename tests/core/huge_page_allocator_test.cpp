@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "../../core/src/huge_page_allocator.hpp"
+#include "straightest/base/huge_page_allocator.hpp"
 
 namespace straightest {
 namespace {

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "solver_systems.hpp"
-#include "straightest/krylov.hpp"
-#include "straightest/multigrid.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/solver/krylov.hpp"
+#include "straightest/solver/multigrid.hpp"
 
 namespace straightest {
 namespace {

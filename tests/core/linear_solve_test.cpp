@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "solver_systems.hpp"
-#include "straightest/linear_solve.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/texture_stretch.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/texture_stretch.hpp"
+#include "straightest/solver/linear_solve.hpp"
 
 namespace straightest {
 namespace {

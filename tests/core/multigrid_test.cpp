@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "solver_systems.hpp"
-#include "straightest/multigrid.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/solver/multigrid.hpp"
 
 namespace straightest {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/mesh_io.hpp"
+#include "straightest/io/mesh_io.hpp"
 #include "test_util.hpp"
 
 namespace straightest {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/mesh_io.hpp"
-#include "straightest/threads.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/io/mesh_io.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/boundary_polygons.hpp"
-#include "straightest/compare_parameterizations.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/boundary_polygons.hpp"
+#include "straightest/param/compare_parameterizations.hpp"
+#include "straightest/param/parameterize.hpp"
 #include "test_meshes.hpp"
 #include "test_util.hpp"
 

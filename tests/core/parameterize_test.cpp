@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
-#include "straightest/threads.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/paths/straightest_path.hpp"
 #include "test_meshes.hpp"
 #include "test_util.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/polygon_triangulation.hpp"
+#include "straightest/mesh/polygon_triangulation.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/samples.hpp"
+#include "straightest/mesh/samples.hpp"
 
 namespace straightest {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../../core/src/slim_global_step.hpp"
+#include "../../core/param/src/free/slim_global_step.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

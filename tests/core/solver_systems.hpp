@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "straightest/boundary_map.hpp"
-#include "straightest/csr_matrix.hpp"
-#include "straightest/interior_weights.hpp"
+#include "straightest/param/boundary_map.hpp"
+#include "straightest/param/interior_weights.hpp"
+#include "straightest/solver/csr_matrix.hpp"
 
 namespace straightest::testing {
 

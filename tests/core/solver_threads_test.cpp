@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "solver_systems.hpp"
-#include "straightest/krylov.hpp"
-#include "straightest/linear_solve.hpp"
-#include "straightest/multigrid.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/threads.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/solver/krylov.hpp"
+#include "straightest/solver/linear_solve.hpp"
+#include "straightest/solver/multigrid.hpp"
 
 namespace straightest {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/surface_point.hpp"
+#include "straightest/mesh/surface_point.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

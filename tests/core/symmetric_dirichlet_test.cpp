@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../../core/src/symmetric_dirichlet.hpp"
+#include "../../core/param/src/free/symmetric_dirichlet.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

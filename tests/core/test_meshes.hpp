@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "straightest/samples.hpp"
-#include "straightest/trimesh.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/mesh/trimesh.hpp"
 
 namespace straightest::testing {
 

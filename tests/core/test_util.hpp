@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/mesh_io.hpp"
+#include "straightest/io/mesh_io.hpp"
 
 namespace straightest::testing {
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/texture_stretch.hpp"
+#include "straightest/param/texture_stretch.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

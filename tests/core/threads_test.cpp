@@ -18,17 +18,17 @@
 
 #include <gtest/gtest.h>
 
-#include "../../core/src/parallel_for.hpp"
+#include "straightest/base/parallel_for.hpp"
 
-#include "straightest/geodesic_distance.hpp"
-#include "straightest/interior_weights.hpp"
-#include "straightest/mesh_io.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/straightest_path.hpp"
-#include "straightest/texture_stretch.hpp"
-#include "straightest/threads.hpp"
-#include "straightest/warm_up.hpp"
+#include "straightest/api/warm_up.hpp"
+#include "straightest/base/threads.hpp"
+#include "straightest/geodesics/geodesic_distance.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/param/interior_weights.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/param/texture_stretch.hpp"
+#include "straightest/paths/straightest_path.hpp"
 
 namespace straightest {
 namespace {

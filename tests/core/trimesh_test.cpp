@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/samples.hpp"
-#include "straightest/trimesh.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/mesh/trimesh.hpp"
 #include "test_util.hpp"
 
 namespace straightest {

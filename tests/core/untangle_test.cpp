@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "../../core/src/untangle.hpp"
-#include "straightest/parameterize.hpp"
-#include "straightest/texture_stretch.hpp"
+#include "../../core/param/src/free/untangle.hpp"
+#include "straightest/param/parameterize.hpp"
+#include "straightest/param/texture_stretch.hpp"
 #include "test_meshes.hpp"
 
 namespace straightest {

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/vec3.hpp"
+#include "straightest/base/vec3.hpp"
 
 namespace straightest {
 namespace {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "straightest/mesh_io.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/warm_up.hpp"
+#include "straightest/api/warm_up.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
 
 namespace straightest {
 namespace {

@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "straightest/error.hpp"
-#include "straightest/trimesh.hpp"
+#include "straightest/base/error.hpp"
+#include "straightest/mesh/trimesh.hpp"
 
 namespace fuzz {
 

@@ -8,8 +8,8 @@
 #include <limits>
 
 #include "fuzz_common.hpp"
-#include "straightest/samples.hpp"
-#include "straightest/surface_point.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "straightest/mesh/surface_point.hpp"
 
 namespace fuzz {
 

@@ -17,7 +17,7 @@
 #include <limits>
 
 #include "fuzz_meshes.hpp"
-#include "straightest/parameterize.hpp"
+#include "straightest/param/parameterize.hpp"
 
 using namespace straightest;
 

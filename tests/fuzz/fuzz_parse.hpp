@@ -4,7 +4,7 @@
 #include <string_view>
 
 #include "fuzz_common.hpp"
-#include "straightest/mesh_io.hpp"
+#include "straightest/io/mesh_io.hpp"
 
 namespace fuzz {
 

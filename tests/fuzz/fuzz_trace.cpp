@@ -17,7 +17,7 @@
 #include <cstdlib>
 
 #include "fuzz_meshes.hpp"
-#include "straightest/straightest_path.hpp"
+#include "straightest/paths/straightest_path.hpp"
 
 using namespace straightest;
 

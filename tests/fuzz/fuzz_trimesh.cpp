@@ -17,7 +17,7 @@
 #include <limits>
 
 #include "fuzz_common.hpp"
-#include "straightest/mesh_io.hpp"
+#include "straightest/io/mesh_io.hpp"
 
 using namespace straightest;
 
