@@ -6,12 +6,13 @@
 #   base ← solver
 #   mesh ← paths ← geodesics
 #   mesh ← cut
-#   geodesics, cut, solver ← param ← atlas ← api (and io)
+#   geodesics, cut, solver ← param ← atlas
+#   atlas, io ← api
 #
 # straightest_add_core(<suffix> [compile options...]) defines straightest_<module><suffix> for every
 # module and straightest_core<suffix>, an INTERFACE library of them all (what programs link). The
 # suffix lets one build compile the core twice (the threaded WASM module, the fuzzers' instrumented copy).
-set(STRAIGHTEST_MODULES base mesh io solver paths geodesics cut param api)
+set(STRAIGHTEST_MODULES base mesh io solver paths geodesics cut param atlas api)
 set(STRAIGHTEST_DEPS_base "")
 set(STRAIGHTEST_DEPS_mesh base)
 set(STRAIGHTEST_DEPS_io mesh)
@@ -20,7 +21,8 @@ set(STRAIGHTEST_DEPS_paths mesh)
 set(STRAIGHTEST_DEPS_geodesics paths)
 set(STRAIGHTEST_DEPS_cut mesh)
 set(STRAIGHTEST_DEPS_param geodesics cut solver)
-set(STRAIGHTEST_DEPS_api param io)
+set(STRAIGHTEST_DEPS_atlas param)
+set(STRAIGHTEST_DEPS_api atlas io)
 set(STRAIGHTEST_CORE_DIR ${CMAKE_CURRENT_LIST_DIR}/../core)
 get_filename_component(STRAIGHTEST_CORE_DIR ${STRAIGHTEST_CORE_DIR} ABSOLUTE)
 
