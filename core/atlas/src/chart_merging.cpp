@@ -1,0 +1,118 @@
+// chart_merging.cpp — which neighbours to try (adjacent, normals within 90°, not known to fail), and
+// rounds of disjoint trials. A pair whose average normals are more than 90° apart would need a fold-like
+// bend to lie flat within the stretch target, so it is not worth a trial.
+#include "chart_merging.hpp"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include "face_graph.hpp"
+#include "parallel_flattening.hpp"
+
+namespace straightest::atlas {
+
+namespace {
+// The faces all merge trials may flatten together, per mesh face: late rounds try few, large unions, so
+// an unbounded search costs tens of flattenings of the whole mesh for a few charts less. Counted in
+// faces, not time, so the result does not depend on the machine.
+constexpr int64_t kTrialFacesPerFace = 4;
+
+struct MergeTrial {
+  int32_t a, b;  // indices into charts, a < b
+  size_t smaller;
+  double shared;
+};
+
+Vec3 averageNormal(const TriMesh& mesh, const FlatChart& chart) {
+  Vec3 n{0, 0, 0};
+  for (int32_t f : chart.faces) n += mesh.faceNormal(f) * mesh.faceArea(f);
+  const double length = norm(n);
+  return length > 0 ? n / length : n;
+}
+
+/// Adjacent pairs worth a trial, best first, each chart in at most one.
+std::vector<MergeTrial> chooseTrials(const TriMesh& mesh, const std::vector<FlatChart>& charts,
+                                     const ChartPairs& knownBad) {
+  std::vector<int32_t> label(mesh.numFaces());
+  std::vector<Vec3> normal(charts.size());
+  for (size_t c = 0; c < charts.size(); ++c) {
+    for (int32_t f : charts[c].faces) label[f] = static_cast<int32_t>(c);
+    normal[c] = averageNormal(mesh, charts[c]);
+  }
+  std::map<std::pair<int32_t, int32_t>, double> shared;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = faceAcross(mesh, f, k);
+      if (g >= 0 && label[f] < label[g]) shared[{label[f], label[g]}] += edgeLength(mesh, f, k);
+    }
+  std::vector<MergeTrial> candidates;
+  for (const auto& [pair, length] : shared) {
+    const auto& [a, b] = pair;
+    if (dot(normal[a], normal[b]) < 0) continue;
+    if (knownBad.count(chartPair(chartKey(charts[a].faces), chartKey(charts[b].faces)))) continue;
+    candidates.push_back({a, b, std::min(charts[a].faces.size(), charts[b].faces.size()), length});
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const MergeTrial& x, const MergeTrial& y) {
+    if (x.smaller != y.smaller) return x.smaller < y.smaller;
+    if (x.shared != y.shared) return x.shared > y.shared;
+    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
+  std::vector<uint8_t> taken(charts.size(), 0);
+  std::vector<MergeTrial> trials;
+  for (const MergeTrial& t : candidates)
+    if (!taken[t.a] && !taken[t.b]) {
+      taken[t.a] = taken[t.b] = 1;
+      trials.push_back(t);
+    }
+  return trials;
+}
+
+std::vector<int32_t> unionOf(const std::vector<int32_t>& a, const std::vector<int32_t>& b) {
+  std::vector<int32_t> faces(a.size() + b.size());
+  std::merge(a.begin(), a.end(), b.begin(), b.end(), faces.begin());
+  return faces;
+}
+}  // namespace
+
+Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
+                              const ChartOptions& options, const Progress& progress) {
+  int32_t merges = 0;
+  int64_t budget = kTrialFacesPerFace * static_cast<int64_t>(mesh.numFaces());
+  while (budget > 0) {
+    std::vector<MergeTrial> trials = chooseTrials(mesh, charts, knownBad);
+    std::vector<std::vector<int32_t>> unions;
+    for (const MergeTrial& t : trials) {
+      if (budget <= 0) break;  // the trials are best first: the ones left out matter least
+      unions.push_back(unionOf(charts[t.a].faces, charts[t.b].faces));
+      budget -= static_cast<int64_t>(unions.back().size());
+    }
+    if (unions.empty()) break;
+    trials.resize(unions.size());
+    auto flattened = flattenCharts(mesh, std::move(unions), options.maxStretch, options.free, progress);
+    if (!flattened) return flattened.error();
+    std::vector<uint8_t> gone(charts.size(), 0);
+    int32_t merged = 0;
+    for (size_t i = 0; i < trials.size(); ++i) {
+      const MergeTrial& t = trials[i];
+      if (!flattened.value()[i].acceptable) {
+        knownBad.insert(chartPair(chartKey(charts[t.a].faces), chartKey(charts[t.b].faces)));
+        continue;
+      }
+      charts[t.a] = std::move(flattened.value()[i].chart);
+      gone[t.b] = 1;
+      ++merged;
+    }
+    size_t kept = 0;
+    for (size_t c = 0; c < charts.size(); ++c) {
+      if (gone[c]) continue;
+      if (kept != c) charts[kept] = std::move(charts[c]);  // never onto itself: that would empty it
+      ++kept;
+    }
+    charts.resize(kept);
+    merges += merged;
+  }
+  return merges;
+}
+
+}  // namespace straightest::atlas
