@@ -3,6 +3,7 @@
 
 import { hooks, setState } from './test-hooks.js';
 import { formatCount, formatMs } from './param-format.js';
+import { summarizeStatus } from './results-summary.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -35,6 +36,7 @@ export function describePoint(point, withCoordinates = true) {
 
 export function setStatus(text) {
   $('status').textContent = text;
+  summarizeStatus(text);
 }
 
 /** The threads the worker's WebAssembly module runs on, in the info panel. */
@@ -113,7 +115,8 @@ export function showPathStats(reply, request, drawn) {
 
   const notes = [];
   if (request.closed && count === 0) {
-    notes.push('Closed surface: click a destination.');
+    notes.push('Closed surface: no boundary to trace to. Shift+click (or tick “Clicks add destinations” ' +
+      'and click) to add a destination; a plain click moves the source.');
   } else if (request.closed) {
     // Each section through the source is a closed curve: the shorter arc is the path, the other dimmed.
     notes.push('Closed surface: each path is the shorter way round its section through the source; ' +
@@ -148,7 +151,7 @@ export function showError(err, title) {
   $('error-hint').textContent = hint;
   $('error-hint').hidden = !hint;
   $('error-panel').hidden = false;
-  setStatus('Error — see above');
+  setStatus(`Error — ${title}`);
   setState('error');
 }
 

@@ -39,6 +39,9 @@ export const hooks = {
   // the number of parameterizations shown, and the rows of the last comparison.
   param: null,
   paramError: null,
+  // The boundary the mesh on display opens with (mesh-defaults.js): { boundary, reason ('' for a disk),
+  // applied (false when the user's own choice kept the menu) }.
+  defaultBoundary: null,
   parameterizations: 0,
   compare: null,
   // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,

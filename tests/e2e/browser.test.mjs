@@ -28,6 +28,7 @@ await import('./keyboard.tests.mjs');
 await import('./figure.tests.mjs');
 await import('./formats.tests.mjs');
 await import('./threads.tests.mjs');
+await import('./layout.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
