@@ -19,6 +19,7 @@ export function createUrlSync({ session, param, points }) {
   const wanted = decodeState(location.search);
   // The mesh whose source and destinations the URL holds, until it is on display (or another is opened).
   let pending = wanted.sample || wanted.file ? wanted : null;
+  let opening = true; // the page's own first mesh (a link to a file shows the default sample meanwhile)
 
 
   function save() {
@@ -67,8 +68,11 @@ export function createUrlSync({ session, param, points }) {
      * destinations if they belong to it ({ source, destinations }, or null), and its boundary choice.
      */
     meshShown(label, info) {
+      const first = opening;
+      opening = false;
       if (!pending) return null;
       const mine = (pending.file ?? pending.sample) === label;
+      if (!mine && first && pending.file) return null; // still waiting for the link's file
       const restore = pending;
       pending = null;
       $('file-wanted').hidden = true;
