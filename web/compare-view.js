@@ -22,6 +22,7 @@ const SHORT_WEIGHTS = { 'shape-preserving': 'shape-pres.', 'mean-value': 'mean v
 export function createCompareView({ session, source, current, onChoose, onSettled }) {
   const runs = latest();
   let comparing = false; // a compare request is in flight
+  let shownRows = null; // the rows of the table on display
 
   async function run() {
     const request = runs.begin(session.meshes);
@@ -41,6 +42,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       });
       if (request.stale()) return;
       hooks.compare = reply.rows;
+      shownRows = reply.rows;
       showTable(reply.rows, reply.rows[reply.best] ?? null);
       showHint(comparisonHint(reply.rows, current()?.weights));
       const total = reply.rows.reduce((sum, row) => sum + row.timeMs, 0);
@@ -102,6 +104,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
     }
     table.hidden = false;
     $('compare-legend').hidden = false;
+    $('compare-data').hidden = false;
     markCurrent();
   }
 
@@ -136,14 +139,20 @@ export function createCompareView({ session, source, current, onChoose, onSettle
 
   return {
     markCurrent,
+    /** The rows of the table on display, or null. */
+    get rows() {
+      return shownRows;
+    },
 
     /** No table (a new mesh). */
     clear() {
       runs.supersede();
       comparing = false;
+      shownRows = null;
       $('compare-table').tBodies[0].replaceChildren();
       $('compare-table').hidden = true;
       $('compare-legend').hidden = true;
+      $('compare-data').hidden = true;
       $('compare-progress').hidden = true;
       $('compare-status').textContent = '';
       hooks.compare = null;

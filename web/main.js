@@ -30,7 +30,8 @@ import { createHeatDistance } from './heat-distance.js';
 import { poorResultHint, renderHint } from './hints.js';
 import { createKeyboard } from './keyboard.js';
 import { latest } from './latest.js';
-import { clearError, setStatus, showError, showInfo, showPathStats } from './panels.js';
+import { clearError, getIndexBase, setIndexBase, setStatus, showError, showInfo, showPathStats } from './panels.js';
+import { indexBaseOf } from './data-export.js';
 import { createParamView } from './param-view.js';
 import { createExportPanel } from './export-panel.js';
 import { createPathView } from './path-view.js';
@@ -45,6 +46,7 @@ import { makePanelsCollapsible } from './collapsible.js';
 import { pageModes } from './modes.js';
 import { summarizePaths } from './results-summary.js';
 import { createUrlSync } from './url-sync.js';
+import { createDataDownloads } from './data-downloads.js';
 import { hooks, setState } from './test-hooks.js';
 import { isCancelled } from './requests.js';
 
@@ -73,9 +75,11 @@ const progressView = createProgressView({ onCancel: () => session.cancel() });
 const session = createSession({
   observer: progressView,
   display: {
-    showMesh({ positions, indices, normals, info, label }) {
+    showMesh({ positions, indices, normals, info, label }, origin) {
+      setIndexBase(indexBaseOf(label, !!origin?.file)); // messages number vertices as the file does
       heat.reset();
       paths.clear(); // they belong to the previous mesh
+      shownPaths = null;
       summarizePaths(null);
       exactRatio.clear();
       renderHint($('paths-hint'), null);
@@ -92,6 +96,7 @@ const session = createSession({
       heat.reset();
       $('heat-toggle').checked = false;
       paths.clear();
+      shownPaths = null;
       summarizePaths(null);
       exactRatio.clear();
       renderHint($('paths-hint'), null);
@@ -105,7 +110,8 @@ geodesics = createGeodesicCompare({ session, view, surface, wanted: () => $('geo
 const exactRatio = createExactRatio({ session, source: () => pathRequest.source });
 createKeyboard(view);
 createPointEntry({
-  counts: () => (surface.mesh && session.info ? { vertices: session.info.vertices, faces: session.info.faces } : null),
+  counts: () => (surface.mesh && session.info
+    ? { vertices: session.info.vertices, faces: session.info.faces, base: getIndexBase() } : null),
   apply({ source, destinations }) {
     if (source) pathRequest.source = source;
     for (const point of destinations) pathRequest.added.push({ point, position: surfacePosition(surface.mesh, point) });
@@ -117,6 +123,10 @@ const param = createParamView({
   session, view, surface, pathSource: () => pathRequest.source, onShown: () => urlSync.save(),
 });
 createExportPanel({ session, view, surface, paths, param });
+createDataDownloads({
+  session, paths: () => shownPaths, source: () => pathRequest.source,
+  compareRows: () => param.compareRows(), exactRows: () => exactRatio.rows,
+});
 const urlSync = createUrlSync({
   session, param, points: () => ({ source: pathRequest.source, destinations: pathRequest.added.map(({ point }) => point) }),
 });
@@ -130,6 +140,7 @@ const pathRequest = {
   added: [], // [{ point: {face, bary}, position: THREE.Vector3 }]
 };
 const traces = latest(); // only the most recent trace may update the view
+let shownPaths = null; // the 'paths' reply on display (the data downloads)
 
 function closedMesh() {
   return (session.info?.boundaryLoops ?? []).length === 0;
@@ -168,6 +179,7 @@ async function tracePaths() {
     if (current.stale()) return;
     hooks.traces += 1;
     paths.show(reply, pathRequest.added.map(({ position }) => position));
+    shownPaths = reply;
     const { plain, stride } = paths.shown;
     showPathStats(reply, {
       isDefault: pathRequest.source === 'auto',

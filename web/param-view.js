@@ -615,6 +615,8 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     get boundaryChosen() {
       return boundaryChosen;
     },
+    /** The Compare table's rows on display, or null. */
+    compareRows: () => compare.rows,
     /** The options of the runs on display: { source, weights } (the figure uses the same). */
     options: () => ({ source: sourceOption(), weights: $('weights-select').value }),
     currentLayout,

@@ -61,7 +61,7 @@ export function createSession({ observer, display }) {
       label = reply.label;
       hooks.lastInfo = reply.info;
       meshes.supersede();
-      display.showMesh(reply);
+      display.showMesh(reply, origin);
       emit('meshchange');
       clearError();
       hooks.lastError = null;

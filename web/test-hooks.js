@@ -50,6 +50,9 @@ export const hooks = {
   // The images saved (export-panel.js), in order: { kind: 'view' | 'figure' | 'layout-png' | 'layout-svg',
   // name, width, height (device pixels; cssWidth, cssHeight for the view), bytes (SVG) }.
   exports: [],
+  // The data downloads (data-downloads.js), in order: { what: 'paths' | 'distances' | 'compare' |
+  // 'exact-ratio', ext: 'csv' | 'json' }.
+  dataExports: [],
   // The progress panel: busy while a job runs (and its bars linger), the number of jobs and progress
   // messages, the largest fraction each stage ('type:stage') of the current (or last) job reached,
   // and when (ms after the job began) it was first reported and reached 100%.

@@ -30,6 +30,7 @@ await import('./formats.tests.mjs');
 await import('./threads.tests.mjs');
 await import('./layout.tests.mjs');
 await import('./state.tests.mjs');
+await import('./data.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
