@@ -71,7 +71,13 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
     $('geo-plane-length').textContent = formatNumber(plane.length);
     $('geo-plane-note').textContent = statusWords(plane.status);
     $('geo-plane-note').title = plane.status; // the core's code
+    // The shot walks a length it is given (the plane path's, or the exact distance when that failed):
+    // an input, not a result — shown muted, the miss distance beside it is the result.
     $('geo-shot-length').textContent = formatNumber(shot.length);
+    $('geo-shot-length').className = 'muted';
+    $('geo-shot-length').title = plane.status === 'reached'
+      ? 'the length the shot was given: the cutting-plane path’s (equal by construction)'
+      : 'the length the shot was given: the exact distance';
     $('geo-shot-note').textContent = `misses by ${formatNumber(shot.missDistance)} (${statusWords(shot.status)})`;
     $('geo-shot-note').title = shot.status;
     $('geo-exact-length').textContent = formatNumber(exact.distance);
