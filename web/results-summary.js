@@ -7,12 +7,6 @@ import { formatCount, formatMetric, formatMs } from './param-format.js';
 
 const $ = (id) => document.getElementById(id);
 
-// The bar lies over the view (its height never resizes the canvas): what sits under it — the
-// progress panel, figure mode — moves down by its height (--bar-height).
-new ResizeObserver(([entry]) => {
-  $('workspace').style.setProperty('--bar-height', `${Math.ceil(entry.borderBoxSize[0].blockSize)}px`);
-}).observe($('mode-bar'));
-
 let pathsTime = ''; // the parts of the Time item: the last trace's and the last parameterization's
 let paramTime = '';
 
