@@ -11,6 +11,9 @@ import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 
 const $ = (id) => document.getElementById(id);
 
+// The weights column's words, short enough for the side panel (each cell's title has the full name).
+const SHORT_WEIGHTS = { 'shape-preserving': 'shape-pres.', 'mean-value': 'mean val.', cotan: 'cotan', uniform: 'uniform' };
+
 /**
  * session: session.js; source(): the source option of the runs; current(): the parameterization on
  * display ({ boundary, weights } or null); onChoose(boundary, weights): a row was clicked;
@@ -19,6 +22,7 @@ const $ = (id) => document.getElementById(id);
 export function createCompareView({ session, source, current, onChoose, onSettled }) {
   const runs = latest();
   let comparing = false; // a compare request is in flight
+  let shownRows = null; // the rows of the table on display
 
   async function run() {
     const request = runs.begin(session.meshes);
@@ -38,6 +42,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       });
       if (request.stale()) return;
       hooks.compare = reply.rows;
+      shownRows = reply.rows;
       showTable(reply.rows, reply.rows[reply.best] ?? null);
       showHint(comparisonHint(reply.rows, current()?.weights));
       const total = reply.rows.reduce((sum, row) => sum + row.timeMs, 0);
@@ -64,7 +69,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       header.className = 'group';
       const th = document.createElement('th');
       th.scope = 'rowgroup';
-      th.colSpan = 7;
+      th.colSpan = 6;
       th.innerHTML = '<span class="dot"></span>';
       th.firstChild.style.background = BOUNDARY_COLORS[boundary];
       th.append(`${boundary} boundary`);
@@ -79,23 +84,27 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         const start = row.init === 'measured' ? 'meas.' : row.init;
         const refine = row.init ? `${start} ${row.iterations}${row.converged ? '' : '+'}` : '–';
         const cells = row.error
-          ? [WEIGHT_LABELS[row.weights], 'failed', '', '', '', '', formatMs(row.timeMs, '')]
-          : [WEIGHT_LABELS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
-            String(row.flipped + row.degenerate), String(row.overlaps), refine,
-            formatMs(row.timeMs, '')];
+          ? [SHORT_WEIGHTS[row.weights], 'failed', '', '', '', formatMs(row.timeMs, '')]
+          : [SHORT_WEIGHTS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
+            `${row.flipped + row.degenerate}/${row.overlaps}`, refine, formatMs(row.timeMs, '')];
         for (const text of cells) tr.insertCell().textContent = text;
+        tr.cells[0].title = WEIGHT_LABELS[row.weights];
+        if (!row.error) {
+          tr.cells[3].title = `${row.flipped} flipped, ${row.degenerate} degenerate faces; ${row.overlaps} pairs of ` +
+            'boundary edges crossing';
+        }
         if (best && row.boundary === best.boundary && row.weights === best.weights) tr.classList.add('best');
         if (row.error) tr.classList.add('failed');
-        if (!row.error && row.flipped + row.degenerate > 0) tr.cells[3].classList.add('bad');
-        if (!row.error && row.overlaps > 0) tr.cells[4].classList.add('bad');
+        if (!row.error && row.flipped + row.degenerate + row.overlaps > 0) tr.cells[3].classList.add('bad');
         if (row.init) {
-          tr.cells[5].title = `refined from the ${row.init} map in ${row.iterations} iterations` +
+          tr.cells[4].title = `refined from the ${row.init} map in ${row.iterations} iterations` +
             (row.converged ? '' : ' (stopped by the iteration cap or the time budget)');
         }
       }
     }
     table.hidden = false;
     $('compare-legend').hidden = false;
+    $('compare-data').hidden = false;
     markCurrent();
   }
 
@@ -130,14 +139,20 @@ export function createCompareView({ session, source, current, onChoose, onSettle
 
   return {
     markCurrent,
+    /** The rows of the table on display, or null. */
+    get rows() {
+      return shownRows;
+    },
 
     /** No table (a new mesh). */
     clear() {
       runs.supersede();
       comparing = false;
+      shownRows = null;
       $('compare-table').tBodies[0].replaceChildren();
       $('compare-table').hidden = true;
       $('compare-legend').hidden = true;
+      $('compare-data').hidden = true;
       $('compare-progress').hidden = true;
       $('compare-status').textContent = '';
       hooks.compare = null;

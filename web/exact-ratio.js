@@ -7,6 +7,8 @@
 import { latest } from './latest.js';
 import { isCancelled } from './requests.js';
 import { hooks } from './test-hooks.js';
+import { statusWords } from './data-export.js';
+import { getIndexBase } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
 const SVG = 'http://www.w3.org/2000/svg';
@@ -107,9 +109,11 @@ export function createExactRatio({ session, source }) {
     table.tBodies[0].replaceChildren(...sorted.map((row) => {
       const tr = document.createElement('tr');
       if (row.status !== 'reached') tr.className = 'failed';
-      for (const text of [row.index + 1, row.vertex, format(row.straightest), format(row.exact), format(row.ratio, 7), row.status]) {
+      for (const text of [row.index + 1, row.vertex + getIndexBase(), format(row.straightest), format(row.exact), format(row.ratio, 7),
+        statusWords(row.status)]) {
         tr.insertCell().textContent = String(text);
       }
+      tr.cells[5].title = row.status; // the core's code
       return tr;
     }));
   }
@@ -175,6 +179,10 @@ export function createExactRatio({ session, source }) {
 
   return {
     clear,
+    /** The table's rows on display ({ index, vertex, straightest, exact, ratio, status }), or null. */
+    get rows() {
+      return rows.length ? rows : null;
+    },
     /** The paths were traced from `resolved`: a plot of another source is out of date. */
     sourceChanged(resolved) {
       if (shownSource !== null && shownSource !== JSON.stringify(resolved)) clear();

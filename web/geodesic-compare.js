@@ -11,6 +11,8 @@ import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { latest } from './latest.js';
 import { isCancelled } from './requests.js';
 import { hooks } from './test-hooks.js';
+import { statusWords } from './data-export.js';
+import { describePoint } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
 /** Six significant digits: the three lengths often agree in the first few. */
@@ -65,11 +67,19 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
 
   function showTable(reply, vertex) {
     const { exact, plane, shot } = reply;
-    $('geo-target').textContent = `vertex ${vertex}`;
+    $('geo-target').textContent = describePoint(vertex);
     $('geo-plane-length').textContent = formatNumber(plane.length);
-    $('geo-plane-note').textContent = plane.status === 'reached' ? 'reached' : plane.status;
+    $('geo-plane-note').textContent = statusWords(plane.status);
+    $('geo-plane-note').title = plane.status; // the core's code
+    // The shot walks a length it is given (the plane path's, or the exact distance when that failed):
+    // an input, not a result — shown muted, the miss distance beside it is the result.
     $('geo-shot-length').textContent = formatNumber(shot.length);
-    $('geo-shot-note').textContent = `misses by ${formatNumber(shot.missDistance)} (${shot.status})`;
+    $('geo-shot-length').className = 'muted';
+    $('geo-shot-length').title = plane.status === 'reached'
+      ? 'the length the shot was given: the cutting-plane path’s (equal by construction)'
+      : 'the length the shot was given: the exact distance';
+    $('geo-shot-note').textContent = `misses by ${formatNumber(shot.missDistance)} (${statusWords(shot.status)})`;
+    $('geo-shot-note').title = shot.status;
     $('geo-exact-length').textContent = formatNumber(exact.distance);
     $('geo-exact-note').textContent = Number.isFinite(exact.distance) && exact.distance > 0
       ? `plane ÷ exact ${(plane.length / exact.distance).toFixed(4)}` : '';

@@ -20,8 +20,8 @@
 //
 // After a mesh loads, the page asks the worker for the straightest paths from the default source to
 // every boundary vertex and draws them (the paper's Figure 1 view); clicking the mesh moves the
-// source, shift-clicking adds a destination. A closed surface has no boundary: nothing is traced
-// until its first click, which picks a destination; both ways round each section are drawn. Once the paths are drawn, the parameterization view
+// source, shift-clicking adds a destination, on every kind of mesh. A closed surface has no boundary:
+// nothing is traced until a destination is added; both ways round each section are drawn. Once the paths are drawn, the parameterization view
 // flattens the mesh.
 
 import { createExactRatio } from './exact-ratio.js';
@@ -30,7 +30,8 @@ import { createHeatDistance } from './heat-distance.js';
 import { poorResultHint, renderHint } from './hints.js';
 import { createKeyboard } from './keyboard.js';
 import { latest } from './latest.js';
-import { clearError, setStatus, showError, showInfo, showPathStats } from './panels.js';
+import { clearError, getIndexBase, setIndexBase, setStatus, showError, showInfo, showPathStats } from './panels.js';
+import { indexBaseOf } from './data-export.js';
 import { createParamView } from './param-view.js';
 import { createExportPanel } from './export-panel.js';
 import { createPathView } from './path-view.js';
@@ -41,11 +42,18 @@ import { createView } from './scene.js';
 import { autoUpAxis } from './up-axis.js';
 import { createSession } from './session.js';
 import { createSurfaceView } from './surface-view.js';
+import { makePanelsCollapsible } from './collapsible.js';
+import { pageModes } from './modes.js';
+import { summarizePaths } from './results-summary.js';
+import { createUrlSync } from './url-sync.js';
+import { createDataDownloads } from './data-downloads.js';
 import { hooks, setState } from './test-hooks.js';
 import { isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
 
+makePanelsCollapsible($('side-panel'));
+pageModes(); // the tabs over the view: the 3D surface, and the modes added later register there
 const view = createView({ canvas: $('view-canvas'), viewport: $('viewport') });
 const surface = createSurfaceView(view);
 let picking = null; // created below: hovering needs the path view, the path view tells it when paths go
@@ -54,9 +62,10 @@ const paths = createPathView(view, { onClear: () => { picking?.hide(); geodesics
 picking = createPicking({
   view, surface, paths, tooltip: $('path-tooltip'),
   onPick: (picked, add) => {
-    // A closed surface has no boundary destinations: its first click picks a destination. The
-    // "Clicks add destinations" toggle is shift+click for touch screens.
-    if (add || $('pick-destination-toggle').checked || (closedMesh() && pathRequest.added.length === 0)) pathRequest.added.push(picked);
+    // As the panel says, on every mesh: a click moves the source, shift+click adds a destination (a
+    // closed surface, which has no boundary destinations, says so in its note). The "Clicks add
+    // destinations" toggle is shift+click for touch screens.
+    if (add || $('pick-destination-toggle').checked) pathRequest.added.push(picked);
     else pathRequest.source = picked.point;
     tracePaths();
   },
@@ -66,25 +75,33 @@ const progressView = createProgressView({ onCancel: () => session.cancel() });
 const session = createSession({
   observer: progressView,
   display: {
-    showMesh({ positions, indices, normals, info, label }) {
+    showMesh({ positions, indices, normals, info, label }, origin) {
+      setIndexBase(indexBaseOf(label, !!origin?.file)); // messages number vertices as the file does
       heat.reset();
       paths.clear(); // they belong to the previous mesh
+      shownPaths = null;
+      summarizePaths(null);
       exactRatio.clear();
       renderHint($('paths-hint'), null);
       surface.show(positions, indices, normals);
+      document.body.dataset.mesh = label; // hides the loading overlay over the view
       setUpAxis(info.bbox);
       view.frameBox(info.bbox);
       showInfo(info, label);
       view.requestRender(); // shows the mesh if tracing takes longer than a frame
       resetPathRequest();
+      restorePoints(urlSync.meshShown(label, info)); // a shared link's source and destinations
     },
     dropMesh() {
       heat.reset();
       $('heat-toggle').checked = false;
       paths.clear();
+      shownPaths = null;
+      summarizePaths(null);
       exactRatio.clear();
       renderHint($('paths-hint'), null);
       surface.remove();
+      delete document.body.dataset.mesh;
     },
     showPaths: () => tracePaths(),
   },
@@ -93,7 +110,8 @@ geodesics = createGeodesicCompare({ session, view, surface, wanted: () => $('geo
 const exactRatio = createExactRatio({ session, source: () => pathRequest.source });
 createKeyboard(view);
 createPointEntry({
-  counts: () => (surface.mesh && session.info ? { vertices: session.info.vertices, faces: session.info.faces } : null),
+  counts: () => (surface.mesh && session.info
+    ? { vertices: session.info.vertices, faces: session.info.faces, base: getIndexBase() } : null),
   apply({ source, destinations }) {
     if (source) pathRequest.source = source;
     for (const point of destinations) pathRequest.added.push({ point, position: surfacePosition(surface.mesh, point) });
@@ -101,8 +119,17 @@ createPointEntry({
   },
 });
 const heat = createHeatDistance({ session, surface, paths, wanted: () => $('heat-toggle').checked });
-const param = createParamView({ session, view, surface, pathSource: () => pathRequest.source });
+const param = createParamView({
+  session, view, surface, pathSource: () => pathRequest.source, onShown: () => urlSync.save(),
+});
 createExportPanel({ session, view, surface, paths, param });
+createDataDownloads({
+  session, paths: () => shownPaths, source: () => pathRequest.source,
+  compareRows: () => param.compareRows(), exactRows: () => exactRatio.rows,
+});
+const urlSync = createUrlSync({
+  session, param, points: () => ({ source: pathRequest.source, destinations: pathRequest.added.map(({ point }) => point) }),
+});
 
 // ------------------------------------------------------------------ straightest paths
 
@@ -113,6 +140,7 @@ const pathRequest = {
   added: [], // [{ point: {face, bary}, position: THREE.Vector3 }]
 };
 const traces = latest(); // only the most recent trace may update the view
+let shownPaths = null; // the 'paths' reply on display (the data downloads)
 
 function closedMesh() {
   return (session.info?.boundaryLoops ?? []).length === 0;
@@ -132,6 +160,13 @@ function resetPathRequest() {
   picking.hide();
 }
 
+/** Takes a shared link's { source, destinations } (or null) for the mesh just shown. */
+function restorePoints(points) {
+  if (!points) return;
+  pathRequest.source = points.source;
+  pathRequest.added = points.destinations.map((point) => ({ point, position: surfacePosition(surface.mesh, point) }));
+}
+
 /** Asks the worker for the paths of `pathRequest` and draws them; the page is 'ready' afterwards. */
 async function tracePaths() {
   if (!surface.mesh) return;
@@ -144,6 +179,7 @@ async function tracePaths() {
     if (current.stale()) return;
     hooks.traces += 1;
     paths.show(reply, pathRequest.added.map(({ position }) => position));
+    shownPaths = reply;
     const { plain, stride } = paths.shown;
     showPathStats(reply, {
       isDefault: pathRequest.source === 'auto',
@@ -151,6 +187,7 @@ async function tracePaths() {
       added: pathRequest.added.length,
       closed: closedMesh(),
     }, { plain, stride });
+    summarizePaths(reply);
     hooks.paths = {
       count: reply.count,
       reached: reply.reached,
@@ -165,6 +202,7 @@ async function tracePaths() {
     geodesics.update(reply.source, pathRequest.added.at(-1) ?? null); // reports its own failure
     exactRatio.sourceChanged(reply.source);
     showPathsHint(reply);
+    urlSync.save();
     stage = 'compute the heat distances';
     if ($('heat-toggle').checked) await heat.show();
     if (current.stale()) return;
@@ -201,6 +239,7 @@ session.addEventListener('cancel', () => {
 // ------------------------------------------------------------------ controls
 
 $('sample-select').addEventListener('change', (event) => {
+  // (Another mesh than a shared link's: urlSync.meshShown drops the link's points when it shows.)
   if (event.target.value) session.loadSample(event.target.value);
 });
 
@@ -270,4 +309,5 @@ viewport.addEventListener('drop', (event) => {
   if (file) session.loadFile(file);
 });
 
-session.start();
+urlSync.applyOptions();
+session.start((samples) => urlSync.initialSample(samples));

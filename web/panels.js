@@ -3,6 +3,8 @@
 
 import { hooks, setState } from './test-hooks.js';
 import { formatCount, formatMs } from './param-format.js';
+import { summarizeStatus } from './results-summary.js';
+import { statusWords } from './data-export.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -19,13 +21,27 @@ export function formatNumber(x) {
   return Number.isInteger(x) ? formatCount(x) : String(Number(x.toPrecision(3)));
 }
 
-/** 'vertex 12', 'face 34, barycentric (0.20, 0.30, 0.50)' (or just 'face 34' without the coordinates), … */
+// Vertex and face numbers as the file on display counts them: from 1 for an OBJ file, else from 0
+// (the core's). setIndexBase is called with each new mesh.
+let indexBase = 0;
+export function setIndexBase(base) {
+  indexBase = base;
+}
+export function getIndexBase() {
+  return indexBase;
+}
+
+/**
+ * 'vertex 12', 'face 34, barycentric (0.20, 0.30, 0.50)' (or just 'face 34' without the coordinates), …
+ * numbered as the file counts (setIndexBase).
+ */
 export function describePoint(point, withCoordinates = true) {
-  if (typeof point === 'number') return `vertex ${point}`;
-  if (typeof point?.vertex === 'number') return `vertex ${point.vertex}`;
+  if (typeof point === 'number') return `vertex ${point + indexBase}`;
+  if (typeof point?.vertex === 'number') return `vertex ${point.vertex + indexBase}`;
   if (typeof point?.face === 'number') {
     const bary = point.bary.map((b) => b.toFixed(2)).join(', ');
-    return withCoordinates ? `face ${point.face}, barycentric (${bary})` : `face ${point.face}`;
+    const face = point.face + indexBase;
+    return withCoordinates ? `face ${face}, barycentric (${bary})` : `face ${face}`;
   }
   if (typeof point?.halfedge === 'number') {
     return withCoordinates ? `halfedge ${point.halfedge}, t = ${point.t.toFixed(2)}` : `halfedge ${point.halfedge}`;
@@ -35,6 +51,7 @@ export function describePoint(point, withCoordinates = true) {
 
 export function setStatus(text) {
   $('status').textContent = text;
+  summarizeStatus(text);
 }
 
 /** The threads the worker's WebAssembly module runs on, in the info panel. */
@@ -94,7 +111,8 @@ export function showPathStats(reply, request, drawn) {
   list.replaceChildren(...failures.map(([status, n]) => {
     const item = document.createElement('li');
     item.innerHTML = `<code></code> <span></span>`;
-    item.firstChild.textContent = status;
+    item.firstChild.textContent = statusWords(status);
+    item.firstChild.title = status; // the core's code
     item.lastChild.textContent = formatCount(n);
     return item;
   }));
@@ -113,14 +131,15 @@ export function showPathStats(reply, request, drawn) {
 
   const notes = [];
   if (request.closed && count === 0) {
-    notes.push('Closed surface: click a destination.');
+    notes.push('Closed surface: no boundary to trace to. Shift+click (or tick “Clicks add destinations” ' +
+      'and click) to add a destination; a plain click moves the source.');
   } else if (request.closed) {
     // Each section through the source is a closed curve: the shorter arc is the path, the other dimmed.
     notes.push('Closed surface: each path is the shorter way round its section through the source; ' +
       'the other way is dimmed. Click to move the source, shift+click to add destinations.');
     for (let i = 0; i < Math.min(count, 3); i++) {
       const other = reply.otherArcLengths[i];
-      notes.push(reply.statuses[i] !== 'reached' ? `Path ${i + 1}: ${reply.statuses[i]}.`
+      notes.push(reply.statuses[i] !== 'reached' ? `Path ${i + 1}: ${statusWords(reply.statuses[i])} (${reply.statuses[i]}).`
         : `Path ${i + 1}: ${formatNumber(reply.lengths[i])} ${reply.backward[i] ? 'backward' : 'forward'}` +
           (Number.isFinite(other) ? `, the other way round ${formatNumber(other)}.` : '.'));
     }
@@ -148,7 +167,7 @@ export function showError(err, title) {
   $('error-hint').textContent = hint;
   $('error-hint').hidden = !hint;
   $('error-panel').hidden = false;
-  setStatus('Error — see above');
+  setStatus(`Error — ${title}`);
   setState('error');
 }
 

@@ -26,6 +26,8 @@ import { isCancelled } from './requests.js';
 import { parameterizationHint, renderHint } from './hints.js';
 import { download } from './image-export.js';
 import { glbFromGeometry } from './mesh-files.js';
+import { summarizeParameterization } from './results-summary.js';
+import { defaultBoundary } from './mesh-defaults.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -48,12 +50,16 @@ const BOUNDARY_CHOICES = {
 
 /**
  * session: session.js (request, events, the mesh on display); view: scene.js; surface:
- * surface-view.js; pathSource(): the source of the straightest paths ('auto' or a SurfacePoint).
+ * surface-view.js; pathSource(): the source of the straightest paths ('auto' or a SurfacePoint);
+ * onShown(): a parameterization is on display (the URL follows its options).
  */
-export function createParamView({ session, view, surface, pathSource }) {
+export function createParamView({ session, view, surface, pathSource, onShown = () => {} }) {
   let shown = null; // { reply } of the parameterization on display (for the current mesh)
   const runs = latest(); // only the most recent parameterize request may update the view
   let running = false; // a parameterize request is in flight
+  // The Boundary menu follows each new mesh's default (mesh-defaults.js) until the user picks one
+  // (the menu, a Compare row, a shared link); from then on the choice stays across meshes.
+  let boundaryChosen = false;
 
   const large = () => (session.info?.vertices ?? 0) > LARGE_MESH_VERTICES;
 
@@ -198,6 +204,22 @@ export function createParamView({ session, view, surface, pathSource }) {
     select.value = [...kinds, 'auto'].includes(chosen) ? chosen : kinds[0];
   }
 
+  /** A new mesh: its default boundary, unless the user chose one; says why when it is not measured. */
+  function applyDefaultBoundary() {
+    const select = $('boundary-select');
+    const why = $('param-why');
+    const kinds = [...select.options].map((o) => o.value);
+    const { boundary, reason } = defaultBoundary(session.info, kinds);
+    hooks.defaultBoundary = { boundary, reason, applied: !boundaryChosen };
+    if (boundaryChosen) {
+      why.hidden = true;
+      return;
+    }
+    select.value = boundary;
+    why.textContent = reason;
+    why.hidden = !reason;
+  }
+
   function clearStats() {
     for (const field of statsFields) {
       const dd = $(`param-${field}`);
@@ -314,6 +336,8 @@ export function createParamView({ session, view, surface, pathSource }) {
     source: sourceOption,
     current: () => shown?.reply ?? null,
     onChoose(boundary, weights) {
+      boundaryChosen = true;
+      $('param-why').hidden = true;
       $('boundary-select').value = boundary;
       $('weights-select').value = weights;
       parameterize();
@@ -335,7 +359,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     try {
       const reply = await session.request('parameterize', options);
       if (request.stale()) return;
-      show(reply, options.boundary);
+      show(reply, options.boundary, options.weights);
     } catch (err) {
       if (request.stale() || isCancelled(err)) return;
       showFailure(err);
@@ -344,11 +368,11 @@ export function createParamView({ session, view, surface, pathSource }) {
     }
   }
 
-  function show(reply, requested) {
+  function show(reply, requested, requestedWeights = reply.weights) {
     const cut = reply.cut !== 'disk';
     if (cut) surface.mesh.geometry.deleteAttribute('uv');
     else applyUV(surface.mesh.geometry, reply.uv);
-    shown = { reply, split: cut ? splitGeometry(reply) : null };
+    shown = { reply, requested, requestedWeights, split: cut ? splitGeometry(reply) : null };
     showSeam(reply.seam);
     stretch.setStretch(reply.faceStretch);
     hooks.param = {
@@ -370,6 +394,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     hooks.paramError = null;
     hooks.parameterizations += 1;
     showStats(reply, requested);
+    summarizeParameterization(reply, requested);
     const failed = reply.overlays.filter((o) => o.error);
     showNote([cutNote(reply), ...failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`)]
       .filter(Boolean).join(' '));
@@ -380,6 +405,7 @@ export function createParamView({ session, view, surface, pathSource }) {
     redrawLayout();
     compare.markCurrent();
     setButtons();
+    onShown();
   }
 
   function showFailure(err) {
@@ -409,6 +435,7 @@ export function createParamView({ session, view, surface, pathSource }) {
   function forget() {
     showHint(null);
     shown = null;
+    summarizeParameterization(null);
     hideSeam();
     hooks.param = null;
     stretch.setStretch(null);
@@ -479,6 +506,7 @@ export function createParamView({ session, view, surface, pathSource }) {
   session.addEventListener('meshchange', () => {
     clearTimeout(rerunTimer); // the options' re-run was for the previous mesh
     fillBoundaryMenu();
+    if (surface.mesh) applyDefaultBoundary();
     runs.supersede();
     running = false;
     forget();
@@ -517,6 +545,9 @@ export function createParamView({ session, view, surface, pathSource }) {
       running = false;
       showNote('Parameterization cancelled.', 'note');
       if (shown) {
+        // The menus say what is on display again, not the options of the run that was stopped.
+        $('boundary-select').value = shown.requested;
+        $('weights-select').value = shown.requestedWeights;
         $('param-panel').dataset.state = 'done';
       } else {
         delete $('param-panel').dataset.state;
@@ -536,6 +567,10 @@ export function createParamView({ session, view, surface, pathSource }) {
   for (const id of ['boundary-select', 'weights-select', 'param-source-toggle']) {
     $(id).addEventListener('change', () => optionsChanged());
   }
+  $('boundary-select').addEventListener('change', () => {
+    boundaryChosen = true;
+    $('param-why').hidden = true;
+  });
   $('export-obj-button').addEventListener('click', () => exportObj());
   $('export-glb-button').addEventListener('click', () => exportGlb());
   $('texture-select').addEventListener('change', () => updateTexture());
@@ -568,6 +603,20 @@ export function createParamView({ session, view, surface, pathSource }) {
   redrawLayout();
 
   return {
+    /** Sets the Boundary menu as the user's choice (a shared link): it no longer follows each mesh's default. */
+    chooseBoundary(boundary) {
+      fillBoundaryMenu();
+      if (![...$('boundary-select').options].some((o) => o.value === boundary)) return;
+      $('boundary-select').value = boundary;
+      boundaryChosen = true;
+      $('param-why').hidden = true;
+    },
+    /** Whether the Boundary menu is the user's choice (else each mesh's default). */
+    get boundaryChosen() {
+      return boundaryChosen;
+    },
+    /** The Compare table's rows on display, or null. */
+    compareRows: () => compare.rows,
     /** The options of the runs on display: { source, weights } (the figure uses the same). */
     options: () => ({ source: sourceOption(), weights: $('weights-select').value }),
     currentLayout,

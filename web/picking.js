@@ -5,11 +5,12 @@
 import * as THREE from 'three';
 import { describePoint, formatNumber } from './panels.js';
 import { formatCount } from './param-format.js';
+import { statusWords } from './data-export.js';
 
-// How the tooltip names a trace status (the core's names, st.traceStatuses); any other: "(partial path)".
+// How the tooltip names a trace status: in words (data-export.js), with the core's code after a failure.
 const STATUS_TEXT = {
   reached: 'reached',
-  other_component: 'other_component: the section through the source misses it (drawn: the loop back)',
+  other_component: 'destination on another loop of the section (other_component): drawn, the loop back',
 };
 
 /**
@@ -87,7 +88,7 @@ export function createPicking({ view, surface, paths, tooltip, onPick }) {
     title.textContent = `Path ${i + 1} of ${reply.count} → ${describePoint(reply.targets[i])}`;
     const state = document.createElement('span');
     state.className = status === 'reached' ? 'reached' : 'failed';
-    state.textContent = STATUS_TEXT[status] ?? `${status} (partial path)`;
+    state.textContent = STATUS_TEXT[status] ?? `${statusWords(status)} (${status}; partial path)`;
     const details = document.createElement('span');
     // Closed surfaces: which way round the section the path leaves, and the other way's length.
     const other = reply.otherArcLengths?.[i];

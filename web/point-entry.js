@@ -8,10 +8,11 @@ const ENTRY = /^(?:f(?:ace)?\s*(\d+)\s*\(?\s*([^\s,()]+)[\s,]+([^\s,()]+)[\s,]+(
 const SEPARATOR = /^[\s,;]+/;
 
 /**
- * The surface points in `text`, in order: { vertex } or { face, bary } (bary normalized to sum 1).
- * counts: { vertices, faces } of the mesh. Throws an Error naming the first bad entry.
+ * The surface points in `text`, in order: { vertex } or { face, bary } (bary normalized to sum 1), in
+ * the core's numbering. counts: { vertices, faces, base } of the mesh — base: the first number as the
+ * file counts (1 for OBJ, 0 otherwise), what the user types. Throws an Error naming the first bad entry.
  */
-export function parsePoints(text, { vertices, faces }) {
+export function parsePoints(text, { vertices, faces, base = 0 }) {
   const points = [];
   let rest = String(text).trim();
   while (rest.length) {
@@ -20,17 +21,19 @@ export function parsePoints(text, { vertices, faces }) {
     const [whole, face, b0, b1, b2, vertex] = match;
     if (vertex !== undefined) {
       const v = Number(vertex);
-      if (v >= vertices) throw new Error(`vertex ${v} does not exist: the mesh has vertices 0 to ${vertices - 1}`);
-      points.push({ vertex: v });
+      if (v < base || v >= vertices + base) {
+        throw new Error(`vertex ${v} does not exist: the mesh has vertices ${base} to ${vertices - 1 + base}`);
+      }
+      points.push({ vertex: v - base });
     } else {
       const f = Number(face);
-      if (f >= faces) throw new Error(`face ${f} does not exist: the mesh has faces 0 to ${faces - 1}`);
+      if (f < base || f >= faces + base) throw new Error(`face ${f} does not exist: the mesh has faces ${base} to ${faces - 1 + base}`);
       const bary = [b0, b1, b2].map(Number);
       const total = bary[0] + bary[1] + bary[2];
       if (bary.some((b) => !Number.isFinite(b) || b < 0) || !(total > 0)) {
         throw new Error(`face ${f}: barycentric coordinates must be three numbers ≥ 0, not all 0`);
       }
-      points.push({ face: f, bary: bary.map((b) => b / total) });
+      points.push({ face: f - base, bary: bary.map((b) => b / total) });
     }
     rest = rest.slice(whole.length);
     if (rest.length) {

@@ -206,7 +206,7 @@ export function createRequests({ observer = null } = {}) {
       const [meshInfo, positions, indices, normals] = await step(() => Promise.all([
         made.info(), made.positions(), made.indices(), made.vertexNormals()]));
       return {
-        type: 'mesh', mesh: made, label, positions: Float32Array.from(positions), indices, normals, info: meshInfo,
+        type: 'mesh', mesh: made, label, positions: new Float32Array(positions), indices, normals, info: meshInfo,
         timeMs: performance.now() - start,
       };
     } catch (err) {
@@ -243,7 +243,7 @@ export function createRequests({ observer = null } = {}) {
       const result = await step(() => requireMesh().straightestPaths(options));
       progress.update('upload', 0);
       return {
-        ...result, type: 'paths', targetPositions: Float32Array.from(result.targetPositions), timeMs: performance.now() - start,
+        ...result, type: 'paths', targetPositions: new Float32Array(result.targetPositions), timeMs: performance.now() - start,
       };
     },
 
@@ -251,7 +251,7 @@ export function createRequests({ observer = null } = {}) {
       const start = performance.now();
       const heat = await step(() => requireMesh().geodesicDistances(source, 'heat')); // no progress in the API
       progress.update('upload', 0);
-      const distances = Float32Array.from(heat);
+      const distances = new Float32Array(heat); // (a typed array's own copy: far faster than from())
       let max = 0;
       for (const d of distances) if (Number.isFinite(d) && d > max) max = d;
       return { type: 'distances', source, distances, max, timeMs: performance.now() - start };

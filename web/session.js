@@ -61,7 +61,7 @@ export function createSession({ observer, display }) {
       label = reply.label;
       hooks.lastInfo = reply.info;
       meshes.supersede();
-      display.showMesh(reply);
+      display.showMesh(reply, origin);
       emit('meshchange');
       clearError();
       hooks.lastError = null;
@@ -148,8 +148,11 @@ export function createSession({ observer, display }) {
     }
   }
 
-  /** Starts the worker, lists its samples and loads the first one. */
-  async function start() {
+  /**
+   * Starts the worker, lists its samples and loads one: preferredSample(samples) if it names one (a
+   * shared link's), else mountain.
+   */
+  async function start(preferredSample = () => null) {
     setState('loading');
     try {
       const ready = await requests.start();
@@ -160,7 +163,7 @@ export function createSession({ observer, display }) {
       showThreads(ready.threads);
       const select = $('sample-select');
       select.replaceChildren(...samples.map((name) => new Option(name, name)));
-      select.value = samples.includes('mountain') ? 'mountain' : samples[0];
+      select.value = preferredSample(samples) ?? (samples.includes('mountain') ? 'mountain' : samples[0]);
       select.disabled = false;
       await loadSample(select.value);
     } catch (err) {
@@ -177,6 +180,10 @@ export function createSession({ observer, display }) {
     addEventListener: events.addEventListener.bind(events),
     /** The channel of meshes on display: requests watch it (latest.js) to drop replies for an older mesh. */
     meshes,
+    /** Where the mesh on display came from: { sample } or { file } (a File), or null. */
+    get origin() {
+      return displayed;
+    },
     /** The sample or file name of the mesh on display ('' for none). */
     get label() {
       return label;

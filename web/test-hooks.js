@@ -39,6 +39,9 @@ export const hooks = {
   // the number of parameterizations shown, and the rows of the last comparison.
   param: null,
   paramError: null,
+  // The boundary the mesh on display opens with (mesh-defaults.js): { boundary, reason ('' for a disk),
+  // applied (false when the user's own choice kept the menu) }.
+  defaultBoundary: null,
   parameterizations: 0,
   compare: null,
   // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,
@@ -47,6 +50,9 @@ export const hooks = {
   // The images saved (export-panel.js), in order: { kind: 'view' | 'figure' | 'layout-png' | 'layout-svg',
   // name, width, height (device pixels; cssWidth, cssHeight for the view), bytes (SVG) }.
   exports: [],
+  // The data downloads (data-downloads.js), in order: { what: 'paths' | 'distances' | 'compare' |
+  // 'exact-ratio', ext: 'csv' | 'json' }.
+  dataExports: [],
   // The progress panel: busy while a job runs (and its bars linger), the number of jobs and progress
   // messages, the largest fraction each stage ('type:stage') of the current (or last) job reached,
   // and when (ms after the job began) it was first reported and reached 100%.

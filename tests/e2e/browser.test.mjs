@@ -28,6 +28,9 @@ await import('./keyboard.tests.mjs');
 await import('./figure.tests.mjs');
 await import('./formats.tests.mjs');
 await import('./threads.tests.mjs');
+await import('./layout.tests.mjs');
+await import('./state.tests.mjs');
+await import('./data.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its
@@ -294,21 +297,25 @@ describe('straightest paths', () => {
     assert(/closed/i.test(await page.textContent('#stats-note')), 'the note does not say the mesh is closed');
   });
 
-  pageTest('on a closed sphere two clicks give a path and the other way round, both lengths shown', {
+  pageTest('on a closed sphere shift+click and a click give a path and the other way round, both lengths shown', {
     ready: 'window.__straightest.paths',
   }, async ({ page }) => {
     const icosphere = await readFile(new URL('../data/good/icosphere.obj', import.meta.url));
     await page.setInputFiles('#file-input', { name: 'icosphere.obj', mimeType: 'text/plain', buffer: icosphere });
     await expectReady(page, 'window.__straightest.lastInfo.vertices === 42 && window.__straightest.paths.count === 0 ' +
       '&& !window.__straightest.progress.busy');
-    assert(/closed surface: click a destination/i.test(await page.textContent('#stats-note')),
-      `the note does not ask for a destination: '${await page.textContent('#stats-note')}'`);
+    assert(/closed surface: no boundary.*shift\+click.*to add a destination; a plain click moves the source/i
+      .test(await page.textContent('#stats-note')),
+    `the note does not ask for a destination: '${await page.textContent('#stats-note')}'`);
     assert(await page.isHidden('#error-panel'), 'a closed mesh shows an error for paths');
     const box = await page.locator('#view-canvas').boundingBox();
-    // The first click picks the destination (from the default source), the second moves the source.
-    for (const [fx, fy] of [[0.5, 0.5], [0.56, 0.42]]) {
+    // As the panel says on every mesh: shift+click adds the destination (from the default source), a
+    // click moves the source.
+    for (const [fx, fy, shift] of [[0.5, 0.5, true], [0.56, 0.42, false]]) {
       const traces = await page.evaluate(() => window.__straightest.traces);
+      if (shift) await page.keyboard.down('Shift');
       await page.mouse.click(box.x + box.width * fx, box.y + box.height * fy);
+      if (shift) await page.keyboard.up('Shift');
       await expectReady(page, `window.__straightest.traces > ${traces} && !window.__straightest.progress.busy`);
     }
     const paths = await page.evaluate(() => window.__straightest.paths);

@@ -1,0 +1,71 @@
+// The page's main thread on a big mesh (issue 31, item 3): loads an n × n height field OBJ (default
+// 1000: 1M vertices) through the file input, traces its boundary paths, parameterizes it (the button:
+// large meshes are not parameterized unasked) and prints every long task (> 50 ms, the browser's own
+// `longtask` entries) of each phase: count, longest, total and the five longest. A bench, not a test:
+// it prints numbers and never fails on them (headless Chromium renders in software here, so frame
+// times are no guide to a real GPU's).
+//
+//   node tests/e2e/longtasks.bench.mjs [n=1000]
+
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+import { startServer } from '../../scripts/serve.mjs';
+import { heightFieldObj } from './support/meshes.mjs';
+
+const n = Number(process.argv[2] ?? 1000);
+const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'straightest-longtasks-'));
+const file = path.join(dir, `heightfield-${n}.obj`);
+fs.writeFileSync(file, heightFieldObj(n));
+
+const server = await startServer({ port: 0 });
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true,
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
+try {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  // Every long task from the first script on, with its start (ms since navigation) and duration.
+  await page.addInitScript(() => {
+    window.__longTasks = [];
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) window.__longTasks.push({ start: entry.startTime, duration: entry.duration });
+    }).observe({ type: 'longtask', buffered: true });
+  });
+  await page.goto(`http://127.0.0.1:${server.address().port}/web/index.html`);
+  const idle = (predicate, timeout = 600_000) => page.waitForFunction(
+    `document.body.dataset.state === 'ready' && !window.__straightest.progress.busy && (${predicate})`, null, { timeout, polling: 200 });
+  await idle('window.__straightest.param');
+  const phases = [];
+  const phase = async (name, run) => {
+    const from = await page.evaluate(() => performance.now());
+    const started = Date.now();
+    await run();
+    await page.waitForTimeout(1000); // what the last reply leaves behind (uploads, the first frames)
+    const tasks = await page.evaluate((t) => window.__longTasks.filter((e) => e.start >= t), from);
+    phases.push({ name, seconds: (Date.now() - started) / 1000, tasks });
+  };
+  await phase('open the page (mountain)', async () => {});
+  phases[0].tasks = await page.evaluate(() => window.__longTasks.slice()); // since navigation
+  await phase(`load ${n}×${n} OBJ + trace ${4 * (n - 1)} boundary paths`, async () => {
+    await page.setInputFiles('#file-input', file);
+    await idle(`window.__straightest.lastInfo?.vertices === ${n * n} && window.__straightest.paths`);
+  });
+  await phase('parameterize (measured)', async () => {
+    const before = await page.evaluate(() => window.__straightest.parameterizations);
+    await page.click('#param-button');
+    await idle(`window.__straightest.parameterizations > ${before}`);
+  });
+  for (const { name, seconds, tasks } of phases) {
+    const durations = tasks.map((t) => t.duration).sort((a, b) => b - a);
+    const total = durations.reduce((a, b) => a + b, 0);
+    console.log(`${name}: ${seconds.toFixed(1)} s; ${durations.length} long tasks, longest ${(durations[0] ?? 0).toFixed(0)} ms, ` +
+      `total ${total.toFixed(0)} ms; longest five: ${durations.slice(0, 5).map((d) => d.toFixed(0)).join(', ') || '–'} ms`);
+  }
+} finally {
+  await browser.close();
+  server.closeAllConnections();
+  server.close();
+  fs.rmSync(dir, { recursive: true, force: true });
+}
