@@ -85,6 +85,19 @@ std::string usage() {
          "      --length L             how far (required with --direction; default with --toward: the cutting\n"
          "                             plane's straightest distance to D)\n"
          "      --points               include the path's points\n"
+         "  atlas MESH       a texture atlas of any manifold mesh: charts flattened with the free boundary (never\n"
+         "                   folded, never mirrored) and packed into one texture without overlap\n"
+         "      --max-stretch S        split charts whose L2 stretch exceeds S (default " +
+         std::to_string(ChartOptions{}.maxStretch).substr(0, 4) +
+         ")\n"
+         "      --max-charts N         stop splitting at N charts (default: no cap)\n"
+         "      --resolution R         atlas side in texels (default " +
+         std::to_string(PackOptions{}.resolution) +
+         ")\n"
+         "      --padding P            texels between charts (default " +
+         std::to_string(static_cast<int>(PackOptions{}.padding)) +
+         ")\n"
+         "      -o OUT.obj             write the mesh with a vt per distinct corner uv (f v/vt)\n"
          "  distances MESH   geodesic distances from a source to vertices\n"
          "      --source auto|N        source vertex (default auto)\n"
          "      --method " +
@@ -122,6 +135,7 @@ struct Options {
   std::string method = "exact", direction, toward;
   std::optional<double> length;
   int threads = 0;  // 0: every hardware thread
+  AtlasOptions atlas;
 };
 
 struct UsageError {
@@ -151,6 +165,18 @@ double parsePositive(const std::string& flag, const char* value) {
   if (!*value || *end || !(v > 0) || !std::isfinite(v))
     throw UsageError{flag + " expects a positive number, got '" + value + "'"};
   return v;
+}
+
+double parseNonNegative(const std::string& flag, const char* value) {
+  char* end = nullptr;
+  const double v = std::strtod(value, &end);
+  if (!*value || *end || !(v >= 0) || !std::isfinite(v))
+    throw UsageError{flag + " expects a number >= 0, got '" + value + "'"};
+  return v;
+}
+
+int32_t parseCount32(const std::string& flag, const char* value) {
+  return static_cast<int32_t>(std::min<int64_t>(parseCount(flag, value), std::numeric_limits<int32_t>::max()));
 }
 
 /// --progress: a line on stderr when a stage starts and at every further tenth of it.
@@ -197,6 +223,10 @@ Options parseArgs(int argc, char** argv) {
           std::min<int64_t>(parseCount(a, value()), std::numeric_limits<int32_t>::max()));
     else if (a == "--time-budget-ms") o.free.timeBudgetMs = parsePositive(a, value());
     else if (a == "--progress") o.progress = true;
+    else if (a == "--max-stretch") o.atlas.charts.maxStretch = parsePositive(a, value());
+    else if (a == "--max-charts") o.atlas.charts.maxCharts = parseCount32(a, value());
+    else if (a == "--resolution") o.atlas.pack.resolution = parseCount32(a, value());
+    else if (a == "--padding") o.atlas.pack.padding = parseNonNegative(a, value());
     else if (a == "--threads")
       o.threads = static_cast<int>(std::min<int64_t>(parseCount(a, value()), std::numeric_limits<int>::max()));
     else if (a == "-o" || a == "--output") o.output = value();
@@ -209,7 +239,7 @@ Options parseArgs(int argc, char** argv) {
   if (positional.empty()) throw UsageError{"missing COMMAND"};
   o.command = positional[0];
   if (o.command != "info" && o.command != "paths" && o.command != "param" && o.command != "shoot" &&
-      o.command != "distances")
+      o.command != "distances" && o.command != "atlas")
     throw UsageError{"unknown command '" + o.command + "'"};
   if (positional.size() < 2) throw UsageError{"missing MESH"};
   if (positional.size() > 2) throw UsageError{"unexpected argument '" + positional[2] + "'"};
@@ -353,6 +383,25 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   return 0;
 }
 
+int runAtlas(const Options& o, const TriMesh& mesh, double loadMs) {
+  Timings timings;
+  timings.add("load", loadMs);
+  AtlasOptions options = o.atlas;
+  options.timings = &timings;
+  auto result = buildAtlas(mesh, options, progressLines(o.progress));
+  if (!result) return fail(o, result.error());
+  if (!o.output.empty()) {
+    std::ofstream out(o.output, std::ios::binary);
+    out << writeObjWithCornerUv(mesh, result.value().cornerUv);
+    if (!out) return fail(o, Error{ErrorCode::Io, "cannot write '" + o.output + "'"});
+  }
+  json out = cli::toJson(result.value());
+  out["timings_ms"] = cli::toJson(timings);
+  if (!o.output.empty()) out["output"] = o.output;
+  std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
+  return 0;
+}
+
 int runShoot(const Options& o, const TriMesh& mesh, double loadMs) {
   if (o.direction.empty() == o.toward.empty())
     return fail(o, Error{ErrorCode::InvalidArgument, "shoot needs --direction ANGLE or --toward D (one of them)"});
@@ -486,6 +535,7 @@ int main(int argc, char** argv) {
     if (o.command == "param") return runParam(o, mesh.value(), loadMs);
     if (o.command == "shoot") return runShoot(o, mesh.value(), loadMs);
     if (o.command == "distances") return runDistances(o, mesh.value(), loadMs);
+    if (o.command == "atlas") return runAtlas(o, mesh.value(), loadMs);
     std::cout << cli::toJson(mesh.value().summary()).dump(o.pretty ? 2 : -1) << "\n";
     return 0;
   });

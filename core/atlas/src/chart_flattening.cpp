@@ -72,12 +72,12 @@ std::vector<Vec2> projectPlanar(const TriMesh& mesh, const std::vector<int32_t>&
   return uv;
 }
 
-/// Whether a chart can be a single flat piece: it has a boundary and no handle. A closed chart or one with
-/// a handle would be cut open along a seam inside the chart, which is what splitting does better.
-bool flattenable(const TriMesh& chart) {
+/// Whether a chart is a topological disk (one boundary loop, Euler characteristic 1): every chart of the
+/// atlas is one, so a texture painter sees each as one piece with one outline. A closed chart, one with a
+/// handle or with a hole would be cut open along a seam inside the chart, which is what splitting does better.
+bool isDisk(const TriMesh& chart) {
   const MeshSummary& summary = chart.summary();
-  const int64_t loops = static_cast<int64_t>(summary.boundaryLoopSizes.size());
-  return loops > 0 && 2 - summary.eulerCharacteristic - loops == 0;
+  return summary.boundaryLoopSizes.size() == 1 && summary.eulerCharacteristic == 1;
 }
 
 /// The chart mesh's vertices projected onto the plane of its mean normal, when that is a bijective start
@@ -131,7 +131,7 @@ std::vector<Vec2> refinedFromCircle(const TriMesh& chart, const FreeBoundaryOpti
 std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t>& faces,
                                   const FreeBoundaryOptions& free) {
   Expected<TriMesh> chartMesh = buildChartMesh(mesh, faces);
-  if (!chartMesh || !flattenable(chartMesh.value())) return {};
+  if (!chartMesh || !isDisk(chartMesh.value())) return {};
   const std::vector<Vec2> start = projectedStart(chartMesh.value());
   std::vector<Vec2> uv = start.empty() ? refinedFromCircle(chartMesh.value(), free)
                                        : refinedFrom(chartMesh.value(), start, free);
@@ -146,6 +146,11 @@ std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t
   for (Vec2& q : uv) q = Vec2{twiceArea < 0 ? -q.x : q.x, q.y} * scale;
   return uv;
 }
+/// isDisk of the chart's own mesh (false when it cannot be built).
+bool isDiskChart(const TriMesh& mesh, const std::vector<int32_t>& faces) {
+  Expected<TriMesh> chartMesh = buildChartMesh(mesh, faces);
+  return chartMesh && isDisk(chartMesh.value());
+}
 }  // namespace
 
 ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, double maxStretch,
@@ -154,7 +159,7 @@ ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, do
   out.chart.faces = std::move(faces);
   const std::vector<int32_t>& chartFaces = out.chart.faces;
   std::vector<Vec2> uv;
-  if (chartFaces.size() > 1) uv = projectPlanar(mesh, chartFaces);
+  if (chartFaces.size() > 1 && isDiskChart(mesh, chartFaces)) uv = projectPlanar(mesh, chartFaces);
   if (!uv.empty() && cornerStretch(mesh, chartFaces, uv).flipped > 0) uv.clear();
   if (chartFaces.size() > 1 && uv.empty()) uv = freeBoundaryMap(mesh, chartFaces, free);
   const bool mapped = !uv.empty() || chartFaces.size() == 1;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "straightest/atlas/atlas.hpp"
 #include "straightest/base/names.hpp"
 #include "straightest/base/timings.hpp"
 #include "straightest/geodesics/exact_geodesic.hpp"
@@ -197,6 +198,38 @@ void visitFields(const Parameterization& p, V& v) {
   visitRefinement(p, v);
   v.list("candidates", p.candidates);
   visitCut(p, v);
+}
+
+/// A texture atlas: uv per face corner (6 numbers per face, in [0, 1]²), the chart of every face, the seam
+/// (2 vertex numbers per edge), the packing, and the independent measurement of the uv (atlas_quality.hpp).
+template <class V>
+void visitFields(const Atlas& a, V& v) {
+  const AtlasQuality& q = a.quality;
+  v.bulk("cornerUv", packed(a.cornerUv), 2 * a.cornerUv.size(), Bulk::Float32);
+  v.bulk("chartOfFace", a.chartOfFace.data(), a.chartOfFace.size(), Bulk::Int32);
+  v.bulk("seam", reinterpret_cast<const int32_t*>(a.seam.data()), 2 * a.seam.size(), Bulk::Int32);
+  v.bulk("chartStretch", q.chartL2.data(), q.chartL2.size(), Bulk::Float64);
+  v.count("charts", a.charts);
+  v.object("stretch", [&](auto& o) {
+    o.number("l2", q.l2);
+    o.number("linf", q.linf);
+  });
+  v.number("utilization", a.utilization);
+  v.count("width", a.width);
+  v.count("height", a.height);
+  v.number("texelsPerUnit", a.texelsPerUnit);
+  v.count("seamEdges", static_cast<int64_t>(a.seam.size()));
+  v.number("seamLength", a.seamLength);
+  v.count("flipped", q.flipped);
+  v.count("mirrored", q.mirroredCharts);
+  v.count("degenerate", q.degenerate);
+  v.count("overlaps", q.overlaps);
+  v.count("nonDiskCharts", q.nonDiskCharts);
+  v.number("minGapTexels", q.minGapTexels);
+  v.count("paddingViolations", q.paddingViolations);
+  v.count("splits", a.splits);
+  v.count("merges", a.merges);
+  v.flag("capped", a.capped);
 }
 
 /// "error" and "category" of a part that may have failed: the error's, or null for both.

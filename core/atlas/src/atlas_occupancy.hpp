@@ -1,0 +1,67 @@
+// atlas_occupancy.hpp — the atlas's free texels: where a chart mask fits first (bottom-left), and the
+// claiming of a placed chart together with its padding.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "chart_raster.hpp"
+#include "texel_mask.hpp"
+
+namespace straightest::atlas_detail {
+
+struct TexelPosition {
+  int32_t x = 0, y = 0;
+};
+
+class AtlasOccupancy {
+ public:
+  /// An atlas of width × height texels whose outer `border` texels are never free; charts are kept
+  /// `padding` texels apart (see claim).
+  AtlasOccupancy(int32_t width, int32_t height, int32_t border, double padding);
+
+  /// The lowest row, then the leftmost column, at which `mask` meets only free texels, considering mask
+  /// positions whose bottom row is at most `highestRow`; nothing when it fits nowhere.
+  std::optional<TexelPosition> firstFit(const ChartMask& mask, int32_t highestRow) const;
+
+  /// Marks the mask's texels at `position`, dilated by the padding, as taken. The dilation adds every
+  /// texel whose square is closer than `padding` to a set texel's square (squares dx, dy apart are
+  /// max(|dx| − 1, 0), max(|dy| − 1, 0) apart along the axes), so a later chart whose own texels are all
+  /// free is at least `padding` away from this one, continuous geometry included.
+  void claim(const ChartMask& mask, TexelPosition position);
+
+  int32_t width() const { return free_.width(); }
+  int32_t height() const { return free_.height(); }
+
+  /// The levels of free spans kept per row: spans of 1 (the free texels themselves), 4, 16 and 64 texels.
+  static constexpr int kLevels = 4;
+
+ private:
+  bool runsFitAtRow(const ChartMask& mask, int32_t y) const;
+  void prepareSpanTests(const ChartMask& mask) const;
+  bool wordsThatMayFit(int32_t y, int32_t lastX) const;
+  std::optional<int32_t> leftmostFitInRow(int32_t y, int32_t lastX) const;
+  void updateRow(int32_t y);
+  void updateSpans(int32_t y);
+
+  TexelMask& free_ = spans_[0];
+  // spans_[level] bit p: the 4^level texels from p are all free, kept per row so that any run is tested at 64
+  // columns at once with at most four shifted words.
+  TexelMask spans_[kLevels];
+  // wordSummary_[level], summaryWords_ per row: bit k says word k of the row's spans has a bit set, so that the
+  // words of a row where a mask cannot start are ruled out 64 at a time.
+  std::vector<uint64_t> wordSummary_[kLevels];
+  int32_t summaryWords_ = 0;
+  std::vector<int32_t> longestFreeRun_;  // per atlas row: rows that cannot hold a mask row are skipped
+  std::vector<int32_t> dilationReach_;   // per |dy| in 0..reach: how far the padding reaches along x
+  // A mask row's run of L texels is free when the free spans of the largest length s ≤ L (1, 4, 16 or 64)
+  // that tile it start free; the mask being placed, as such tests (scratch of firstFit).
+  struct SpanTest {
+    int32_t level, row, from;
+  };
+  mutable std::vector<SpanTest> spanTests_;
+  mutable std::vector<uint64_t> candidateWords_;  // scratch of wordsThatMayFit: bit k, word k may hold a fit
+  mutable size_t lastEmptyingTest_ = 0;
+};
+
+}  // namespace straightest::atlas_detail

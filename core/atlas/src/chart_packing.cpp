@@ -1,0 +1,126 @@
+// chart_packing.cpp — packCharts: the input's checks, then the search for the largest texel density at which
+// the greedy packing fits (or the one packing at the density asked for), and the placement formula.
+#include "straightest/atlas/chart_packing.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "chart_measures.hpp"
+#include "chart_raster.hpp"
+#include "pack_input.hpp"
+
+namespace straightest {
+namespace {
+
+using atlas_detail::AtlasFrame;
+using atlas_detail::ChartMeasures;
+using atlas_detail::PackOutcome;
+
+constexpr const char* kStage = "pack";
+// The scale search expects about this many packings (progress is reported against it).
+constexpr double kExpectedTrials = 12;
+// Below this the search gives up: the charts need more padded texels than the atlas has.
+constexpr int kMaxShrinks = 80;
+
+struct Search {
+  const std::vector<ChartShape>& charts;
+  const ChartMeasures& measures;
+  const AtlasFrame& frame;
+  const Progress& progress;
+  int trials = 0;
+};
+
+PackOutcome tryScale(Search& search, double scale, std::vector<Placement>& placements) {
+  const double done = search.trials++;
+  ThrottledProgress throttled(search.progress, kStage);
+  auto keepGoing = [&](double fraction) { return throttled(std::min(0.99, (done + fraction) / kExpectedTrials)); };
+  return atlas_detail::packAtScale(search.charts, search.measures.angles, search.measures.order, scale, search.frame,
+                                   keepGoing, placements);
+}
+
+/// The search stops when the bracket [fits, fails] is within half a texel on the largest chart, or 0.5 %.
+double searchTolerance(const ChartMeasures& measures, double fittingScale) {
+  const double halfTexel = 0.5 / std::max(fittingScale * measures.largestExtent, 1e-300);
+  return std::min(0.005, halfTexel);
+}
+
+/// The largest scale (within the tolerance) at which the greedy packing fits; its placements in `best`.
+Expected<double> largestFittingScale(Search& search, std::vector<Placement>& best) {
+  double fits = 0, fails = search.measures.scaleUpperBound;
+  // All charts points: any scale packs them the same; 1 texel per unit is as good as any.
+  if (!std::isfinite(fails)) fails = 1;
+  double scale = fails;
+  std::vector<Placement> placements;
+  for (int shrinks = 0;;) {
+    const PackOutcome outcome = tryScale(search, scale, placements);
+    if (outcome == PackOutcome::Cancelled) return cancelledError("packing");
+    if (outcome == PackOutcome::Packed) {
+      fits = scale;
+      best.swap(placements);
+    } else {
+      fails = scale;
+    }
+    if (fits == 0) {
+      if (++shrinks > kMaxShrinks) return Error{ErrorCode::TooLarge, "pack: the charts do not fit at any scale"};
+      scale *= search.trials == 1 ? 0.85 : 0.8;
+      continue;
+    }
+    if (fits == fails || fails / fits <= 1 + searchTolerance(search.measures, fits)) return fits;
+    scale = std::sqrt(fits * fails);
+  }
+}
+
+Packing finishedPacking(const AtlasFrame& frame, double scale, std::vector<Placement> placements, double area) {
+  Packing packing;
+  packing.width = frame.width;
+  packing.height = frame.height;
+  packing.texelsPerUnit = scale;
+  packing.placements = std::move(placements);
+  packing.utilization = area * scale * scale / (static_cast<double>(frame.width) * frame.height);
+  return packing;
+}
+
+Expected<Packing> packChecked(const std::vector<ChartShape>& charts, const PackOptions& options,
+                              const Progress& progress) {
+  const AtlasFrame frame = atlas_detail::atlasFrame(options);
+  const ChartMeasures measures = atlas_detail::measureCharts(charts, options.rotate, frame);
+  Search search{charts, measures, frame, progress};
+  std::vector<Placement> placements;
+  double scale = options.texelsPerUnit;
+  if (charts.empty()) {
+    // Nothing to place: the density asked for, or none.
+  } else if (scale > 0) {
+    const PackOutcome outcome = tryScale(search, scale, placements);
+    if (outcome == PackOutcome::Cancelled) return cancelledError("packing");
+    if (outcome == PackOutcome::DoesNotFit)
+      return Error{ErrorCode::TooLarge, "pack: the charts do not fit in " + std::to_string(frame.width) + " x " +
+                                            std::to_string(frame.height) + " texels at " + std::to_string(scale) +
+                                            " texels per unit (texelsPerUnit 0 finds the largest that fits)"};
+  } else {
+    auto found = largestFittingScale(search, placements);
+    if (!found) return found.error();
+    scale = found.value();
+  }
+  if (!progress(kStage, 1)) return cancelledError("packing");
+  return finishedPacking(frame, scale, std::move(placements), measures.totalArea);
+}
+
+}  // namespace
+
+Expected<Packing> packCharts(const std::vector<ChartShape>& charts, const PackOptions& options,
+                             const Progress& progress) {
+  if (auto error = atlas_detail::checkPackInput(charts, options)) return *error;
+  return guarded([&] { return packChecked(charts, options, progress); });
+}
+
+Vec2 placeInTexels(const Packing& packing, int32_t chart, Vec2 uv) {
+  const Placement& placement = packing.placements.at(chart);
+  return atlas_detail::rotatedAndScaled(uv, packing.texelsPerUnit, placement.angle) + placement.offset;
+}
+
+Vec2 placeInAtlas(const Packing& packing, int32_t chart, Vec2 uv) {
+  const Vec2 texels = placeInTexels(packing, chart, uv);
+  return {texels.x / packing.width, texels.y / packing.height};
+}
+
+}  // namespace straightest

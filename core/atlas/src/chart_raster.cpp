@@ -1,0 +1,92 @@
+// chart_raster.cpp — conservative rasterization: per triangle and texel row, the x-extent of the triangle
+// clipped to the row's closed strip, so that every touched texel is set however thin or degenerate the triangle.
+#include "chart_raster.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace straightest::atlas_detail {
+namespace {
+
+constexpr double kMargin = 1e-6;  // texels; see rasterizeChart
+
+struct Extent {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  void include(double x) {
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  bool empty() const { return lo > hi; }
+};
+
+/// The x-extent of the closed triangle abc clipped to the strip y0 ≤ y ≤ y1: the clipped polygon's vertices
+/// are the triangle's vertices inside the strip and its edges' crossings of the strip's two lines.
+Extent extentInStrip(const Vec2 (&corner)[3], double y0, double y1) {
+  Extent extent;
+  for (int i = 0; i < 3; ++i) {
+    const Vec2 a = corner[i], b = corner[(i + 1) % 3];
+    if (a.y >= y0 && a.y <= y1) extent.include(a.x);
+    for (const double y : {y0, y1}) {
+      if (y > std::min(a.y, b.y) && y < std::max(a.y, b.y)) extent.include(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
+    }
+  }
+  return extent;
+}
+
+void rasterizeTriangle(const Vec2 (&corner)[3], TexelMask& mask) {
+  const double yMin = std::min({corner[0].y, corner[1].y, corner[2].y});
+  const double yMax = std::max({corner[0].y, corner[1].y, corner[2].y});
+  const int32_t firstRow = std::max(0, static_cast<int32_t>(std::floor(yMin - kMargin)));
+  const int32_t lastRow = std::min(mask.height() - 1, static_cast<int32_t>(std::floor(yMax + kMargin)));
+  for (int32_t row = firstRow; row <= lastRow; ++row) {
+    const Extent extent = extentInStrip(corner, row - kMargin, row + 1 + kMargin);
+    if (extent.empty()) continue;
+    mask.assignSpan(row, static_cast<int32_t>(std::floor(extent.lo - kMargin)),
+                    static_cast<int32_t>(std::floor(extent.hi + kMargin)), true);
+  }
+}
+
+/// The runs of set texels of every row, longest first, and each row's longest.
+void collectRuns(ChartMask& mask) {
+  const TexelMask& texels = mask.texels;
+  mask.longestRunOfRow.assign(texels.height(), 0);
+  for (int32_t row = 0; row < texels.height(); ++row) {
+    for (int32_t start = texels.nextWithBit(row, 0, true); start < texels.width();) {
+      const int32_t end = texels.nextWithBit(row, start, false);
+      mask.runs.push_back({row, start, end - start});
+      mask.longestRunOfRow[row] = std::max(mask.longestRunOfRow[row], end - start);
+      start = texels.nextWithBit(row, end, true);
+    }
+  }
+  std::stable_sort(mask.runs.begin(), mask.runs.end(),
+                   [](const MaskRun& a, const MaskRun& b) { return a.length > b.length; });
+}
+
+}  // namespace
+
+std::optional<ChartMask> rasterizeChart(const std::vector<Vec2>& triangles, double texelsPerUnit, double angle,
+                                        int32_t maxWidth, int32_t maxHeight) {
+  std::vector<Vec2> placed(triangles.size());
+  Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, hi = -lo;
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    placed[i] = rotatedAndScaled(triangles[i], texelsPerUnit, angle);
+    lo = {std::min(lo.x, placed[i].x), std::min(lo.y, placed[i].y)};
+    hi = {std::max(hi.x, placed[i].x), std::max(hi.y, placed[i].y)};
+  }
+  ChartMask mask;
+  mask.angle = angle;
+  // Two margins below the lowest point keep the margin-widened lowest texel at index 0.
+  mask.origin = lo - Vec2{2 * kMargin, 2 * kMargin};
+  const Vec2 extent = hi - mask.origin;
+  if (!(extent.x + kMargin < maxWidth && extent.y + kMargin < maxHeight)) return std::nullopt;
+  mask.texels = TexelMask(static_cast<int32_t>(std::floor(extent.x + kMargin)) + 1,
+                          static_cast<int32_t>(std::floor(extent.y + kMargin)) + 1);
+  for (size_t t = 0; t + 2 < placed.size(); t += 3) {
+    const Vec2 corner[3] = {placed[t] - mask.origin, placed[t + 1] - mask.origin, placed[t + 2] - mask.origin};
+    rasterizeTriangle(corner, mask.texels);
+  }
+  collectRuns(mask);
+  return mask;
+}
+
+}  // namespace straightest::atlas_detail
