@@ -72,12 +72,19 @@ std::vector<Vec2> projectPlanar(const TriMesh& mesh, const std::vector<int32_t>&
   return uv;
 }
 
-/// Whether a chart is a topological disk (one boundary loop, Euler characteristic 1): every chart of the
-/// atlas is one, so a texture painter sees each as one piece with one outline. A closed chart, one with a
-/// handle or with a hole would be cut open along a seam inside the chart, which is what splitting does better.
-bool isDisk(const TriMesh& chart) {
+/// Whether a chart is a topological disk (one boundary loop, Euler characteristic 1) with a simple outline:
+/// every chart of the atlas is one, so a texture painter sees each as one piece with one outline. A closed
+/// chart, one with a handle or a hole, or one whose faces touch at a lone corner (buildChartMesh split that
+/// vertex: the outline would pass through it twice) would need a cut inside the chart, which is what
+/// splitting does better.
+bool isDisk(const TriMesh& mesh, const std::vector<int32_t>& faces, const TriMesh& chart) {
   const MeshSummary& summary = chart.summary();
-  return summary.boundaryLoopSizes.size() == 1 && summary.eulerCharacteristic == 1;
+  if (summary.boundaryLoopSizes.size() != 1 || summary.eulerCharacteristic != 1) return false;
+  std::vector<int32_t> corners;
+  corners.reserve(3 * faces.size());
+  for (int32_t f : faces) corners.insert(corners.end(), mesh.triangle(f).begin(), mesh.triangle(f).end());
+  std::sort(corners.begin(), corners.end());
+  return std::unique(corners.begin(), corners.end()) - corners.begin() == chart.numVertices();
 }
 
 /// The chart mesh's vertices projected onto the plane of its mean normal, when that is a bijective start
@@ -131,7 +138,7 @@ std::vector<Vec2> refinedFromCircle(const TriMesh& chart, const FreeBoundaryOpti
 std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t>& faces,
                                   const FreeBoundaryOptions& free) {
   Expected<TriMesh> chartMesh = buildChartMesh(mesh, faces);
-  if (!chartMesh || !isDisk(chartMesh.value())) return {};
+  if (!chartMesh || !isDisk(mesh, faces, chartMesh.value())) return {};
   const std::vector<Vec2> start = projectedStart(chartMesh.value());
   std::vector<Vec2> uv = start.empty() ? refinedFromCircle(chartMesh.value(), free)
                                        : refinedFrom(chartMesh.value(), start, free);
@@ -149,7 +156,7 @@ std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t
 /// isDisk of the chart's own mesh (false when it cannot be built).
 bool isDiskChart(const TriMesh& mesh, const std::vector<int32_t>& faces) {
   Expected<TriMesh> chartMesh = buildChartMesh(mesh, faces);
-  return chartMesh && isDisk(chartMesh.value());
+  return chartMesh && isDisk(mesh, faces, chartMesh.value());
 }
 }  // namespace
 

@@ -68,4 +68,9 @@ std::string writeObj(const TriMesh& mesh, const std::vector<Vec2>* uv = nullptr)
 /// NaN (outside the parameterized component) is written without vt.
 std::string writeObjWithCornerUv(const TriMesh& mesh, const std::vector<Vec2>& cornerUv);
 
+/// The uv of every corner of an OBJ file's triangles, 3 per `f` line in file order (corner k of face f at
+/// 3f + k; NaN for a corner without vt), as writeObjWithCornerUv writes them: reading its output gives
+/// the same doubles. Errors: Parse (a polygon that is not a triangle, a missing or malformed vt).
+Expected<std::vector<Vec2>> readObjCornerUv(std::string_view bytes);
+
 }  // namespace straightest

@@ -1,0 +1,162 @@
+// The atlas as a whole (buildAtlas): what it promises about the uv it returns, checked by the
+// independent measurement (measureAtlas: charts found from the uv alone, exact overlap predicates) and
+// by the test's own winding and round-trip checks, never by the packer's bookkeeping.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "geodesic_surfaces.hpp"
+#include "straightest/atlas/atlas.hpp"
+#include "straightest/io/mesh_io.hpp"
+#include "straightest/mesh/samples.hpp"
+#include "test_meshes.hpp"
+
+namespace straightest {
+namespace {
+
+Atlas atlasOf(const TriMesh& mesh, const AtlasOptions& options = {}) {
+  Expected<Atlas> atlas = buildAtlas(mesh, options);
+  EXPECT_TRUE(atlas.ok()) << (atlas.ok() ? "" : atlas.error().message);
+  return atlas.ok() ? std::move(atlas.value()) : Atlas{};
+}
+
+/// What every atlas must be, on any mesh: one uv per corner inside the square, every triangle
+/// counter-clockwise like its face (counted here, from the uv), every chart a disk, nothing flipped,
+/// mirrored or overlapping, and the padding kept between every pair of charts.
+void expectSound(const TriMesh& mesh, const Atlas& atlas, double padding) {
+  ASSERT_EQ(atlas.cornerUv.size(), 3 * static_cast<size_t>(mesh.numFaces()));
+  int64_t clockwise = 0;
+  for (int32_t f = 0; f < mesh.numFaces(); ++f) {
+    const Vec2 &a = atlas.cornerUv[3 * f], &b = atlas.cornerUv[3 * f + 1], &c = atlas.cornerUv[3 * f + 2];
+    for (const Vec2& q : {a, b, c}) ASSERT_TRUE(q.x >= 0 && q.x <= 1 && q.y >= 0 && q.y <= 1) << "face " << f;
+    if (!mesh.isDegenerateFace(f) && !(cross(b - a, c - a) > 0)) ++clockwise;
+  }
+  EXPECT_EQ(clockwise, 0);
+  const AtlasQuality q = measureAtlas(mesh, atlas.cornerUv, {atlas.width, atlas.height, padding});
+  EXPECT_EQ(q.charts, atlas.charts);
+  EXPECT_EQ(q.nonDiskCharts, 0);
+  EXPECT_EQ(q.flipped, 0);
+  EXPECT_EQ(q.mirroredCharts, 0);
+  EXPECT_EQ(q.overlaps, 0);
+  EXPECT_EQ(q.paddingViolations, 0);
+  EXPECT_GE(q.minGapTexels, padding);
+  EXPECT_EQ(q.outside + q.nonFinite, 0);
+  EXPECT_TRUE(std::isfinite(q.l2));
+  EXPECT_GT(atlas.utilization, 0);
+  EXPECT_LE(atlas.utilization, 1);
+}
+
+TEST(AtlasPipeline, DevelopableSurfacesFlattenIsometrically) {
+  const TriMesh cube = testing::voxelSurface({{0, 0, 0}});
+  const TriMesh cylinder = testing::prism(24, 12, 1.0, 0.25).mesh;
+  const TriMesh sheet = testing::flatGrid(12, testing::GridPattern::Regular);
+  for (const TriMesh* mesh : {&cube, &cylinder, &sheet}) {
+    const Atlas atlas = atlasOf(*mesh);
+    expectSound(*mesh, atlas, PackOptions{}.padding);
+    EXPECT_NEAR(atlas.quality.l2, 1, 1e-6);
+    for (double l2 : atlas.quality.chartL2) EXPECT_NEAR(l2, 1, 1e-6);
+  }
+}
+
+TEST(AtlasPipeline, AnyGenusHolesAndComponentsGiveSoundCharts) {
+  const TriMesh torus = makeSample("torus").value();
+  const TriMesh sphere = makeSample("sphere").value();
+  const TriMesh holes = makeSample("holes").value();
+  const TriMesh genus2 = testing::genusSlab(2), genus3 = testing::genusSlab(3);
+  const TriMesh two = combineMeshes({&sphere, &holes}).value();
+  const char* names[] = {"sphere", "torus", "genus 2", "genus 3", "holes", "two components"};
+  int i = 0;
+  for (const TriMesh* mesh : {&sphere, &torus, &genus2, &genus3, &holes, &two}) {
+    SCOPED_TRACE(names[i++]);
+    const Atlas atlas = atlasOf(*mesh);
+    expectSound(*mesh, atlas, PackOptions{}.padding);
+    EXPECT_LE(atlas.quality.l2, ChartOptions{}.maxStretch);
+  }
+}
+
+TEST(AtlasPipeline, PaddingIsKeptAtAnyWidth) {
+  const TriMesh torus = makeSample("torus").value();
+  for (double padding : {0.0, 1.0, 4.0}) {
+    AtlasOptions options;
+    options.pack.padding = padding;
+    options.pack.resolution = 512;
+    expectSound(torus, atlasOf(torus, options), padding);
+  }
+}
+
+TEST(AtlasPipeline, ChartsOfACombinedMeshStayInTheirMesh) {
+  const TriMesh sphere = makeSample("sphere").value(), torus = makeSample("torus").value();
+  const TriMesh both = combineMeshes({&sphere, &torus}).value();
+  ASSERT_EQ(both.numFaces(), sphere.numFaces() + torus.numFaces());
+  const Atlas atlas = atlasOf(both);
+  expectSound(both, atlas, PackOptions{}.padding);
+  std::vector<int> meshOfChart(atlas.charts, -1);
+  for (int32_t f = 0; f < both.numFaces(); ++f) {
+    const int owner = f < sphere.numFaces() ? 0 : 1;
+    int& seen = meshOfChart[atlas.chartOfFace[f]];
+    EXPECT_TRUE(seen == -1 || seen == owner) << "chart " << atlas.chartOfFace[f] << " spans both meshes";
+    seen = owner;
+  }
+}
+
+TEST(AtlasPipeline, CornerUvRoundTripsThroughObj) {
+  const TriMesh torus = makeSample("torus").value();
+  const Atlas atlas = atlasOf(torus);
+  Expected<std::vector<Vec2>> read = readObjCornerUv(writeObjWithCornerUv(torus, atlas.cornerUv));
+  ASSERT_TRUE(read.ok()) << read.error().message;
+  ASSERT_EQ(read.value().size(), atlas.cornerUv.size());
+  for (size_t i = 0; i < atlas.cornerUv.size(); ++i) {
+    EXPECT_EQ(read.value()[i].x, atlas.cornerUv[i].x);
+    EXPECT_EQ(read.value()[i].y, atlas.cornerUv[i].y);
+  }
+}
+
+TEST(AtlasPipeline, SeamIsWhereTheTwoSidesDiffer) {
+  const TriMesh sphere = makeSample("sphere").value();
+  const Atlas atlas = atlasOf(sphere);
+  EXPECT_EQ(static_cast<int64_t>(atlas.seam.size()), atlas.quality.seamEdges);
+  EXPECT_NEAR(atlas.seamLength, atlas.quality.seamLength, 1e-9 * atlas.seamLength);
+  EXPECT_GT(atlas.seam.size(), 0u);  // a sphere cannot be one flat piece
+}
+
+TEST(AtlasPipeline, ZeroAreaFacesGetFiniteCounterClockwiseUv) {
+  // A grid whose middle row is squashed flat: its faces have zero area.
+  TriMesh grid = testing::flatGrid(6, testing::GridPattern::Regular);
+  std::vector<Vec3> p = grid.positions();
+  for (Vec3& q : p)
+    if (q.y > 1.5 && q.y < 3.5) q.y = 2;
+  const TriMesh squashed = testing::buildOrFail(p, grid.triangles());
+  ASSERT_GT(squashed.summary().degenerateFaces, 0);
+  const Atlas atlas = atlasOf(squashed);
+  for (const Vec2& q : atlas.cornerUv) ASSERT_TRUE(isFinite(q));
+  EXPECT_EQ(atlas.quality.overlaps, 0);
+  EXPECT_EQ(atlas.quality.flipped, 0);
+}
+
+TEST(AtlasPipeline, CancelInEveryStageReturnsCancelledAndLeavesNothingBroken) {
+  const TriMesh torus = makeSample("torus").value();
+  for (const std::string stage : {"segment", "flatten", "pack", "measure"}) {
+    Expected<Atlas> cancelled = buildAtlas(torus, {}, [&](const char* s, double) { return stage != s; });
+    ASSERT_FALSE(cancelled.ok()) << stage;
+    EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled) << stage;
+  }
+  expectSound(torus, atlasOf(torus), PackOptions{}.padding);
+}
+
+TEST(AtlasPipeline, BadOptionsAreInvalidArguments) {
+  const TriMesh sphere = makeSample("sphere").value();
+  AtlasOptions negativePadding, noTexels, lowStretch;
+  negativePadding.pack.padding = -1;
+  noTexels.pack.resolution = 0;
+  lowStretch.charts.maxStretch = 0.5;
+  for (const AtlasOptions& options : {negativePadding, noTexels, lowStretch}) {
+    Expected<Atlas> atlas = buildAtlas(sphere, options);
+    ASSERT_FALSE(atlas.ok());
+    EXPECT_EQ(atlas.error().code, ErrorCode::InvalidArgument) << atlas.error().message;
+  }
+}
+
+}  // namespace
+}  // namespace straightest
