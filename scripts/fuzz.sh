@@ -19,7 +19,7 @@ if ! [[ "$SECONDS_EACH" =~ ^[0-9]+$ ]] || [ "$SECONDS_EACH" -lt 1 ]; then
   echo "usage: scripts/fuzz.sh [SECONDS]   (seconds of fuzzing per harness, default 30)" >&2
   exit 2
 fi
-HARNESSES=(${FUZZ_HARNESSES:-fuzz_obj fuzz_off fuzz_ply fuzz_stl fuzz_trimesh fuzz_trace fuzz_param})
+HARNESSES=(${FUZZ_HARNESSES:-fuzz_obj fuzz_off fuzz_ply fuzz_stl fuzz_trimesh fuzz_trace fuzz_param fuzz_atlas})
 BUILD="$ROOT/build/fuzz"
 FUZZ_DIR="$ROOT/tests/fuzz"
 

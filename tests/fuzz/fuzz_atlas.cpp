@@ -1,0 +1,72 @@
+// libFuzzer harness: buildAtlas on random meshes (height-field grids, caps, closed bumpy spheres and
+// open tubes; sometimes two of them as one mesh, as one atlas of several meshes is made), with random
+// options (stretch target, resolution, padding, chart cap).
+// Invariants: a result, or an error of a known category (InvalidArgument, TooLarge: the charts do not fit
+// in a tiny atlas) with a message; a result has one finite uv per face corner in [0, 1]², a chart per
+// face, and the independent measurement of its uv (measureAtlas) finds as many charts, every one a disk,
+// none flipped, mirrored or overlapping, and the padding kept.
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include "fuzz_meshes.hpp"
+#include "straightest/atlas/atlas.hpp"
+
+using namespace straightest;
+
+namespace {
+
+TriMesh randomMesh(FuzzedDataProvider& in) {
+  const int kind = in.ConsumeIntegralInRange(0, 2);
+  fuzz::RandomMesh gen = kind == 0 ? fuzz::heightGrid(in, 8) : kind == 1 ? fuzz::cap(in, true) : fuzz::sphereOrTube(in);
+  return fuzz::transformAndBuild(in, gen);
+}
+
+AtlasOptions randomOptions(FuzzedDataProvider& in) {
+  AtlasOptions options;
+  options.charts.maxStretch = 1 + in.ConsumeFloatingPointInRange(0.005, 0.5);
+  options.charts.maxCharts = in.ConsumeIntegralInRange(0, 3) == 0 ? in.ConsumeIntegralInRange(1, 8) : 0;
+  options.charts.free.maxIterations = in.ConsumeIntegralInRange(1, 8);
+  options.charts.free.timeBudgetMs = 2000;
+  options.pack.resolution = in.ConsumeIntegralInRange(16, 256);
+  options.pack.padding = in.ConsumeIntegralInRange(0, 4);
+  return options;
+}
+
+void checkAtlas(const TriMesh& mesh, const AtlasOptions& options, const Atlas& a) {
+  FUZZ_CHECK(a.cornerUv.size() == 3 * static_cast<size_t>(mesh.numFaces()), "cornerUv size");
+  FUZZ_CHECK(a.chartOfFace.size() == static_cast<size_t>(mesh.numFaces()), "chartOfFace size");
+  for (const Vec2& q : a.cornerUv)
+    FUZZ_CHECK(std::isfinite(q.x) && std::isfinite(q.y) && q.x >= 0 && q.x <= 1 && q.y >= 0 && q.y <= 1,
+               "uv (%g, %g) outside [0, 1]²", q.x, q.y);
+  for (int32_t c : a.chartOfFace) FUZZ_CHECK(c >= 0 && c < a.charts, "chart %d of %d", c, a.charts);
+  const AtlasQuality q = measureAtlas(mesh, a.cornerUv, {a.width, a.height, options.pack.padding});
+  FUZZ_CHECK(q.charts == a.charts, "measured %d charts, atlas says %d", q.charts, a.charts);
+  FUZZ_CHECK(q.nonDiskCharts == 0, "%d charts are not disks", q.nonDiskCharts);
+  FUZZ_CHECK(q.flipped == 0 && q.mirroredCharts == 0, "%lld flipped faces, %lld mirrored charts", (long long)q.flipped,
+             (long long)q.mirroredCharts);
+  FUZZ_CHECK(q.overlaps == 0 && q.paddingViolations == 0, "%lld overlaps, %lld padding violations (gap %g)",
+             (long long)q.overlaps, (long long)q.paddingViolations, q.minGapTexels);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  FuzzedDataProvider in(data, size);
+  TriMesh mesh = randomMesh(in);
+  if (in.ConsumeBool()) {
+    const TriMesh other = randomMesh(in);
+    Expected<TriMesh> both = combineMeshes({&mesh, &other});
+    FUZZ_CHECK(both.ok(), "combineMeshes: %s", both.ok() ? "" : both.error().message.c_str());
+    mesh = std::move(both.value());
+  }
+  const AtlasOptions options = randomOptions(in);
+  Expected<Atlas> atlas = buildAtlas(mesh, options);
+  if (!atlas.ok()) {
+    const ErrorCode code = atlas.error().code;
+    FUZZ_CHECK(code == ErrorCode::InvalidArgument || code == ErrorCode::TooLarge, "unexpected %s: %s",
+               errorCodeName(code), atlas.error().message.c_str());
+    FUZZ_CHECK(!atlas.error().message.empty(), "error without a message");
+    return 0;
+  }
+  checkAtlas(mesh, options, atlas.value());
+  return 0;
+}
