@@ -1,4 +1,4 @@
-// Every command example in README.md runs as written from the repository root: each ```sh block that
+// Every command example in README.md and docs/CLI.md runs as written from the repository root: each ```sh block that
 // calls the CLI (build/native/straightest, replaced by --cli PATH when given) is run line by line with
 // bash; a line that exits non-zero fails the test with its block's text. The comment lines under a
 // command are its sample output: every JSON key they show ("key":) must be in what the command printed,
@@ -13,13 +13,15 @@ import { fileURLToPath } from 'node:url';
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 const cliArg = process.argv.indexOf('--cli');
 const cli = cliArg > 0 ? resolve(process.argv[cliArg + 1]) : join(root, 'build/native/straightest');
-const readme = readFileSync(join(root, 'README.md'), 'utf8');
+const documents = ['README.md', 'docs/CLI.md'].map((name) => ({ name, text: readFileSync(join(root, name), 'utf8') }));
 
-/** The fenced blocks of a language: their text and the line where they start. */
-function blocks(language) {
+/** The fenced blocks of a language in every document: their text, document and starting line. */
+function blocks(language, names = documents.map((d) => d.name)) {
   const found = [];
   const fence = new RegExp('^```' + language + '\\n([\\s\\S]*?)^```', 'gm');
-  for (const m of readme.matchAll(fence)) found.push({ text: m[1], line: readme.slice(0, m.index).split('\n').length });
+  for (const { name, text } of documents.filter((d) => names.includes(d.name)))
+    for (const m of text.matchAll(fence))
+      found.push({ text: m[1], document: name, line: text.slice(0, m.index).split('\n').length });
   return found;
 }
 
@@ -51,7 +53,7 @@ for (const block of blocks('sh')) {
     const shell = command.replaceAll('build/native/straightest', JSON.stringify(cli));
     const run = spawnSync('bash', ['-c', shell], { cwd: root, encoding: 'utf8', maxBuffer: 1 << 30 });
     ran += 1;
-    const where = `README.md block at line ${block.line}:\n${block.text}\ncommand: ${command}\n`;
+    const where = `${block.document} block at line ${block.line}:\n${block.text}\ncommand: ${command}\n`;
     if (run.status !== 0) {
       failures.push(`${where}exit ${run.status ?? run.signal}\n${(run.stderr || '').slice(0, 2000)}`);
       continue;
