@@ -13,6 +13,8 @@
 #include <string>
 
 #include "js_values.hpp"
+#include "straightest/api/distance_query.hpp"
+#include "straightest/api/obj_with_uv.hpp"
 #include "straightest/api/warm_up.hpp"
 #include "straightest/base/names.hpp"
 #include "straightest/base/threads.hpp"
@@ -167,28 +169,23 @@ class MeshHandle {
         table.targets.push_back(t.index);
       }
       Timings timings;
-      Stopwatch clock;
-      auto field = exactGeodesics(*mesh_, table.source, progressFrom(progress));
-      if (!field) return field.error();
-      timings.add("distances", clock.lap());
+      auto query = queryDistances(*mesh_, table.source, DistanceMethod::Exact, table.targets, keepPoints,
+                                  progressFrom(progress), &timings);
+      if (!query) return query.error();
+      table = query.value().table;
       std::vector<float> points;
       std::vector<uint32_t> offsets{0};
-      for (int32_t t : table.targets) {
-        table.distances.push_back(field.value().distances[t]);
-        if (!keepPoints) continue;
-        auto path = exactShortestPath(*mesh_, field.value(), t);
-        if (path)
-          for (const Vec3& x : path.value()) points.insert(points.end(), {float(x.x), float(x.y), float(x.z)});
+      for (const std::vector<Vec3>& path : query.value().paths) {
+        for (const Vec3& x : path) points.insert(points.end(), {float(x.x), float(x.y), float(x.z)});
         offsets.push_back(static_cast<uint32_t>(points.size() / 3));
       }
-      if (keepPoints) timings.add("paths", clock.lap());
       if (!keepPoints) offsets.clear();
       JsWriter w;
       visitFields(table, w);
       w.count("count", static_cast<int64_t>(table.targets.size()));
       w.bulk("points", points.data(), points.size(), Bulk::Float32);
       w.bulk("offsets", offsets.data(), offsets.size(), Bulk::Uint32);
-      w.object("exact", [&](auto& o) { visitFields(field.value().stats, o); });
+      w.object("exact", [&](auto& o) { visitFields(query.value().exact, o); });
       w.object("timings", [&](auto& o) { visitFields(timings, o); });
       return w.result();
     });
@@ -271,22 +268,13 @@ class MeshHandle {
         return o;
       }
       const auto flat = emscripten::convertJSArrayToNumberVector<double>(uv);
-      const size_t perVertex = 2 * static_cast<size_t>(mesh_->numVertices());
-      const size_t perCorner = 6 * static_cast<size_t>(mesh_->numFaces());
-      if (flat.size() != perVertex && flat.size() != perCorner)
-        return Error{ErrorCode::InvalidArgument, "uv has " + std::to_string(flat.size()) +
-                                                     " numbers, expected 2 per vertex (" + std::to_string(perVertex) +
-                                                     ") or 2 per face corner (" + std::to_string(perCorner) + ")"};
+      if (flat.size() % 2 != 0)
+        return Error{ErrorCode::InvalidArgument, "uv has " + std::to_string(flat.size()) + " numbers, not 2 per point"};
       std::vector<Vec2> coords(flat.size() / 2);
       for (size_t i = 0; i < coords.size(); ++i) coords[i] = {flat[2 * i], flat[2 * i + 1]};
-      // A corner without a map is NaN in cornerUv (a face of another component), and its f entry gets no vt;
-      // a vertex's vt is always written, so it must be a number ("vt nan nan" is no OBJ).
-      if (flat.size() == perVertex)
-        for (size_t i = 0; i < flat.size(); ++i)
-          if (!std::isfinite(flat[i]))
-            return Error{ErrorCode::NonFinite, "uv[" + std::to_string(i) + "] is " + std::to_string(flat[i]) +
-                                                   ", not a finite number (vertex " + std::to_string(i / 2) + ")"};
-      o.set("text", flat.size() == perVertex ? writeObj(*mesh_, &coords) : writeObjWithCornerUv(*mesh_, coords));
+      auto text = objWithUv(*mesh_, coords);
+      if (!text) return text.error();
+      o.set("text", text.value());
       return o;
     });
   }

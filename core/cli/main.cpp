@@ -19,6 +19,8 @@
 #include "huge_pages.hpp"
 #include "json_writer.hpp"
 #include "memory_warmup.hpp"
+#include "straightest/api/distance_query.hpp"
+#include "straightest/api/obj_with_uv.hpp"
 #include "straightest/api/result_fields.hpp"
 #include "straightest/base/names.hpp"
 #include "straightest/base/threads.hpp"
@@ -372,8 +374,7 @@ int runParam(const Options& o, const TriMesh& mesh, double loadMs) {
   const Parameterization& p = result.value();
   if (!o.output.empty()) {
     std::ofstream out(o.output, std::ios::binary);
-    // Cut or filled: a vt per face corner, so the seam splits (and other components get none).
-    out << (requireDisk(mesh) ? writeObj(mesh, &p.uv) : writeObjWithCornerUv(mesh, p.cornerUv));
+    out << objOfParameterization(mesh, p);
     if (!out) return fail(o, Error{ErrorCode::Io, "cannot write '" + o.output + "'"});
   }
   json out = cli::toJson(p);
@@ -457,42 +458,28 @@ int runDistances(const Options& o, const TriMesh& mesh, double loadMs) {
       table.targets.push_back(v.value());
     }
     if (table.targets.empty()) return fail(o, Error{ErrorCode::InvalidArgument, "--to needs a list of vertices"});
-  } else {
-    for (int32_t v = 0; v < mesh.numVertices(); ++v) table.targets.push_back(v);
   }
   if (o.points && table.method != DistanceMethod::Exact)
     return fail(o, Error{ErrorCode::InvalidArgument, "--points (shortest paths) needs --method exact"});
   Timings timings;
   timings.add("load", loadMs);
-  Stopwatch clock;
-  std::vector<double> all;
-  json paths = json::array(), stats;
-  if (table.method == DistanceMethod::Exact) {
-    auto field = exactGeodesics(mesh, table.source, progressLines(o.progress));
-    if (!field) return fail(o, field.error());
-    timings.add("distances", clock.lap());
-    stats = cli::toJson(field.value().stats);
-    for (int32_t t : o.points ? table.targets : std::vector<int32_t>{}) {
-      auto path = exactShortestPath(mesh, field.value(), t);
-      json pts = json::array();
-      if (path)
-        for (const Vec3& x : path.value()) pts.push_back(cli::vec3Json(x));
-      paths.push_back(std::move(pts));
-    }
-    if (o.points) timings.add("paths", clock.lap());
-    all = std::move(field).value().distances;
-  } else {
-    all = GeodesicDistances(mesh).from(table.source, table.method);
-    timings.add("distances", clock.lap());
+  auto query = queryDistances(mesh, table.source, table.method, table.targets, o.points, progressLines(o.progress),
+                              &timings);
+  if (!query) return fail(o, query.error());
+  table = query.value().table;
+  json paths = json::array();
+  for (const std::vector<Vec3>& path : query.value().paths) {
+    json pts = json::array();
+    for (const Vec3& x : path) pts.push_back(cli::vec3Json(x));
+    paths.push_back(std::move(pts));
   }
-  for (int32_t t : table.targets) table.distances.push_back(all[t]);
   json out = cli::toJson(table);
   out["targets"] = table.targets;
   json distances = json::array();
   for (double d : table.distances) distances.push_back(std::isfinite(d) ? json(d) : json(nullptr));
   out["distances"] = std::move(distances);
   if (o.points) out["paths"] = std::move(paths);
-  if (table.method == DistanceMethod::Exact) out["exact"] = std::move(stats);
+  if (table.method == DistanceMethod::Exact) out["exact"] = cli::toJson(query.value().exact);
   out["timings_ms"] = cli::toJson(timings);
   std::cout << out.dump(o.pretty ? 2 : -1) << "\n";
   return 0;
