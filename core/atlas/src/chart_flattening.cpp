@@ -133,15 +133,13 @@ std::vector<Vec2> refinedFromCircle(const TriMesh& chart, const FreeBoundaryOpti
   return std::move(map.value().cornerUv);
 }
 
-/// The free-boundary map of the chart per corner, counter-clockwise and at its 3D scale; empty on failure.
-/// Every start is bijective, so the refinement keeps it bijective whatever its iteration count.
-std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t>& faces,
+/// The free-boundary map of the chart (a disk, `chartMesh` its own mesh) per corner, counter-clockwise and
+/// at its 3D scale; empty on failure. Every start is bijective, so the refinement keeps it bijective
+/// whatever its iteration count.
+std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t>& faces, const TriMesh& chartMesh,
                                   const FreeBoundaryOptions& free) {
-  Expected<TriMesh> chartMesh = buildChartMesh(mesh, faces);
-  if (!chartMesh || !isDisk(mesh, faces, chartMesh.value())) return {};
-  const std::vector<Vec2> start = projectedStart(chartMesh.value());
-  std::vector<Vec2> uv = start.empty() ? refinedFromCircle(chartMesh.value(), free)
-                                       : refinedFrom(chartMesh.value(), start, free);
+  const std::vector<Vec2> start = projectedStart(chartMesh);
+  std::vector<Vec2> uv = start.empty() ? refinedFromCircle(chartMesh, free) : refinedFrom(chartMesh, start, free);
   if (uv.empty()) return {};
   double twiceArea = 0, area3 = 0;
   for (size_t i = 0; i < faces.size(); ++i) {
@@ -153,10 +151,15 @@ std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t
   for (Vec2& q : uv) q = Vec2{twiceArea < 0 ? -q.x : q.x, q.y} * scale;
   return uv;
 }
-/// isDisk of the chart's own mesh (false when it cannot be built).
-bool isDiskChart(const TriMesh& mesh, const std::vector<int32_t>& faces) {
+
+/// A chart of several faces mapped by projection when it is planar, else by the free boundary; empty when
+/// it is not a disk or the map fails. The chart's mesh is built once for both the disk test and the map.
+std::vector<Vec2> mapOfDisk(const TriMesh& mesh, const std::vector<int32_t>& faces, const FreeBoundaryOptions& free) {
   Expected<TriMesh> chartMesh = buildChartMesh(mesh, faces);
-  return chartMesh && isDisk(mesh, faces, chartMesh.value());
+  if (!chartMesh || !isDisk(mesh, faces, chartMesh.value())) return {};
+  std::vector<Vec2> uv = projectPlanar(mesh, faces);
+  if (!uv.empty() && cornerStretch(mesh, faces, uv).flipped == 0) return uv;
+  return freeBoundaryMap(mesh, faces, chartMesh.value(), free);
 }
 }  // namespace
 
@@ -166,9 +169,7 @@ ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, do
   out.chart.faces = std::move(faces);
   const std::vector<int32_t>& chartFaces = out.chart.faces;
   std::vector<Vec2> uv;
-  if (chartFaces.size() > 1 && isDiskChart(mesh, chartFaces)) uv = projectPlanar(mesh, chartFaces);
-  if (!uv.empty() && cornerStretch(mesh, chartFaces, uv).flipped > 0) uv.clear();
-  if (chartFaces.size() > 1 && uv.empty()) uv = freeBoundaryMap(mesh, chartFaces, free);
+  if (chartFaces.size() > 1) uv = mapOfDisk(mesh, chartFaces, free);
   const bool mapped = !uv.empty() || chartFaces.size() == 1;
   if (uv.empty()) uv = loneFaces(mesh, chartFaces);
   const CornerStretch stretch = cornerStretch(mesh, chartFaces, uv);
