@@ -12,6 +12,7 @@ ChartGrower::ChartGrower(const TriMesh& mesh, const std::vector<Vec3>& centroids
 
 void ChartGrower::addSeed(int32_t face) {
   normalSum_.push_back({0, 0, 0});
+  size_.push_back(0);
   assign(face, chartCount() - 1, 0);
 }
 
@@ -42,10 +43,11 @@ void ChartGrower::assign(int32_t face, int32_t chart, double distance) {
   label_[face] = chart;
   distance_[face] = distance;
   normalSum_[chart] += mesh_.faceNormal(face) * mesh_.faceArea(face);
+  ++size_[chart];
   ++assigned_;
   for (int k = 0; k < 3; ++k) {
     const int32_t g = faceAcross(mesh_, face, k);
-    if (g < 0 || label_[g] >= 0) continue;
+    if (g < 0 || label_[g] >= 0 || isFull(chart)) continue;
     const double d = distance + norm(centroids_[g] - centroids_[face]);
     queue_.push({costOf(g, chart, d), g, chart, d});
   }
@@ -57,7 +59,7 @@ bool ChartGrower::grow(const std::function<bool(double)>& keepGoing) {
     if (++pops % 4096 == 0 && !keepGoing(double(assigned_) / mesh_.numFaces())) return false;
     const Candidate c = queue_.top();
     queue_.pop();
-    if (label_[c.face] >= 0) continue;
+    if (label_[c.face] >= 0 || isFull(c.chart)) continue;
     const double now = costOf(c.face, c.chart, c.distance);
     if (now > c.cost) {  // the chart moved away since it was queued: wait for its turn at the new cost
       queue_.push({now, c.face, c.chart, c.distance});

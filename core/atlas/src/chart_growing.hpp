@@ -16,6 +16,7 @@ struct GrowthCost {
   double boundaryWeight = 1;    // × the share of the face's perimeter that would become chart boundary
   double distanceScale = 1;     // the expected radius of a chart
   double minNormalCosine = -2;  // a face joins only while n_face · n_chart >= this (-2: any face joins)
+  int32_t maxFaces = 0;         // a chart stops growing at this many faces (0: no cap)
 };
 
 class ChartGrower {
@@ -46,6 +47,7 @@ class ChartGrower {
   };
   double costOf(int32_t face, int32_t chart, double distance) const;
   bool fitsCone(int32_t face, int32_t chart) const;
+  bool isFull(int32_t chart) const { return cost_.maxFaces > 0 && size_[chart] >= cost_.maxFaces; }
   void assign(int32_t face, int32_t chart, double distance);
 
   const TriMesh& mesh_;
@@ -54,6 +56,7 @@ class ChartGrower {
   std::vector<int32_t> label_;
   std::vector<double> distance_;
   std::vector<Vec3> normalSum_;  // per chart, Σ area × normal
+  std::vector<int32_t> size_;    // per chart, its face count
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue_;
   int32_t assigned_ = 0;
 };

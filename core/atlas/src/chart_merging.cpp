@@ -31,9 +31,9 @@ Vec3 averageNormal(const TriMesh& mesh, const FlatChart& chart) {
   return length > 0 ? n / length : n;
 }
 
-/// Adjacent pairs worth a trial, best first, each chart in at most one.
+/// Adjacent pairs worth a trial, best first, each chart in at most one; none whose union exceeds maxFaces.
 std::vector<MergeTrial> chooseTrials(const TriMesh& mesh, const std::vector<FlatChart>& charts,
-                                     const ChartPairs& knownBad) {
+                                     const ChartPairs& knownBad, int32_t maxFaces) {
   std::vector<int32_t> label(mesh.numFaces());
   std::vector<Vec3> normal(charts.size());
   for (size_t c = 0; c < charts.size(); ++c) {
@@ -50,6 +50,7 @@ std::vector<MergeTrial> chooseTrials(const TriMesh& mesh, const std::vector<Flat
   for (const auto& [pair, length] : shared) {
     const auto& [a, b] = pair;
     if (dot(normal[a], normal[b]) < 0) continue;
+    if (maxFaces > 0 && charts[a].faces.size() + charts[b].faces.size() > static_cast<size_t>(maxFaces)) continue;
     if (knownBad.count(chartPair(chartKey(charts[a].faces), chartKey(charts[b].faces)))) continue;
     candidates.push_back({a, b, std::min(charts[a].faces.size(), charts[b].faces.size()), length});
   }
@@ -80,7 +81,7 @@ Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& chart
   int32_t merges = 0;
   int64_t budget = kTrialFacesPerFace * static_cast<int64_t>(mesh.numFaces());
   while (budget > 0) {
-    std::vector<MergeTrial> trials = chooseTrials(mesh, charts, knownBad);
+    std::vector<MergeTrial> trials = chooseTrials(mesh, charts, knownBad, options.maxChartFaces);
     std::vector<std::vector<int32_t>> unions;
     for (const MergeTrial& t : trials) {
       if (budget <= 0) break;  // the trials are best first: the ones left out matter least

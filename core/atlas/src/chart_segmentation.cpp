@@ -84,6 +84,7 @@ void finish(const TriMesh& mesh, std::vector<FlatChart> charts, ChartSet& set) {
 Expected<ChartSet> charts(const TriMesh& mesh, const ChartOptions& options, const Progress& progress) {
   GrowthCost cost;
   cost.minNormalCosine = kConeCosine;
+  cost.maxFaces = options.maxChartFaces;
   auto labels = initialCharts(mesh, faceCentroids(mesh), cost, progress);
   if (!labels) return labels.error();
   ChartSet set;
@@ -106,6 +107,9 @@ Expected<ChartSet> makeCharts(const TriMesh& mesh, const ChartOptions& options, 
   if (options.maxCharts < 0)
     return Error{ErrorCode::InvalidArgument,
                  "maxCharts must be 0 (no cap) or positive, not " + std::to_string(options.maxCharts)};
+  if (options.maxChartFaces < 0)
+    return Error{ErrorCode::InvalidArgument,
+                 "maxChartFaces must be 0 (no cap) or positive, not " + std::to_string(options.maxChartFaces)};
   return guarded([&] { return charts(mesh, options, progress); });
 }
 

@@ -37,6 +37,12 @@ std::vector<double> curvaturePerComponent(const TriMesh& mesh, const std::vector
   return curvature;
 }
 
+/// Seeds for `faces` faces when no chart may exceed `maxFaces`: grown charts are not equal, so a third more
+/// than the even share, which leaves few regions over for reseeding.
+int32_t cappedSeedCount(size_t faces, int32_t maxFaces) {
+  return static_cast<int32_t>(std::ceil(4.0 / 3.0 * static_cast<double>(faces) / maxFaces));
+}
+
 /// `count` seeds spread by farthest-point sampling over one component's faces (`distance` is scratch).
 std::vector<int32_t> farthestPointSeeds(const TriMesh& mesh, const std::vector<Vec3>& centroids,
                                         const std::vector<int32_t>& faces, int32_t count,
@@ -56,8 +62,9 @@ std::vector<int32_t> farthestPointSeeds(const TriMesh& mesh, const std::vector<V
   return seeds;
 }
 
-/// The seeds of every component, in component order.
-std::vector<int32_t> initialSeeds(const TriMesh& mesh, const std::vector<Vec3>& centroids) {
+/// The seeds of every component, in component order: enough for its curvature and, with a cap on the
+/// chart size, enough that the capped charts can cover it (else growth leaves regions for many reseeds).
+std::vector<int32_t> initialSeeds(const TriMesh& mesh, const std::vector<Vec3>& centroids, int32_t maxFaces) {
   int32_t count = 0;
   const std::vector<int32_t> component = faceComponents(mesh, count);
   const std::vector<double> curvature = curvaturePerComponent(mesh, component, count);
@@ -67,7 +74,8 @@ std::vector<int32_t> initialSeeds(const TriMesh& mesh, const std::vector<Vec3>& 
   std::vector<int32_t> seeds;
   for (int32_t c = 0; c < count; ++c) {
     const int32_t byFaces = 1 + static_cast<int32_t>(faces[c].size()) / kFacesPerSeed;
-    const int32_t byCurvature = static_cast<int32_t>(std::ceil(curvature[c] / kCurvaturePerSeed));
+    int32_t byCurvature = static_cast<int32_t>(std::ceil(curvature[c] / kCurvaturePerSeed));
+    if (maxFaces > 0) byCurvature = std::max(byCurvature, cappedSeedCount(faces[c].size(), maxFaces));
     const int32_t wanted = std::clamp(byCurvature, 1, byFaces);
     for (int32_t s : farthestPointSeeds(mesh, centroids, faces[c], wanted, distance)) seeds.push_back(s);
   }
@@ -117,7 +125,7 @@ std::vector<int32_t> reseedLeftovers(const TriMesh& mesh, const std::vector<Vec3
 Expected<std::vector<int32_t>> initialCharts(const TriMesh& mesh, const std::vector<Vec3>& centroids, GrowthCost cost,
                                              const Progress& progress) {
   ThrottledProgress throttled(progress, "segment");
-  const std::vector<int32_t> seeds = initialSeeds(mesh, centroids);
+  const std::vector<int32_t> seeds = initialSeeds(mesh, centroids, cost.maxFaces);
   double area = 0;
   for (int32_t f = 0; f < mesh.numFaces(); ++f) area += mesh.faceArea(f);
   cost.distanceScale = std::max(std::sqrt(area / (kPi * seeds.size())), 1e-300);

@@ -33,6 +33,10 @@ namespace straightest {
 struct ChartOptions {
   double maxStretch = 1.02;  // per-chart Sander L2 target after flattening (>= 1); charts above it are split
   int32_t maxCharts = 0;     // 0: no cap; otherwise splitting stops at this many charts (ChartSet::capped)
+  // The most faces a chart grows to or merges into (0: no cap). Without it a large smooth mesh becomes a few
+  // huge charts whose refinement solves dominate and run one at a time; with it a big developable region
+  // becomes several charts, which costs a texture a little seam and keeps every solve small and parallel.
+  int32_t maxChartFaces = 5000;
   // Per-chart refinement caps. Fewer iterations and a looser tolerance than one whole-mesh map: a chart is
   // nearly developable, so its refinement converges early, and a chart that needs more is split anyway.
   FreeBoundaryOptions free{50, 1e-4, 60000};
@@ -54,7 +58,7 @@ struct ChartSet {
   bool capped = false;               // maxCharts stopped a split
 };
 
-/// Errors: InvalidArgument (maxStretch < 1 or not finite, maxCharts < 0), Cancelled, TooLarge.
+/// Errors: InvalidArgument (maxStretch < 1 or not finite, maxCharts < 0, maxChartFaces < 0), Cancelled, TooLarge.
 Expected<ChartSet> makeCharts(const TriMesh& mesh, const ChartOptions& options, const Progress& progress = {});
 
 }  // namespace straightest
