@@ -41,30 +41,41 @@ double scaleThatFits(Vec2 extent, Vec2 usable, bool rotate) {
   return rotate ? std::max(upright, turned) : upright;
 }
 
+/// Chart indices by decreasing key (ties in input order).
+std::vector<int32_t> orderedBy(const std::vector<double>& key) {
+  std::vector<int32_t> order(key.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return key[a] > key[b]; });
+  return order;
+}
+
 }  // namespace
 
 ChartMeasures measureCharts(const std::vector<ChartShape>& charts, bool rotate, const AtlasFrame& frame) {
   ChartMeasures measures;
   const Vec2 usable{static_cast<double>(frame.width - 2 * frame.border),
                     static_cast<double>(frame.height - 2 * frame.border)};
-  std::vector<double> rectangleArea(charts.size());
+  std::vector<double> rectangleArea(charts.size()), longestSide(charts.size()), chartAreas(charts.size());
   measures.scaleUpperBound = kInfinity;
   for (size_t i = 0; i < charts.size(); ++i) {
     const double base = rotate ? minAreaRectangleAngle(charts[i].triangles) : 0;
-    measures.angles.push_back(rotate ? std::vector<double>{base, base + kPi / 2, base + kPi, base + 3 * kPi / 2}
-                                     : std::vector<double>{0});
+    std::vector<double> angles{0};
+    if (rotate) {
+      angles.clear();
+      for (int k = 0; k < 4; ++k) angles.push_back(base + k * kPi / 2);
+    }
+    measures.angles.push_back(angles);
     const Vec2 extent = rotatedExtent(charts[i].triangles, base);
     rectangleArea[i] = extent.x * extent.y;
+    longestSide[i] = std::max(extent.x, extent.y);
     measures.largestExtent = std::max({measures.largestExtent, extent.x, extent.y});
     measures.scaleUpperBound = std::min(measures.scaleUpperBound, scaleThatFits(extent, usable, rotate));
-    measures.totalArea += chartArea(charts[i].triangles);
+    chartAreas[i] = chartArea(charts[i].triangles);
+    measures.totalArea += chartAreas[i];
   }
-  if (measures.totalArea > 0)
-    measures.scaleUpperBound = std::min(measures.scaleUpperBound, std::sqrt(usable.x * usable.y / measures.totalArea));
-  measures.order.resize(charts.size());
-  std::iota(measures.order.begin(), measures.order.end(), 0);
-  std::stable_sort(measures.order.begin(), measures.order.end(),
-                   [&](int32_t a, int32_t b) { return rectangleArea[a] > rectangleArea[b]; });
+  measures.fillScale = measures.totalArea > 0 ? std::sqrt(usable.x * usable.y / measures.totalArea) : kInfinity;
+  measures.scaleUpperBound = std::min(measures.scaleUpperBound, measures.fillScale);
+  measures.orders = {orderedBy(rectangleArea), orderedBy(longestSide), orderedBy(chartAreas)};
   return measures;
 }
 

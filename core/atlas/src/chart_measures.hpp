@@ -9,10 +9,13 @@
 namespace straightest::atlas_detail {
 
 struct ChartMeasures {
-  ChartAngles angles;          // per chart: the rotations the packer tries
-  std::vector<int32_t> order;  // charts by decreasing minimum-rectangle area (the hardest to place first)
+  ChartAngles angles;  // per chart: the rotations the packer tries
+  // Charts by decreasing minimum-rectangle area, longest side and area: the hardest to place first, each
+  // order a different greedy packing (one that fits is enough).
+  std::vector<std::vector<int32_t>> orders;
   double totalArea = 0;        // Σ |uv triangle area|, in square units
   double largestExtent = 0;    // the longest side of any chart's minimum rectangle, in units
+  double fillScale = 0;        // texels per unit at which the chart area equals the usable area (inf: no area)
   double scaleUpperBound = 0;  // texels per unit above which the charts cannot fit (infinite for points)
 };
 

@@ -21,6 +21,12 @@ constexpr const char* kStage = "pack";
 constexpr double kExpectedTrials = 12;
 // Below this the search gives up: the charts need more padded texels than the atlas has.
 constexpr int kMaxShrinks = 80;
+// The first scale tried fills this fraction of the atlas with chart area; greedy packings of real chart sets
+// reach about this, so the search brackets the answer within a step or two.
+constexpr double kExpectedFill = 0.7;
+// Steps of the search before it has a bracket: fine near the estimate, coarse when the charts are far from
+// fitting (more charts than padded texels).
+constexpr double kFineStep = 0.96, kCoarseShrink = 0.8;
 
 struct Search {
   const std::vector<ChartShape>& charts;
@@ -30,12 +36,26 @@ struct Search {
   int trials = 0;
 };
 
+/// The part of the progress range that trial `done` covers, [from, to) of its work.
+Progress trialPart(const Search& search, double done, double from, double to) {
+  auto at = [&](double part) { return std::min(0.99, (done + part) / kExpectedTrials); };
+  return search.progress.range(at(from), at(to));
+}
+
+/// The charts packed at `scale`: rasterized once, then packed in each order until one fits.
 PackOutcome tryScale(Search& search, double scale, std::vector<Placement>& placements) {
   const double done = search.trials++;
-  ThrottledProgress throttled(search.progress, kStage);
-  auto keepGoing = [&](double fraction) { return throttled(std::min(0.99, (done + fraction) / kExpectedTrials)); };
-  return atlas_detail::packAtScale(search.charts, search.measures.angles, search.measures.order, scale, search.frame,
-                                   keepGoing, placements);
+  const auto masks = atlas_detail::rasterizeAll(search.charts, search.measures.angles, scale, search.frame,
+                                                trialPart(search, done, 0, 0.5));
+  if (!masks) return PackOutcome::Cancelled;
+  const auto& orders = search.measures.orders;
+  for (size_t k = 0; k < orders.size(); ++k) {
+    const Progress part = trialPart(search, done, 0.5 + 0.5 * k / orders.size(), 0.5 + 0.5 * (k + 1) / orders.size());
+    ThrottledProgress throttled(part, kStage);
+    const PackOutcome outcome = atlas_detail::packMasks(*masks, orders[k], search.frame, throttled, placements);
+    if (outcome != PackOutcome::DoesNotFit) return outcome;
+  }
+  return PackOutcome::DoesNotFit;
 }
 
 /// The search stops when the bracket [fits, fails] is within half a texel on the largest chart, or 0.5 %.
@@ -44,12 +64,23 @@ double searchTolerance(const ChartMeasures& measures, double fittingScale) {
   return std::min(0.005, halfTexel);
 }
 
-/// The largest scale (within the tolerance) at which the greedy packing fits; its placements in `best`.
+/// The next scale to try: down in growing steps until one fits, then up in steps until one fails (never past
+/// the bound), then the geometric middle of the bracket.
+double nextScale(double scale, double fits, double fails, double upper, int shrinks) {
+  if (fits == 0) return scale * (shrinks <= 3 ? kFineStep : kCoarseShrink);
+  if (fails > upper) return std::min(upper, fits / kFineStep);
+  return std::sqrt(fits * fails);
+}
+
+/// The largest scale (within the tolerance) at which the greedy packing fits; its placements in `best`. The
+/// search starts where the charts would fill kExpectedFill of the atlas, so that a few packings bracket it.
 Expected<double> largestFittingScale(Search& search, std::vector<Placement>& best) {
-  double fits = 0, fails = search.measures.scaleUpperBound;
+  double upper = search.measures.scaleUpperBound;
   // All charts points: any scale packs them the same; 1 texel per unit is as good as any.
-  if (!std::isfinite(fails)) fails = 1;
-  double scale = fails;
+  if (!std::isfinite(upper)) upper = 1;
+  const double unknown = 2 * upper;  // no scale has failed yet (every scale above the bound would)
+  double fits = 0, fails = unknown;
+  double scale = std::min(upper, search.measures.fillScale * std::sqrt(kExpectedFill));
   std::vector<Placement> placements;
   for (int shrinks = 0;;) {
     const PackOutcome outcome = tryScale(search, scale, placements);
@@ -60,13 +91,12 @@ Expected<double> largestFittingScale(Search& search, std::vector<Placement>& bes
     } else {
       fails = scale;
     }
-    if (fits == 0) {
-      if (++shrinks > kMaxShrinks) return Error{ErrorCode::TooLarge, "pack: the charts do not fit at any scale"};
-      scale *= search.trials == 1 ? 0.85 : 0.8;
-      continue;
-    }
-    if (fits == fails || fails / fits <= 1 + searchTolerance(search.measures, fits)) return fits;
-    scale = std::sqrt(fits * fails);
+    if (fits == 0 && ++shrinks > kMaxShrinks)
+      return Error{ErrorCode::TooLarge, "pack: the charts do not fit at any scale"};
+    if (fits == upper) return fits;
+    if (fits > 0 && fails != unknown && (fits == fails || fails / fits <= 1 + searchTolerance(search.measures, fits)))
+      return fits;
+    scale = nextScale(scale, fits, fails, upper, shrinks);
   }
 }
 

@@ -38,6 +38,14 @@ void rasterizeTriangle(const Vec2 (&corner)[3], TexelMask& mask) {
   const double yMax = std::max({corner[0].y, corner[1].y, corner[2].y});
   const int32_t firstRow = std::max(0, static_cast<int32_t>(std::floor(yMin - kMargin)));
   const int32_t lastRow = std::min(mask.height() - 1, static_cast<int32_t>(std::floor(yMax + kMargin)));
+  if (firstRow == lastRow) {
+    // Most triangles of a dense chart lie in one row's strip: the clipped extent is the whole triangle's.
+    const double xMin = std::min({corner[0].x, corner[1].x, corner[2].x});
+    const double xMax = std::max({corner[0].x, corner[1].x, corner[2].x});
+    mask.assignSpan(firstRow, static_cast<int32_t>(std::floor(xMin - kMargin)),
+                    static_cast<int32_t>(std::floor(xMax + kMargin)), true);
+    return;
+  }
   for (int32_t row = firstRow; row <= lastRow; ++row) {
     const Extent extent = extentInStrip(corner, row - kMargin, row + 1 + kMargin);
     if (extent.empty()) continue;

@@ -3,18 +3,17 @@
 #include "pack_at_scale.hpp"
 
 #include <limits>
-#include <optional>
 
 #include "atlas_occupancy.hpp"
-#include "chart_raster.hpp"
+#include "straightest/base/parallel_for.hpp"
 
 namespace straightest::atlas_detail {
 namespace {
 
 struct Choice {
-  ChartMask mask;
+  const ChartMask* mask = nullptr;
   TexelPosition position;
-  int32_t top() const { return position.y + mask.texels.height(); }
+  int32_t top() const { return position.y + mask->texels.height(); }
 };
 
 bool betterThan(const Choice& a, const std::optional<Choice>& b) {
@@ -24,39 +23,47 @@ bool betterThan(const Choice& a, const std::optional<Choice>& b) {
 }
 
 /// The best rotation's first fit for one chart; nothing when no rotation fits.
-std::optional<Choice> bestPlacement(const ChartShape& chart, const std::vector<double>& angles, double texelsPerUnit,
-                                    AtlasOccupancy& occupancy) {
+std::optional<Choice> bestPlacement(const std::vector<std::optional<ChartMask>>& masks, AtlasOccupancy& occupancy) {
   std::optional<Choice> best;
-  for (const double angle : angles) {
-    auto raster = rasterizeChart(chart.triangles, texelsPerUnit, angle, occupancy.width(), occupancy.height());
-    if (!raster) continue;
-    ChartMask& mask = *raster;
-    const int32_t h = mask.texels.height();
+  for (const auto& mask : masks) {
+    if (!mask) continue;
+    const int32_t h = mask->texels.height();
     // Only positions whose top can beat (or tie) the best so far are worth scanning.
     const int32_t highestRow = best ? best->top() - h : std::numeric_limits<int32_t>::max();
-    const auto position = occupancy.firstFit(mask, highestRow);
+    const auto position = occupancy.firstFit(*mask, highestRow);
     if (!position) continue;
-    Choice choice{std::move(mask), *position};
-    if (betterThan(choice, best)) best = std::move(choice);
+    const Choice choice{&*mask, *position};
+    if (betterThan(choice, best)) best = choice;
   }
   return best;
 }
 
 }  // namespace
 
-PackOutcome packAtScale(const std::vector<ChartShape>& charts, const ChartAngles& angles,
-                        const std::vector<int32_t>& order, double texelsPerUnit, const AtlasFrame& frame,
-                        const std::function<bool(double)>& keepGoing, std::vector<Placement>& placements) {
+std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, const ChartAngles& angles,
+                                       double texelsPerUnit, const AtlasFrame& frame, const Progress& progress) {
+  ChartMasks masks(charts.size());
+  auto body = [&](size_t, size_t begin, size_t end) {
+    for (size_t c = begin; c < end; ++c)
+      for (const double angle : angles[c])
+        masks[c].push_back(rasterizeChart(charts[c].triangles, texelsPerUnit, angle, frame.width, frame.height));
+  };
+  if (!detail::parallelFor(charts.size(), 1, body, progress, "pack")) return std::nullopt;
+  return masks;
+}
+
+PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, const AtlasFrame& frame,
+                      const std::function<bool(double)>& keepGoing, std::vector<Placement>& placements) {
   AtlasOccupancy occupancy(frame.width, frame.height, frame.border, frame.padding);
-  placements.assign(charts.size(), Placement{});
+  placements.assign(masks.size(), Placement{});
   for (size_t i = 0; i < order.size(); ++i) {
     if (!keepGoing(static_cast<double>(i) / order.size())) return PackOutcome::Cancelled;
     const int32_t chart = order[i];
-    const auto choice = bestPlacement(charts[chart], angles[chart], texelsPerUnit, occupancy);
+    const auto choice = bestPlacement(masks[chart], occupancy);
     if (!choice) return PackOutcome::DoesNotFit;
-    occupancy.claim(choice->mask, choice->position);
+    occupancy.claim(*choice->mask, choice->position);
     const Vec2 corner{static_cast<double>(choice->position.x), static_cast<double>(choice->position.y)};
-    placements[chart] = Placement{choice->mask.angle, corner - choice->mask.origin};
+    placements[chart] = Placement{choice->mask->angle, corner - choice->mask->origin};
   }
   return PackOutcome::Packed;
 }

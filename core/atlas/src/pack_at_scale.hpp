@@ -1,10 +1,13 @@
-// pack_at_scale.hpp — one greedy packing at a fixed texel density: charts in a given order, each at the
-// rotation and first-fit position that keep the packed extent lowest.
+// pack_at_scale.hpp — one greedy packing at a fixed texel density: every chart's rotations rasterized once
+// (in parallel), then charts placed in a given order, each at the rotation and first-fit position that keep
+// the packed extent lowest.
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
+#include "chart_raster.hpp"
 #include "straightest/atlas/chart_packing.hpp"
 
 namespace straightest::atlas_detail {
@@ -14,15 +17,23 @@ struct AtlasFrame {
   double padding = 0;
 };
 
-/// Per chart, the rotations worth trying (the minimum-area rectangle's and its right angles, or 0 alone).
+/// Per chart, the rotations worth trying (the minimum-area rectangle's and its multiples of 45°, or 0 alone).
 using ChartAngles = std::vector<std::vector<double>>;
+
+/// Per chart, one mask per rotation (nothing where the rotated chart is larger than the atlas).
+using ChartMasks = std::vector<std::vector<std::optional<ChartMask>>>;
 
 enum class PackOutcome { Packed, DoesNotFit, Cancelled };
 
-/// Places every chart of `charts`, in `order`, at `texelsPerUnit`; `placements` (one per chart, input order)
-/// is complete only when the outcome is Packed. `keepGoing(fraction)` is asked as the charts go; false cancels.
-PackOutcome packAtScale(const std::vector<ChartShape>& charts, const ChartAngles& angles,
-                        const std::vector<int32_t>& order, double texelsPerUnit, const AtlasFrame& frame,
-                        const std::function<bool(double)>& keepGoing, std::vector<Placement>& placements);
+/// Every chart rasterized at every one of its rotations at `texelsPerUnit`, charts on the core's threads
+/// (each mask depends only on its chart, so any thread count gives the same masks). `progress` is asked as
+/// the charts go; false cancels (nothing then).
+std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, const ChartAngles& angles,
+                                       double texelsPerUnit, const AtlasFrame& frame, const Progress& progress);
+
+/// Places every chart, in `order`, from its masks; `placements` (one per chart, input order) is complete only
+/// when the outcome is Packed. `keepGoing(fraction)` is asked as the charts go; false cancels.
+PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, const AtlasFrame& frame,
+                      const std::function<bool(double)>& keepGoing, std::vector<Placement>& placements);
 
 }  // namespace straightest::atlas_detail
