@@ -152,14 +152,28 @@ std::vector<Vec2> freeBoundaryMap(const TriMesh& mesh, const std::vector<int32_t
   return uv;
 }
 
+/// Whether the chart's outline under `uv` (per corner, face i of the chart mesh at 3i) crosses itself: every
+/// triangle counter-clockwise is not enough for a chart to lie flat without covering itself (a planar chart
+/// that winds round, a map whose boundary met itself), and the texture would be sampled twice there.
+bool outlineCrossesItself(const TriMesh& chart, const std::vector<Vec2>& uv) {
+  std::vector<Vec2> perVertex(chart.numVertices());
+  for (int32_t f = 0; f < chart.numFaces(); ++f)
+    for (int k = 0; k < 3; ++k) perVertex[chart.triangle(f)[k]] = uv[3 * static_cast<size_t>(f) + k];
+  return boundaryOverlaps(chart, perVertex) > 0;
+}
+
 /// A chart of several faces mapped by projection when it is planar, else by the free boundary; empty when
-/// it is not a disk or the map fails. The chart's mesh is built once for both the disk test and the map.
+/// it is not a disk or no map lies flat without folding or covering itself. The chart's mesh is built once
+/// for the disk test, the maps and the outline check.
 std::vector<Vec2> mapOfDisk(const TriMesh& mesh, const std::vector<int32_t>& faces, const FreeBoundaryOptions& free) {
   Expected<TriMesh> chartMesh = buildChartMesh(mesh, faces);
   if (!chartMesh || !isDisk(mesh, faces, chartMesh.value())) return {};
   std::vector<Vec2> uv = projectPlanar(mesh, faces);
-  if (!uv.empty() && cornerStretch(mesh, faces, uv).flipped == 0) return uv;
-  return freeBoundaryMap(mesh, faces, chartMesh.value(), free);
+  if (!uv.empty() && cornerStretch(mesh, faces, uv).flipped == 0 && !outlineCrossesItself(chartMesh.value(), uv))
+    return uv;
+  uv = freeBoundaryMap(mesh, faces, chartMesh.value(), free);
+  if (uv.empty() || outlineCrossesItself(chartMesh.value(), uv)) return {};
+  return uv;
 }
 }  // namespace
 
