@@ -186,10 +186,13 @@ test('progress reports the four stages; cancelling in each leaves the mesh usabl
   assert.deepEqual([...new Set(seen.map(([s]) => s))], ['segment', 'flatten', 'pack', 'measure']);
   assert.ok(seen.every(([, f]) => f >= 0 && f <= 1));
   assert.deepEqual(seen.at(-1), ['measure', 1]);
+  st.atlas([mesh]);
+  const heap = st.heapUsedBytes;
   for (const stop of ['segment', 'flatten', 'pack', 'measure']) {
     assert.throws(() => mesh.atlas({ onProgress: (stage) => stage !== stop }), (e) => e.category === 'cancelled', stop);
     assert.throws(() => st.atlas([mesh], { onProgress: (stage) => stage !== stop }), (e) => e.category === 'cancelled');
   }
+  assert.equal(st.heapUsedBytes, heap, 'a cancelled atlas frees what it allocated');
   const again = mesh.atlas();
   assert.deepEqual(again.cornerUv, first.cornerUv);
   assert.equal(mesh.info().faces, first.chartOfFace.length);
