@@ -16,6 +16,7 @@
 #include "straightest/api/distance_query.hpp"
 #include "straightest/api/obj_with_uv.hpp"
 #include "straightest/api/warm_up.hpp"
+#include "straightest/atlas/atlas.hpp"
 #include "straightest/base/names.hpp"
 #include "straightest/base/threads.hpp"
 #include "straightest/geodesics/exact_geodesic.hpp"
@@ -257,6 +258,24 @@ class MeshHandle {
     });
   }
 
+  /// A texture atlas of the mesh: the Atlas's fields and the stages' timings.
+  val atlas(const val& optionsJs, const val& progress) const {
+    return respond([&]() -> Expected<val> {
+      auto options = atlasOptionsFrom(optionsJs);
+      if (!options) return options.error();
+      Timings timings;
+      options.value().timings = &timings;
+      auto result = buildAtlas(*mesh_, options.value(), progressFrom(progress));
+      if (!result) return result.error();
+      JsWriter w;
+      visitFields(result.value(), w);
+      w.object("timings", [&](auto& o) { visitFields(timings, o); });
+      return w.result();
+    });
+  }
+
+  const TriMesh& mesh() const { return *mesh_; }
+
   /// OBJ text of the mesh; with uv also vt lines and v/vt faces. uv is 2 numbers per vertex (a vt per
   /// vertex) or, when it has 6 per face instead (a cut mesh's cornerUv), one per face corner (a vt per
   /// distinct uv: seams split; NaN corners: the face without vt). Per vertex wins if both lengths fit.
@@ -353,6 +372,37 @@ val meshFromArrays(const val& positions, const val& indices, const val& options,
   });
 }
 
+/// One atlas shared by several meshes (an array of MeshHandles): the Atlas of their union (combineMeshes), and
+/// `meshes`, each mesh's cornerUv and chartOfFace (its faces are a contiguous range of the union's, in order).
+val atlasOfMeshes(const val& handles, const val& optionsJs, const val& progress) {
+  return respond([&]() -> Expected<val> {
+    auto options = atlasOptionsFrom(optionsJs);
+    if (!options) return options.error();
+    std::vector<const TriMesh*> meshes;
+    const auto n = handles["length"].as<unsigned>();
+    for (unsigned i = 0; i < n; ++i)
+      meshes.push_back(&handles[i].as<MeshHandle*>(emscripten::allow_raw_pointers())->mesh());
+    auto combined = combineMeshes(meshes);
+    if (!combined) return combined.error();
+    Timings timings;
+    options.value().timings = &timings;
+    auto result = buildAtlas(combined.value(), options.value(), progressFrom(progress));
+    if (!result) return result.error();
+    const Atlas& a = result.value();
+    JsWriter w;
+    visitFields(a, w);
+    w.object("timings", [&](auto& o) { visitFields(timings, o); });
+    size_t first = 0;  // the mesh's first face in the union
+    w.objects("meshes", meshes.size(), [&](size_t i, JsWriter& o) {
+      const size_t faces = static_cast<size_t>(meshes[i]->numFaces());
+      o.bulk("cornerUv", packed(a.cornerUv) + 6 * first, 6 * faces, Bulk::Float32);
+      o.bulk("chartOfFace", a.chartOfFace.data() + first, faces, Bulk::Int32);
+      first += faces;
+    });
+    return w.result();
+  });
+}
+
 val sample(const std::string& name) {
   return respond([&]() -> Expected<val> { return meshResult(makeSample(name)); });
 }
@@ -398,11 +448,13 @@ EMSCRIPTEN_BINDINGS(straightest) {
       .function("parameterize", &MeshHandle::parameterizeMesh)
       .function("boundaryPolygons", &MeshHandle::boundaryPolygonsOf)
       .function("compareParameterizations", &MeshHandle::compare)
+      .function("atlas", &MeshHandle::atlas)
       .function("toObj", &MeshHandle::toObj)
       .function("positionsView", &MeshHandle::positionsView)
       .function("indicesView", &MeshHandle::indicesView);
   emscripten::function("loadMeshBytes", &loadMeshBytes);
   emscripten::function("meshFromArrays", &meshFromArrays);
+  emscripten::function("atlas", &atlasOfMeshes);
   emscripten::function("sample", &sample);
   emscripten::function("sampleNames", &sampleNameList);
   emscripten::function("nameLists", &nameLists);

@@ -54,6 +54,7 @@ const SHOT = ['source', 'direction', 'angle', 'toward', 'length', 'points', 'onP
 const PARAMETERIZE = ['source', 'boundary', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
 const POLYGONS = ['source', 'kinds', 'onProgress'];
 const COMPARE = ['source', 'boundaries', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
+const ATLAS = ['maxStretch', 'maxCharts', 'resolution', 'width', 'height', 'padding', 'texelsPerUnit', 'rotate', 'onProgress'];
 const CREATE = ['threads', 'warmUp', 'wasmUrl', 'locateFile', 'wasmBinary'];
 
 /** The warmUp option, or a TypeError (checked before a module is started for it). */
@@ -253,6 +254,23 @@ export class Mesh {
   }
 
   /**
+   * A texture atlas: the mesh split into charts that are topological disks, each flattened with the free
+   * boundary (never folding, never mirrored) until its stretch is at most maxStretch, packed into one
+   * texture of resolution² (or width × height) texels with `padding` texels between charts. Returns
+   * cornerUv (2 floats per face corner in [0, 1]²), chartOfFace, the seam, and the measurement of that uv
+   * (stretch, utilization, flipped, mirrored, overlaps, padding violations, …); stages 'segment', 'flatten',
+   * 'pack', 'measure'.
+   */
+  atlas(options) {
+    const { onProgress, ...rest } = checkedOptions(options, ATLAS, 'atlas');
+    const handle = this.#live();
+    return withProgress(onProgress, (progress) => handle.atlas(rest, progress), this.#hint);
+  }
+
+  /** The live Embind handle, for Straightest.atlas (the token keeps it from the public API). */
+  [internal]() { return this.#live(); }
+
+  /**
    * The mesh as OBJ text (input vertex order); with uv also `vt` lines: 2 numbers per vertex (a vt per
    * vertex), or 2 per face corner (a parameterization's cornerUv: a vt per distinct uv, so seams split).
    */
@@ -348,6 +366,20 @@ export class Straightest {
     const [xyz, triangles] = [numberArray(positions), numberArray(indices)];
     const checked = checkedOptions(limits, LIMITS, 'meshFromArrays');
     return new Mesh(internal, unwrap(this.#module.meshFromArrays(xyz, triangles, checked, this.#warmUp)).mesh);
+  }
+
+  /**
+   * One texture atlas shared by several meshes (lightmaps): mesh.atlas's options and result for all of
+   * them together (charts never span two meshes), plus `meshes`, each mesh's { cornerUv, chartOfFace }
+   * in the order given. An empty array throws 'empty'.
+   */
+  atlas(meshes, options) {
+    if (!Array.isArray(meshes) || !meshes.every((m) => m instanceof Mesh)) {
+      throw new TypeError('atlas expects an array of meshes (st.loadMesh, st.meshFromArrays, st.sample)');
+    }
+    const { onProgress, ...rest } = checkedOptions(options, ATLAS, 'atlas');
+    const handles = meshes.map((m) => m[internal]());
+    return withProgress(onProgress, (progress) => this.#module.atlas(handles, rest, progress));
   }
 
   /** Names of the built-in sample meshes. */

@@ -160,6 +160,35 @@ Expected<FreeBoundaryOptions> freeOptionsFrom(const val& options) {
   return free;
 }
 
+Expected<AtlasOptions> atlasOptionsFrom(const val& options) {
+  AtlasOptions atlas;
+  if (options.isUndefined() || options.isNull()) return atlas;
+  const auto given = [&](const char* name) { return !options[name].isUndefined() && !options[name].isNull(); };
+  for (auto [name, x] : {std::pair{"maxStretch", &atlas.charts.maxStretch}, std::pair{"padding", &atlas.pack.padding},
+                         std::pair{"texelsPerUnit", &atlas.pack.texelsPerUnit}}) {
+    if (!given(name)) continue;
+    if (!isNumber(options[name])) return Error{ErrorCode::InvalidArgument, std::string(name) + " must be a number"};
+    *x = options[name].as<double>();
+  }
+  for (auto [name, n] :
+       {std::pair{"maxCharts", &atlas.charts.maxCharts}, std::pair{"resolution", &atlas.pack.resolution},
+        std::pair{"width", &atlas.pack.width}, std::pair{"height", &atlas.pack.height}}) {
+    if (!given(name)) continue;
+    const double x = isNumber(options[name]) ? options[name].as<double>() : NAN;
+    // An int32 exactly: the core refuses the values out of its range, but it cannot see a fraction or an overflow.
+    if (!(std::abs(x) <= 2147483647.0 && x == std::floor(x)))
+      return Error{ErrorCode::InvalidArgument,
+                   std::string(name) + " must be an integer, got " + describe(options[name])};
+    *n = static_cast<int32_t>(x);
+  }
+  if (given("rotate")) {
+    if (!options["rotate"].isTrue() && !options["rotate"].isFalse())
+      return Error{ErrorCode::InvalidArgument, "rotate must be true or false"};
+    atlas.pack.rotate = options["rotate"].isTrue();
+  }
+  return atlas;
+}
+
 Expected<ShotAim> shotAimFrom(const val& options) {
   ShotAim aim;
   const auto given = [&](const char* name) { return !options[name].isUndefined() && !options[name].isNull(); };

@@ -54,6 +54,11 @@ Expected<BuildLimits> limitsFrom(const val& options);
 /// InvalidArgument unless a positive integer / a positive number.
 Expected<FreeBoundaryOptions> freeOptionsFrom(const val& options);
 
+/// The atlas's { maxStretch, maxCharts, resolution, width, height, padding, texelsPerUnit, rotate } (any may be
+/// missing: the core's default). Only types are checked here (numbers, integers for the counts and sizes, a
+/// boolean); their ranges are buildAtlas's to refuse.
+Expected<AtlasOptions> atlasOptionsFrom(const val& options);
+
 /// How shootGeodesic is aimed: exactly one of a 3D direction, an angle in the source's tangent frame
 /// or a destination, and the length (required unless toward). Only shapes are checked here: a zero or
 /// NaN direction, a NaN angle and a length ≤ 0 reach the core, which refuses them.
@@ -89,6 +94,17 @@ class JsWriter {
     JsWriter child;
     fill(child);
     out_.set(name, child.out_);
+  }
+  /// An array of n objects, object i written by fill(i, writer).
+  template <class Fill>
+  void objects(const char* name, size_t n, Fill&& fill) {
+    val array = val::array();
+    for (size_t i = 0; i < n; ++i) {
+      JsWriter child;
+      fill(i, child);
+      array.call<void>("push", child.out_);
+    }
+    out_.set(name, array);
   }
   template <class T>
   void list(const char* name, const std::vector<T>& items) {

@@ -1,7 +1,7 @@
 // Types of straightest/three. They import three's types: install `@types/three` next to `three`
 // (three ships no declarations), or this file fails to type-check without skipLibCheck.
 import type { BufferGeometry } from 'three';
-import type { Mesh, Parameterization, Straightest } from './index.js';
+import type { Atlas, AtlasOptions, Mesh, Parameterization, SharedAtlas, Straightest } from './index.js';
 
 /** meshFromBufferGeometry's options. */
 export interface MeshFromBufferGeometryOptions {
@@ -25,3 +25,21 @@ export function applyUV(geometry: BufferGeometry, uv: ArrayLike<number>): Buffer
  * parameterize result has it); userData.vertexOrigin maps each geometry vertex to its mesh vertex.
  */
 export function toSeamSplitGeometry(mesh: Mesh, parameterization: Pick<Parameterization, 'cornerUv'>): BufferGeometry;
+
+/** unwrap's and packAtlas' options: where the uv goes, welding, and mesh.atlas's options. */
+export interface UnwrapOptions extends AtlasOptions, MeshFromBufferGeometryOptions {
+  /** The attribute that receives the atlas uv: 'uv' (default) or 'uv1' (three's second set, e.g. for a lightmap). */
+  channel?: 'uv' | 'uv1';
+}
+
+/**
+ * Unwraps a geometry into a texture atlas (Mesh.atlas). weld defaults to true for a non-indexed geometry.
+ * The new geometry is split along the atlas's seams (one vertex per distinct geometry vertex and uv), keeps
+ * every other attribute, morph target, group and the triangles' order, and has the atlas uv on `channel`;
+ * userData.vertexOrigin maps each of its vertices to the geometry's.
+ */
+export function unwrap(st: Straightest, geometry: BufferGeometry, options?: UnwrapOptions): { geometry: BufferGeometry; atlas: Atlas };
+/** One atlas shared by several geometries (Straightest.atlas): a new geometry per given one, as unwrap's, in order. */
+export function packAtlas(
+  st: Straightest, geometries: BufferGeometry[], options?: UnwrapOptions,
+): { geometries: BufferGeometry[]; atlas: SharedAtlas };

@@ -9,8 +9,17 @@ import { BufferAttribute, BufferGeometry } from 'three';
  * looked at. Welded meshes have fewer vertices than the geometry: use toBufferGeometry for the result.
  */
 export function meshFromBufferGeometry(st, geometry, { weld = false } = {}) {
+  const { positions, indices } = meshArrays(geometry, weld, 'meshFromBufferGeometry');
+  return st.meshFromArrays(positions, indices);
+}
+
+/**
+ * The mesh arrays of a geometry: positions, indices (3 per triangle, welded when asked) and corners (the
+ * geometry vertex of each triangle corner, in the same order).
+ */
+function meshArrays(geometry, weld, call) {
   const position = geometry.getAttribute('position');
-  if (!position) throw new TypeError('meshFromBufferGeometry: the geometry has no position attribute');
+  if (!position) throw new TypeError(`${call}: the geometry has no position attribute`);
   let positions = new Float64Array(position.count * 3);
   for (let i = 0; i < position.count; ++i) {
     positions[3 * i] = position.getX(i);
@@ -18,11 +27,12 @@ export function meshFromBufferGeometry(st, geometry, { weld = false } = {}) {
     positions[3 * i + 2] = position.getZ(i);
   }
   const index = geometry.getIndex();
-  let indices = index ? Uint32Array.from(index.array) : Uint32Array.from({ length: position.count }, (_, i) => i);
+  const corners = index ? Uint32Array.from(index.array) : Uint32Array.from({ length: position.count }, (_, i) => i);
+  let indices = corners;
   if (weld !== false && weld !== null && weld !== undefined) {
     ({ positions, indices } = weldVertices(positions, indices, weldTolerance(positions, weld)));
   }
-  return st.meshFromArrays(positions, indices);
+  return { positions, indices, corners };
 }
 
 function weldTolerance(positions, weld) {
@@ -136,4 +146,118 @@ export function toSeamSplitGeometry(mesh, parameterization) {
   geometry.setIndex(new BufferAttribute(index, 1));
   geometry.userData.vertexOrigin = Uint32Array.from(origin);
   return geometry;
+}
+
+const UV_CHANNELS = ['uv', 'uv1'];
+
+/**
+ * Unwraps a geometry into a texture atlas (mesh.atlas): returns { geometry, atlas }, a new geometry split
+ * along the atlas's seams with the atlas uv on `channel` ('uv', default, or 'uv1', e.g. for a lightmap), and
+ * the Atlas itself. options: channel, weld (as meshFromBufferGeometry's; default true for a non-indexed
+ * geometry, whose triangles would otherwise each be a chart) and mesh.atlas's options. See splitGeometry
+ * for what the new geometry keeps.
+ */
+export function unwrap(st, geometry, options = {}) {
+  const { channel = 'uv', weld = geometry.getIndex() === null, ...atlasOptions } = options;
+  checkedChannel(channel, 'unwrap');
+  const arrays = meshArrays(geometry, weld, 'unwrap');
+  const mesh = st.meshFromArrays(arrays.positions, arrays.indices);
+  try {
+    const atlas = mesh.atlas(atlasOptions);
+    return { geometry: splitGeometry(geometry, arrays, mesh.indices(), atlas.cornerUv, channel), atlas };
+  } finally {
+    mesh.delete();
+  }
+}
+
+/**
+ * One texture atlas shared by several geometries (st.atlas; e.g. a scene's lightmap): returns
+ * { geometries, atlas }, a new geometry per given one (in order, as unwrap's) and the SharedAtlas.
+ * options: as unwrap's.
+ */
+export function packAtlas(st, geometries, options = {}) {
+  if (!Array.isArray(geometries)) throw new TypeError('packAtlas: expects an array of BufferGeometry');
+  const { channel = 'uv', weld, ...atlasOptions } = options;
+  checkedChannel(channel, 'packAtlas');
+  const arrays = geometries.map((g) => meshArrays(g, weld ?? g.getIndex() === null, 'packAtlas'));
+  const meshes = [];
+  try {
+    for (const a of arrays) meshes.push(st.meshFromArrays(a.positions, a.indices));
+    const atlas = st.atlas(meshes, atlasOptions);
+    return {
+      geometries: geometries.map((g, i) => splitGeometry(g, arrays[i], meshes[i].indices(), atlas.meshes[i].cornerUv, channel)),
+      atlas,
+    };
+  } finally {
+    for (const mesh of meshes) mesh.delete();
+  }
+}
+
+function checkedChannel(channel, call) {
+  if (!UV_CHANNELS.includes(channel)) throw new TypeError(`${call}: channel must be 'uv' or 'uv1', got ${String(channel)}`);
+}
+
+/**
+ * The geometry split along the seams of cornerUv: one vertex per distinct (geometry vertex, uv), so every
+ * attribute (position, normal, colour, the other uv channel, morph targets) is carried over as it was and
+ * only seam vertices are duplicated; the triangles, their order and corner order, and the groups are the
+ * geometry's. The index is Uint32; userData.vertexOrigin gives each new vertex's geometry vertex.
+ * meshIndices are the mesh's (its faces may be reoriented: a corner is matched by its vertex, not its slot).
+ */
+function splitGeometry(geometry, { indices, corners }, meshIndices, cornerUv, channel) {
+  const origin = [];
+  const uvs = [];
+  const index = new Uint32Array(corners.length);
+  const copies = new Map(); // geometry vertex → [[u, v, new vertex], ...]: a seam vertex has a few
+  for (let c = 0; c < corners.length; ++c) {
+    const k = meshCorner(indices, meshIndices, c);
+    const u = cornerUv[2 * k], v = cornerUv[2 * k + 1];
+    let list = copies.get(corners[c]);
+    if (!list) copies.set(corners[c], (list = []));
+    let found = list.find((e) => e[0] === u && e[1] === v);
+    if (!found) {
+      found = [u, v, origin.length];
+      list.push(found);
+      origin.push(corners[c]);
+      uvs.push(u, v);
+    }
+    index[c] = found[2];
+  }
+  const split = new BufferGeometry();
+  split.name = geometry.name;
+  for (const [name, attribute] of Object.entries(geometry.attributes)) {
+    if (name !== channel) split.setAttribute(name, pickVertices(attribute, origin));
+  }
+  for (const [name, targets] of Object.entries(geometry.morphAttributes)) {
+    split.morphAttributes[name] = targets.map((a) => pickVertices(a, origin));
+  }
+  split.morphTargetsRelative = geometry.morphTargetsRelative;
+  split.setAttribute(channel, new BufferAttribute(new Float32Array(uvs), 2));
+  split.setIndex(new BufferAttribute(index, 1));
+  for (const { start, count, materialIndex } of geometry.groups) split.addGroup(start, count, materialIndex);
+  split.userData.vertexOrigin = Uint32Array.from(origin);
+  return split;
+}
+
+/** The mesh corner of geometry corner c: the corner of the same face with the same (welded) vertex. */
+function meshCorner(indices, meshIndices, c) {
+  const face = c - (c % 3);
+  for (let k = face; k < face + 3; ++k) if (meshIndices[k] === indices[c]) return k;
+  throw new RangeError(`the mesh's face ${face / 3} does not have the geometry's vertex ${indices[c]}`);
+}
+
+const GET = ['getX', 'getY', 'getZ', 'getW'];
+const SET = ['setX', 'setY', 'setZ', 'setW'];
+
+/** A new attribute with the given vertices of `attribute`, in order (same array type and normalization). */
+function pickVertices(attribute, vertices) {
+  const size = attribute.itemSize;
+  const out = new BufferAttribute(new attribute.array.constructor(vertices.length * size), size, attribute.normalized);
+  if (!attribute.isInterleavedBufferAttribute) {
+    vertices.forEach((v, i) => out.array.set(attribute.array.subarray(v * size, v * size + size), i * size));
+  } else {
+    // getX…getW read through the interleaving (and denormalize; setX…setW normalize back).
+    vertices.forEach((v, i) => { for (let k = 0; k < size; ++k) out[SET[k]](i, attribute[GET[k]](v)); });
+  }
+  return out;
 }

@@ -14,6 +14,8 @@
 //   → { id, type: 'call', mesh, method, args, progress }  ← { id, type: 'result', value }
 //        a Mesh method; with progress true, its last argument's onProgress posts
 //        { id, type: 'progress', stage, fraction }
+//   → { id, type: 'atlas', meshes, args, progress }      ← { id, type: 'result', value }
+//        Straightest.atlas over the meshes numbered `meshes`, progress as 'call'
 //   → { id, type: 'delete', mesh }                       ← { id, type: 'result', value: null }
 //   any failure                                          ← { id, type: 'error', message, category }
 // Cancelling: the work runs inside synchronous WASM calls, so the client terminates the worker.
@@ -29,7 +31,7 @@ const NAME_LISTS = ['traceStatuses', 'boundaryKinds', 'polygonBoundaryKinds', 'b
   'distanceMethods', 'meshFormats', 'errorCategories'];
 const METHODS = new Set(['info', 'positions', 'indices', 'boundaryLoops', 'vertexNormals', 'defaultSource', 'basePlane',
   'straightestPaths', 'geodesicDistances', 'parameterize', 'boundaryPolygons', 'compareParameterizations', 'toOBJ',
-  'shootGeodesic', 'exactShortestPaths']);
+  'shootGeodesic', 'exactShortestPaths', 'atlas']);
 
 /**
  * Every ArrayBuffer under `value` that a typed array owns whole (results are copies out of WASM memory;
@@ -44,8 +46,21 @@ function buffers(value, found = new Set()) {
   return found;
 }
 
+function meshOf(number) {
+  const mesh = meshes.get(number);
+  if (!mesh) throw Object.assign(new Error('this mesh has been deleted'), { category: 'invalid_argument' });
+  return mesh;
+}
+
+/** The request's arguments; with progress, its last one (the options) gets an onProgress that posts. */
+function argumentsOf({ id, args, progress }) {
+  if (!progress) return args;
+  const onProgress = (stage, fraction) => { postMessage({ id, type: 'progress', stage, fraction }); };
+  return [...args.slice(0, -1), { ...args.at(-1), onProgress }];
+}
+
 async function handle(request) {
-  const { id, type } = request;
+  const { type } = request;
   switch (type) {
     case 'init':
       straightest = await createStraightest(request.options ?? {});
@@ -61,16 +76,12 @@ async function handle(request) {
       return mesh.info();
     }
     case 'call': {
-      const mesh = meshes.get(request.mesh);
-      if (!mesh) throw Object.assign(new Error('this mesh has been deleted'), { category: 'invalid_argument' });
+      const mesh = meshOf(request.mesh);
       if (!METHODS.has(request.method)) throw new TypeError(`unknown mesh method '${request.method}'`);
-      const args = [...request.args];
-      if (request.progress) {
-        const onProgress = (stage, fraction) => { postMessage({ id, type: 'progress', stage, fraction }); };
-        args[args.length - 1] = { ...args[args.length - 1], onProgress };
-      }
-      return mesh[request.method](...args);
+      return mesh[request.method](...argumentsOf(request));
     }
+    case 'atlas':
+      return straightest.atlas(request.meshes.map(meshOf), ...argumentsOf(request));
     case 'delete':
       meshes.get(request.mesh)?.delete();
       meshes.delete(request.mesh);

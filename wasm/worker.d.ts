@@ -1,6 +1,6 @@
 // Types of straightest/worker: the package's API in a module worker, as promises.
 import type {
-  BasePlane, BoundaryPolygon, BoundaryPolygonsOptions, BuildLimits, CompareOptions, Comparison, CreateOptions, MeshFormat,
+  Atlas, AtlasOptions, SharedAtlas, BasePlane, BoundaryPolygon, BoundaryPolygonsOptions, BuildLimits, CompareOptions, Comparison, CreateOptions, MeshFormat,
   MeshInfo, Parameterization, ParameterizeOptions, SampleName, StraightestPaths, StraightestPathsOptions, SurfacePoint,
   DistanceMethod, Straightest, ShootGeodesicOptions, GeodesicShot, ExactShortestPathsOptions, ExactShortestPaths,
 } from './index.js';
@@ -43,6 +43,8 @@ export class WorkerMesh {
   shootGeodesic(options: WorkerOptions<ShootGeodesicOptions>): Promise<GeodesicShot>;
   /** Exact shortest paths to vertices (see Mesh.exactShortestPaths); `signal` cancels. */
   exactShortestPaths(options?: WorkerOptions<ExactShortestPathsOptions>): Promise<ExactShortestPaths>;
+  /** A texture atlas (see Mesh.atlas); `signal` cancels. */
+  atlas(options?: WorkerOptions<AtlasOptions>): Promise<Atlas>;
   /** Frees the mesh in the worker. */
   delete(): Promise<void>;
 }
@@ -79,6 +81,8 @@ export interface StraightestWorker {
   meshFromArrays(positions: ArrayLike<number>, indices: ArrayLike<number>, limits?: BuildLimits): Promise<WorkerMesh>;
   /** A built-in sample mesh. */
   sample(name: SampleName): Promise<WorkerMesh>;
+  /** One atlas shared by several meshes of this worker (see Straightest.atlas); `signal` cancels. */
+  atlas(meshes: WorkerMesh[], options?: WorkerOptions<AtlasOptions>): Promise<SharedAtlas>;
   /** Stops the running work: pending calls reject with 'cancelled'; meshes are rebuilt when next used. */
   cancel(): void;
   /** Ends the worker for good. */

@@ -6,6 +6,9 @@
 // what made them the next time they are used.
 import { StraightestError } from './straightest-error.js';
 
+// Each WorkerMesh's number in its worker, for the calls that take several meshes (st.atlas).
+const meshIds = new WeakMap();
+
 /** A mesh living in the worker; every method returns a promise of what Mesh's returns. */
 class WorkerMesh {
   #client;
@@ -14,6 +17,7 @@ class WorkerMesh {
   constructor(client, id) {
     this.#client = client;
     this.#id = id;
+    meshIds.set(this, id);
   }
 
   /** Whether delete() has been called. */
@@ -35,6 +39,7 @@ class WorkerMesh {
   compareParameterizations(options = {}) { return this.#client.callWithOptions(this.#id, 'compareParameterizations', options); }
   shootGeodesic(options = {}) { return this.#client.callWithOptions(this.#id, 'shootGeodesic', options); }
   exactShortestPaths(options = {}) { return this.#client.callWithOptions(this.#id, 'exactShortestPaths', options); }
+  atlas(options = {}) { return this.#client.callWithOptions(this.#id, 'atlas', options); }
 
   /** Frees the mesh in the worker; later calls reject with StraightestError 'invalid_argument'. */
   delete() { return this.#client.deleteMesh(this.#id); }
@@ -124,26 +129,32 @@ export async function createStraightestWorker(options = {}) {
     return new WorkerMesh(client, id);
   }
 
-  async function run(id, method, args, onProgress, signal) {
+  /** Sends `message` once the meshes `ids` are built in the current worker; `signal` cancels. */
+  async function run(ids, message, onProgress, signal) {
     if (signal?.aborted) throw new StraightestError('cancelled', 'cancelled');
     const instance = current;
     const onAbort = () => { if (current === instance) cancel(); };
     signal?.addEventListener('abort', onAbort, { once: true });
     try {
       await instance.ready;
-      await ensureMesh(instance, id);
-      return await send(instance, { type: 'call', mesh: id, method, args, progress: !!onProgress }, [], onProgress);
+      await Promise.all(ids.map((id) => ensureMesh(instance, id)));
+      return await send(instance, { ...message, progress: !!onProgress }, [], onProgress);
     } finally {
       signal?.removeEventListener('abort', onAbort);
     }
   }
 
+  /** A long call: `options` without onProgress and signal go to the worker as the call's last argument. */
+  function runWithOptions(ids, message, { onProgress, signal, ...options }) {
+    if (onProgress !== undefined && typeof onProgress !== 'function') throw new TypeError('onProgress must be a function');
+    return run(ids, { ...message, args: [options] }, onProgress ?? null, signal ?? null);
+  }
+
   const client = {
     isDeleted: (id) => !recipes.has(id),
-    call: (id, method, args) => run(id, method, args, null, null),
-    callWithOptions(id, method, { onProgress, signal, ...options }) {
-      if (onProgress !== undefined && typeof onProgress !== 'function') throw new TypeError('onProgress must be a function');
-      return run(id, method, [options], onProgress ?? null, signal ?? null);
+    call: (id, method, args) => run([id], { type: 'call', mesh: id, method, args }, null, null),
+    callWithOptions(id, method, options) {
+      return runWithOptions([id], { type: 'call', mesh: id, method }, options);
     },
     async deleteMesh(id) {
       if (!recipes.delete(id)) return;
@@ -182,6 +193,16 @@ export async function createStraightestWorker(options = {}) {
     meshFromArrays: (positions, indices, limits = {}) => create('meshFromArrays', [positions, indices, limits]),
     /** A built-in sample mesh, built in the worker. */
     sample: (name) => create('sample', [name]),
+    /**
+     * One atlas shared by several WorkerMeshes (Straightest.atlas): options as Mesh.atlas's, plus `signal`.
+     */
+    atlas(meshes, options = {}) {
+      if (!Array.isArray(meshes) || !meshes.every((m) => meshIds.has(m))) {
+        throw new TypeError('atlas expects an array of meshes made by this worker API');
+      }
+      return runWithOptions(meshes.map((m) => meshIds.get(m)), { type: 'atlas', meshes: meshes.map((m) => meshIds.get(m)) },
+        options);
+    },
     /** Stops the running work: pending calls reject with 'cancelled'; meshes stay usable. */
     cancel,
     /** Ends the worker for good. */

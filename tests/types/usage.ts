@@ -4,6 +4,9 @@
 // Never run: only type-checked.
 import {
   createStraightest,
+  type Atlas,
+  type AtlasOptions,
+  type SharedAtlas,
   Mesh,
   StraightestError,
   type Straightest,
@@ -22,7 +25,7 @@ import {
   type SurfacePoint,
   type TraceStatus,
 } from 'straightest';
-import { applyUV, meshFromBufferGeometry, toBufferGeometry, toSeamSplitGeometry } from 'straightest/three';
+import { applyUV, meshFromBufferGeometry, packAtlas, toBufferGeometry, toSeamSplitGeometry, unwrap } from 'straightest/three';
 import * as inline from 'straightest/inline';
 import { createStraightestWorker, type WorkerMesh } from 'straightest/worker';
 import { BufferGeometry } from 'three';
@@ -61,7 +64,11 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const controller = new AbortController();
   const remoteUv: Float32Array = (await remote.parameterize({ boundary: 'free', signal: controller.signal, onProgress: () => {} })).uv;
   const remoteInfo: MeshInfo = await remote.info();
-  void [remoteUv, remoteInfo];
+  const remoteAtlas: Atlas = await remote.atlas({ padding: 4, signal: controller.signal, onProgress: (stage) => stage !== 'pack' });
+  const remoteShared: SharedAtlas = await inWorker.atlas([remote, remote], { resolution: 512 });
+  // @ts-expect-error the worker's shared atlas takes the worker's meshes
+  await inWorker.atlas([st.sample('cap')]);
+  void [remoteUv, remoteInfo, remoteAtlas, remoteShared];
   // @ts-expect-error the worker's results are promises
   const notAwaited: MeshInfo = remote.info();
   void notAwaited;
@@ -325,6 +332,35 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   // @ts-expect-error it needs the parameterization (its cornerUv), not the per-vertex uv
   toSeamSplitGeometry(fromThree, p.uv);
   void [textured, split];
+
+  // Texture atlases: one mesh, several meshes in one texture, and the three.js helpers.
+  const atlasOptions: AtlasOptions = { maxStretch: 1.05, maxCharts: 64, resolution: 2048, padding: 4, rotate: false };
+  const atlas: Atlas = mesh.atlas(atlasOptions);
+  const atlasUv: Float32Array = atlas.cornerUv;
+  const charts: Int32Array = atlas.chartOfFace;
+  const quality: number = atlas.stretch.l2 + atlas.utilization + atlas.flipped + atlas.mirrored + atlas.overlaps
+    + atlas.paddingViolations + atlas.minGapTexels + atlas.texelsPerUnit + atlas.timings.pack;
+  const capped: boolean = atlas.capped;
+  mesh.atlas({ width: 1024, height: 512, texelsPerUnit: 100, onProgress: (stage) => stage !== 'flatten' });
+  mesh.toOBJ(atlas.cornerUv);
+  const shared: SharedAtlas = st.atlas([mesh, fromThree], { resolution: 4096 });
+  const perMesh: Float32Array = shared.meshes[1].cornerUv;
+  // @ts-expect-error the shared atlas takes an array of meshes
+  st.atlas(mesh);
+  // @ts-expect-error rotate is true or false
+  mesh.atlas({ rotate: 'yes' });
+  // @ts-expect-error the resolution is a number of texels
+  mesh.atlas({ resolution: '1k' });
+  // @ts-expect-error the shared atlas's per-mesh parts are on `meshes`, not on a plain atlas
+  void atlas.meshes;
+  const unwrapped: { geometry: BufferGeometry; atlas: Atlas } = unwrap(st, geometry, { channel: 'uv1', weld: true, padding: 2 });
+  const packedGeometries: BufferGeometry[] = packAtlas(st, [geometry, toThree], { resolution: 1024 }).geometries;
+  const packedAtlas: SharedAtlas = packAtlas(st, [geometry]).atlas;
+  // @ts-expect-error three's uv channels are 'uv' and 'uv1' (the second set was 'uv2' before r151)
+  unwrap(st, geometry, { channel: 'uv2' });
+  // @ts-expect-error the straightest instance comes first
+  unwrap(geometry);
+  void [atlasUv, charts, quality, capped, perMesh, unwrapped, packedGeometries, packedAtlas];
 
   // Lifetime: `using` frees a mesh at the end of its scope; constructors are the library's own.
   {
