@@ -189,10 +189,19 @@ describe('atlas mode', () => {
       const layout = await page.locator('#atlas-canvas').boundingBox();
       assert(layout.width > 150 && layout.x >= 0 && layout.x + layout.width <= size.width + 0.5,
         `the layout canvas at ${JSON.stringify(layout)}`);
+      if (size.width < 720) {
+        const small = await page.$$eval('#atlas-panel button, #atlas-panel select, #atlas-panel input:not([type="checkbox"])',
+          (elements) => elements.filter((e) => e.getBoundingClientRect().height < 31.5).map((e) => e.id));
+        assert.deepEqual(small, [], 'touch targets under 32 px in the Atlas panel');
+      }
       if (process.env.ATLAS_SCREENSHOTS) {
-        await mkdir(process.env.ATLAS_SCREENSHOTS, { recursive: true });
+        const dir = process.env.ATLAS_SCREENSHOTS;
+        await mkdir(dir, { recursive: true });
         await page.evaluate(() => window.scrollTo(0, 0));
-        await page.screenshot({ path: `${process.env.ATLAS_SCREENSHOTS}/atlas-${size.width}x${size.height}.png` });
+        await page.screenshot({ path: `${dir}/atlas-${size.width}x${size.height}.png` });
+        await page.selectOption('#atlas-display', 'checker');
+        await page.waitForTimeout(300);
+        await page.screenshot({ path: `${dir}/atlas-checker-${size.width}x${size.height}.png` });
       }
     });
   }
