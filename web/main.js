@@ -16,6 +16,8 @@
 //   hints.js        what to try when traces fail or the measured boundary stretches more than the circle
 //   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
 //   export-panel.js figure mode (figure-mode.js) and the image exports (image-export.js, layout-svg.js)
+//   atlas-mode.js   the Atlas mode: charts on the mesh, the packed layout beside the view (atlas-layout.js),
+//                   its metrics and downloads (atlas-export.js)
 //   progress-view.js, test-hooks.js
 //
 // After a mesh loads, the page asks the worker for the straightest paths from the default source to
@@ -24,6 +26,7 @@
 // nothing is traced until a destination is added; both ways round each section are drawn. Once the paths are drawn, the parameterization view
 // flattens the mesh.
 
+import { createAtlasMode } from './atlas-mode.js';
 import { createExactRatio } from './exact-ratio.js';
 import { createGeodesicCompare } from './geodesic-compare.js';
 import { createHeatDistance } from './heat-distance.js';
@@ -53,7 +56,7 @@ import { isCancelled } from './requests.js';
 const $ = (id) => document.getElementById(id);
 
 makePanelsCollapsible($('side-panel'));
-pageModes(); // the tabs over the view: the 3D surface, and the modes added later register there
+pageModes(); // the tabs over the view: the 3D surface, and the modes added later register there (Atlas)
 const view = createView({ canvas: $('view-canvas'), viewport: $('viewport') });
 const surface = createSurfaceView(view);
 let picking = null; // created below: hovering needs the path view, the path view tells it when paths go
@@ -123,6 +126,7 @@ const param = createParamView({
   session, view, surface, pathSource: () => pathRequest.source, onShown: () => urlSync.save(),
 });
 createExportPanel({ session, view, surface, paths, param });
+createAtlasMode({ session, view, surface });
 createDataDownloads({
   session, paths: () => shownPaths, source: () => pathRequest.source,
   compareRows: () => param.compareRows(), exactRows: () => exactRatio.rows,

@@ -1,7 +1,7 @@
-// The page's modes: tabs over the view (index.html #mode-tabs). The 3D surface is the only mode so
-// far; a mode added later (an atlas of charts, say) registers here with its tab's label and is shown
-// with body[data-mode] set to its id — its own 2D panel goes in #mode-side beside the view (hidden in
-// the surface mode), its results in the results bar. Only the tab switching lives here.
+// The page's modes: tabs over the view (index.html #mode-tabs): the 3D surface, and the Atlas mode
+// (atlas-mode.js). A mode registers here with its tab's label and is shown with body[data-mode] set to
+// its id — its own 2D panel goes in #mode-side beside the view (hidden in the surface mode), its results
+// in the results bar. Only the tab switching lives here.
 
 const $ = (id) => document.getElementById(id);
 

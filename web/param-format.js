@@ -32,3 +32,8 @@ export function formatMs(ms, unit = ' ms') {
   if (ms < 0.05) return `< 0.1${unit}`;
   return (ms >= 100 ? formatCount(ms) : ms.toFixed(1)) + unit;
 }
+
+/** A fraction as a percentage with one decimal (0.7312 → "73.1 %"). */
+export function formatPercent(x) {
+  return Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : String(x);
+}

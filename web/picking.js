@@ -28,6 +28,9 @@ export function surfacePosition(surfaceMesh, point) {
 
 /** view: scene.js; surface: surface-view.js; paths: path-view.js; tooltip: the tooltip element. */
 export function createPicking({ view, surface, paths, tooltip, onPick }) {
+  // Only the 3D surface mode draws the paths and the surface they are picked on (the atlas mode shows
+  // its own mesh on another camera layer): elsewhere hovering and clicking do nothing.
+  const active = () => (document.body.dataset.mode ?? 'surface') === 'surface';
   const { canvas, viewport, camera } = view;
   const raycaster = new THREE.Raycaster();
   raycaster.params.Line2 = { threshold: 6 }; // pixels around a path that count as "on" it
@@ -118,7 +121,7 @@ export function createPicking({ view, surface, paths, tooltip, onPick }) {
   function handleHover() {
     const event = hoverEvent;
     hoverEvent = null;
-    if (!event || !paths.shown) return;
+    if (!event || !paths.shown || !active()) return;
     aimAt(event);
     const i = pickPath();
     if (i < 0) {
@@ -147,7 +150,7 @@ export function createPicking({ view, surface, paths, tooltip, onPick }) {
     if (!pressed || event.button !== 0) return;
     const moved = Math.hypot(event.clientX - pressed.x, event.clientY - pressed.y);
     pressed = null;
-    if (moved > 4) return;
+    if (moved > 4 || !active()) return;
     aimAt(event);
     const picked = pickSurface();
     if (!picked) return;

@@ -31,6 +31,10 @@ const STAGE_LABELS = {
   export: 'write OBJ',
   distances: 'exact shortest path',
   shoot: 'shoot the geodesic',
+  segment: 'segment into charts',
+  flatten: 'flatten the charts',
+  pack: 'pack',
+  measure: 'measure (independent check)',
 };
 
 function requestTitle(type, payload) {
@@ -45,6 +49,7 @@ function requestTitle(type, payload) {
     case 'parameterize': return `Parameterization (${payload.boundary ?? 'measured'} boundary)`;
     case 'compare': return 'Comparison (every boundary × weights)';
     case 'exportObj': return 'OBJ export';
+    case 'atlas': return `Texture atlas (${payload.resolution ?? 1024} texels, padding ${payload.padding ?? 2})`;
     case 'geodesics': return 'Geodesics to the destination';
     default: return null; // 'init' and the like: no group
   }

@@ -28,6 +28,9 @@
 //        three geodesics of issue 17 to one vertex: exact: exactShortestPaths' { distance, points }
 //        (Float32Array), plane: the cutting plane's straightestPaths' { length, status, points }, shot:
 //        shootGeodesic toward it (the plane's length when it reached, else the exact distance)
+//   'atlas' { maxStretch, resolution, padding } → mesh.atlas()'s fields + { type: 'atlas', timeMs }: the
+//        texture atlas of the whole mesh (charts, each flattened, packed at `resolution` texels with
+//        `padding` texels between charts; cornerUv 6 per face in [0,1]², chartOfFace, seam, the metrics)
 //   'exactRatio' { source }      → { type: 'exactRatio', source, targets: Int32Array (the longest
 //        boundary loop's vertices, in order), distances (exact), lengths (straightest), statuses, ratios:
 //        Float64Array (lengths ÷ distances; NaN where the trace failed) }: exactShortestPaths and
@@ -42,6 +45,7 @@
 //                 boundaries), 'weights', 'solve', 'metrics', 'refine' (free and auto) (the core's
 //                 stages), 'overlays' (the other boundaries' polygons), 'upload'
 //   compare: 'compare'                exportObj: 'export'
+//   atlas: 'segment', 'flatten', 'pack', 'measure' (the core's stages)
 //   geodesics: 'distances' (exact), 'trace' (cutting plane), 'shoot'
 //   exactRatio: 'distances' (exact), 'trace' (cutting plane)
 // 'upload' is fetching the arrays the page draws (a mesh) or unpacking the reply. The core's callbacks
@@ -193,6 +197,7 @@ export function createRequests({ observer = null } = {}) {
       case 'parameterize': return [...(disk() ? [] : ['cut']), ...parameterizeStages(payload.boundary), 'overlays', 'upload'];
       case 'compare': return ['compare'];
       case 'exportObj': return ['export'];
+      case 'atlas': return ['segment', 'flatten', 'pack', 'measure'];
       case 'geodesics': return ['distances', 'trace', 'shoot'];
       case 'exactRatio': return ['distances', 'trace'];
       default: return [];
@@ -313,6 +318,13 @@ export function createRequests({ observer = null } = {}) {
         type: 'exactRatio', source: plane.source, targets: exact.targets, distances: exact.distances,
         lengths: plane.lengths, statuses: plane.statuses, ratios,
       };
+    },
+
+    async atlas({ maxStretch, resolution, padding }, progress, step) {
+      const start = performance.now();
+      const options = { maxStretch, resolution, padding, onProgress: progress.callback };
+      const reply = await step(() => requireMesh().atlas(options));
+      return { ...reply, type: 'atlas', timeMs: performance.now() - start };
     },
 
     async exportObj({ uv }, progress, step) {

@@ -3,7 +3,7 @@
 // their destination and the times — always in sight, whatever panel the sidebar is scrolled to. The
 // panels keep the details; this only repeats their key values, short, with the full text as a title.
 
-import { formatCount, formatMetric, formatMs } from './param-format.js';
+import { formatCount, formatMetric, formatMs, formatPercent } from './param-format.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -58,4 +58,18 @@ export function summarizePaths(reply) {
 export function summarizeStatus(text) {
   set('summary-status', text, text);
   $('view-loading-text').textContent = text;
+}
+
+/** The atlas on display (an 'atlas' reply), or null: the Atlas mode's items of the bar. */
+export function summarizeAtlas(reply) {
+  const ids = ['summary-atlas-charts', 'summary-atlas-l2', 'summary-atlas-linf', 'summary-atlas-utilization', 'summary-atlas-time'];
+  if (!reply) {
+    for (const id of ids) set(id, '–');
+    return;
+  }
+  set('summary-atlas-charts', formatCount(reply.charts), `${reply.charts} charts`);
+  set('summary-atlas-l2', formatMetric(reply.stretch.l2), `L2 stretch ${reply.stretch.l2}`);
+  set('summary-atlas-linf', formatMetric(reply.stretch.linf), `L∞ stretch ${reply.stretch.linf}`);
+  set('summary-atlas-utilization', formatPercent(reply.utilization), `utilization ${reply.utilization}`);
+  set('summary-atlas-time', formatMs(reply.timeMs), 'in the worker');
 }

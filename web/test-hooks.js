@@ -53,6 +53,15 @@ export const hooks = {
   // The data downloads (data-downloads.js), in order: { what: 'paths' | 'distances' | 'compare' |
   // 'exact-ratio', ext: 'csv' | 'json' }.
   dataExports: [],
+  // The Atlas mode (atlas-mode.js): the atlas on display as { charts, l2, linf, utilization, width,
+  // height, texelsPerUnit, seamEdges, seamLength, flipped, mirrored, overlaps, degenerate,
+  // nonDiskCharts, minGapTexels, paddingViolations, capped, options: { maxStretch, resolution, padding },
+  // colors (the layout's chart colours, in chart order) }, or null; { message, category } of its last
+  // failure; the atlases shown; its downloads in order ({ kind: 'obj' | 'glb' | 'png' | 'svg', name, bytes }).
+  atlas: null,
+  atlasError: null,
+  atlases: 0,
+  atlasExports: [],
   // The progress panel: busy while a job runs (and its bars linger), the number of jobs and progress
   // messages, the largest fraction each stage ('type:stage') of the current (or last) job reached,
   // and when (ms after the job began) it was first reported and reached 100%.
