@@ -1,0 +1,222 @@
+// node scripts/bench-atlas.mjs — our texture atlas (`straightest atlas`) against xatlas (xatlasjs, WASM) on
+// CGAL's sample meshes, closed and holed, every atlas measured by the same measureAtlas
+// (core/atlas/include/straightest/atlas/atlas_quality.hpp): ours by the CLI itself, xatlas's by
+// build/native/atlas_compare from the per-corner uv bench/atlas/xatlas-run.mjs writes. Then our atlas on
+// meshes past xatlasjs's 65,535-vertex limit: armadillo subdivided 1:4 once and twice (bench/atlas/subdivide.mjs),
+// man subdivided three times (~1.1M vertices, closed) and heightfield:1000 (1M, a disk).
+//
+// Prints one markdown table per part on stdout (progress on stderr) and writes every run as a JSON line to
+// build/bench/atlas/runs.jsonl. Seconds are each tool's whole process (start-up, loading and writing
+// included), from outside: min / median over REPEATS runs for ours, one run for xatlas (1–300 s each).
+// Each process runs alone (xatlas in Node on one thread; ours natively with --threads 1 and --threads 2).
+//
+// Environment:
+//   REPEATS=3                 runs per (mesh, padding, threads) of ours
+//   MESHES="elephant ..."     CGAL sample meshes (data/meshes/NAME.off of libcgal-demo's data archive)
+//   PADDINGS="0 2"            ours at each padding (2 is its default, 0 is xatlas's)
+//   XATLAS_PADDINGS="0"       xatlas at each padding (its default is 0; add 2 for like against like)
+//   XATLAS=1                  0: skip xatlas (then the table has our rows only)
+//   BIG=1                     0: skip the large meshes
+//   BIG_REPEATS=1             runs per thread count on the large meshes
+//   WASM=1                    0: skip the WebAssembly column (see runOursWasm)
+// Takes ~20–25 minutes on 2 loaded cores, most of it xatlas on bunny00 and refined_elephant and the
+// subdivision of the large meshes (cached in build/data/atlas).
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync, writeFileSync, appendFileSync } from 'node:fs';
+import { cpus, loadavg } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const env = process.env;
+const repeats = Number(env.REPEATS ?? 3);
+const bigRepeats = Number(env.BIG_REPEATS ?? 1);
+const meshNames = (env.MESHES ?? 'eight elephant elephant-with-holes cow triceratops dino bull lion-head camel ' +
+  'ChineseDragon-10kv mannequin-devil man diplodocus armadillo bunny00 refined_elephant').split(/\s+/).filter(Boolean);
+const paddings = (env.PADDINGS ?? '0 2').split(/\s+/).filter(Boolean).map(Number);
+const xatlasPaddings = (env.XATLAS_PADDINGS ?? '0').split(/\s+/).filter(Boolean).map(Number);
+const cli = join(root, 'build/native/straightest');
+const compare = join(root, 'build/native/atlas_compare');
+const archive = '/usr/share/doc/libcgal-dev/data.tar.gz';
+const dataDir = join(root, 'build/data');
+const bigDir = join(dataDir, 'atlas');
+const outDir = join(root, 'build/bench/atlas');
+const runsFile = join(outDir, 'runs.jsonl');
+const log = (line) => process.stderr.write(`bench-atlas: ${line}\n`);
+
+// ---------------------------------------------------------------- setup: packages, build, meshes
+function setup() {
+  execFileSync('bash', [join(root, 'scripts/setup.sh'), 'libcgal-demo'], { stdio: ['ignore', 2, 2] });
+  execFileSync('cmake', ['--preset', 'native'], { cwd: root, stdio: ['ignore', 'ignore', 2] });
+  execFileSync('cmake', ['--build', '--preset', 'native', '--target', 'straightest', 'atlas_compare'], { cwd: root, stdio: ['ignore', 'ignore', 2] });
+  mkdirSync(bigDir, { recursive: true });
+  mkdirSync(outDir, { recursive: true });
+  writeFileSync(runsFile, '');
+}
+
+/** A CGAL sample mesh, extracted from libcgal-demo's archive as scripts/patches.sh does. */
+function cgalMesh(name) {
+  const file = join(dataDir, 'data/meshes', `${name}.off`);
+  if (!existsSync(file)) execFileSync('tar', ['xzf', archive, '-C', dataDir, `data/meshes/${name}.off`]);
+  return file;
+}
+
+/** NAME subdivided 1:4 LEVELS times (cached). */
+function subdivided(name, levels) {
+  const file = join(bigDir, `${name}-x${4 ** levels}.off`);
+  if (!existsSync(file)) {
+    execFileSync(process.execPath, [join(root, 'bench/atlas/subdivide.mjs'), cgalMesh(name), file, String(levels)], { stdio: ['ignore', 2, 2] });
+  }
+  return file;
+}
+
+// ---------------------------------------------------------------- runs
+/** Runs a command as one process and times it from outside (wall clock around spawn → exit). */
+function timed(cmd, args) {
+  const start = process.hrtime.bigint();
+  const r = spawnSync(cmd, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
+  const seconds = Number(process.hrtime.bigint() - start) / 1e9;
+  return { seconds, status: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+function record(row) {
+  appendFileSync(runsFile, `${JSON.stringify({ ...row, load: loadavg()[0] })}\n`);
+  return row;
+}
+
+const median = (xs) => { const s = [...xs].sort((a, b) => a - b); return s[Math.floor((s.length - 1) / 2)]; };
+
+/** Ours, native: REPEATS whole-process runs per thread count; the quality of the first (the runs agree). */
+function runOurs(mesh, padding, n, threadCounts = [1, 2]) {
+  const row = { tool: 'ours', mesh, padding, seconds: {} };
+  for (const threads of threadCounts) {
+    const times = [];
+    for (let k = 0; k < n; ++k) {
+      const r = timed(cli, ['atlas', mesh, '--padding', String(padding), '--threads', String(threads), '--json-errors']);
+      const out = JSON.parse(r.stdout.trim().split('\n').pop());
+      if (out.error) return record({ ...row, error: out.error });
+      if (!row.result) row.result = out;
+      else if (out.charts !== row.result.charts || out.stretch.l2 !== row.result.stretch.l2) row.nondeterministic = true;
+      times.push(r.seconds);
+      record({ tool: 'ours', mesh, padding, threads, seconds: r.seconds, timings_ms: out.timings_ms });
+    }
+    row.seconds[`t${threads}`] = { min: Math.min(...times), median: median(times), runs: times.length };
+  }
+  log(`ours ${mesh} padding ${padding}: ${row.result.charts} charts, L2 ${row.result.stretch.l2.toFixed(4)}, ` +
+      Object.entries(row.seconds).map(([t, s]) => `${t} ${s.median.toFixed(2)} s`).join(', '));
+  return record(row);
+}
+
+/**
+ * WASM HOOK — ours through the npm module (WebAssembly in Node, like xatlasjs), timed as a whole process.
+ * It needs a built module (npm run build:wasm) whose Mesh has atlas(options) returning the CLI's fields
+ * (result_fields are shared with the bindings); until then it returns null and the table says n/a.
+ */
+function runOursWasm(mesh, padding) {
+  if (env.WASM === '0') return null;
+  const script = `
+    import { readFileSync } from 'node:fs';
+    const { createStraightest } = await import(${JSON.stringify(join(root, 'wasm/index.js'))});
+    const st = await createStraightest();
+    const mesh = st.loadMesh(readFileSync(${JSON.stringify(mesh)}));
+    if (typeof mesh.atlas !== 'function') process.exit(3);
+    const result = mesh.atlas({ padding: ${padding} });
+    process.stdout.write(JSON.stringify({ charts: result.charts, l2: result.stretch?.l2 }) + '\\n');`;
+  const times = [];
+  for (let k = 0; k < repeats; ++k) {
+    const r = timed(process.execPath, ['--no-experimental-fetch', '--input-type=module', '-e', script]);
+    if (r.status !== 0) return null;
+    times.push(r.seconds);
+  }
+  return { min: Math.min(...times), median: median(times), runs: times.length };
+}
+
+/** xatlas (xatlasjs 0.2.0, WASM in Node, one thread): one whole-process run, measured by atlas_compare. */
+function runXatlas(mesh, padding) {
+  const json = join(outDir, `xatlas-${mesh.replace(/^.*\//, '').replace(/\.off$/, '')}-p${padding}.json`);
+  const r = timed(process.execPath, [join(root, 'bench/atlas/xatlas-run.mjs'), mesh, json, '--padding', String(padding)]);
+  const c = spawnSync(compare, [json, '--mesh', mesh, '--padding', String(padding)], { encoding: 'utf8', maxBuffer: 1 << 26 });
+  const result = JSON.parse(c.stdout.trim().split('\n').pop());
+  const row = { tool: 'xatlas', mesh, padding, seconds: { t1: { min: r.seconds, median: r.seconds, runs: 1 } }, result };
+  if (result.error) row.error = result.error;
+  log(`xatlas ${mesh} padding ${padding}: ${row.error ?? `${result.charts} charts, L2 ${result.l2}`}, ${r.seconds.toFixed(1)} s`);
+  return record(row);
+}
+
+// ---------------------------------------------------------------- table
+/** The fields of one row, from the CLI's JSON (ours) or atlas_compare's (xatlas): the same measureAtlas. */
+function fields(row) {
+  const q = row.result;
+  if (row.tool === 'ours') {
+    return { vertices: null, charts: q.charts, nonDisk: q.non_disk_charts, l2: q.stretch.l2, linf: q.stretch.linf,
+      utilization: q.utilization, flipped: q.flipped, degenerate: q.degenerate, mirrored: q.mirrored, overlaps: q.overlaps,
+      gap: q.min_gap_texels, size: `${q.width}×${q.height}` };
+  }
+  return { vertices: q.vertices, charts: q.charts, nonDisk: q.non_disk_charts, l2: q.l2, linf: q.linf, utilization: q.utilization,
+    flipped: q.flipped, degenerate: q.degenerate, mirrored: q.mirrored_charts, overlaps: q.overlaps, gap: q.min_gap_texels,
+    size: `${q.width}×${q.height}` };
+}
+
+const num = (x, d) => (typeof x === 'number' && Number.isFinite(x) ? x.toFixed(d) : String(x));
+const secs = (s) => (s ? `${num(s.min, s.min < 10 ? 2 : 1)} / ${num(s.median, s.median < 10 ? 2 : 1)}` : '—');
+
+function table(rows, vertexCounts) {
+  const lines = [
+    '| mesh | vertices | tool, padding | charts | L2 | L∞ | utilization | flipped | degenerate | mirrored charts | overlaps | non-disk charts | min gap (texels) | size | s, 1 thread (min / median) | s, 2 threads | s, WASM 1 thread |',
+    '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|',
+  ];
+  for (const row of rows) {
+    const name = row.mesh.replace(/^.*\//, '').replace(/\.off$/, '');
+    const label = `${row.tool === 'ours' ? 'ours (native)' : 'xatlas (WASM)'}, ${row.padding}`;
+    if (row.error) {
+      lines.push(`| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${String(row.error).replace(/\|/g, '\\|')} |||||||||||||`);
+      continue;
+    }
+    const f = fields(row);
+    const wasm = row.tool === 'xatlas' ? secs(row.seconds.t1) : row.wasm ? secs(row.wasm) : 'n/a';
+    lines.push(`| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${f.charts} | ${num(f.l2, 4)} | ${num(f.linf, 2)} | ` +
+      `${num(f.utilization, 3)} | ${f.flipped} | ${f.degenerate} | ${f.mirrored}${f.charts ? ` (${Math.round((100 * f.mirrored) / f.charts)} %)` : ''} | ` +
+      `${f.overlaps} | ${f.nonDisk} | ${num(f.gap, 2)} | ${f.size} | ` +
+      `${row.tool === 'ours' ? secs(row.seconds.t1) : '—'} | ${row.tool === 'ours' ? secs(row.seconds.t2) : '—'} | ${wasm} |` +
+      (row.nondeterministic ? ' ⚠ runs differ' : ''));
+  }
+  return lines.join('\n');
+}
+
+/** A mesh's vertex count from its OFF header (or N² for heightfield:N). */
+function vertexCount(mesh) {
+  const hf = /^heightfield:(\d+)$/.exec(mesh);
+  if (hf) return Number(hf[1]) ** 2;
+  const head = readFileSync(mesh, 'utf8').slice(0, 4096).split('\n').map((l) => l.replace(/#.*/, '').trim()).filter(Boolean);
+  const tokens = head.join(' ').split(/\s+/);
+  return Number(/^[A-Z]*OFF$/.test(tokens[0]) ? tokens[1] : tokens[0]);
+}
+
+// ---------------------------------------------------------------- main
+setup();
+log(`${cpus().length} × ${cpus()[0]?.model ?? 'CPU'}, load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
+const rows = [];
+const vertexCounts = {};
+for (const name of meshNames) {
+  const mesh = cgalMesh(name);
+  vertexCounts[mesh] = vertexCount(mesh);
+  for (const padding of paddings) {
+    const row = runOurs(mesh, padding, repeats);
+    row.wasm = runOursWasm(mesh, padding);
+    rows.push(row);
+  }
+  if (env.XATLAS !== '0') for (const padding of xatlasPaddings) rows.push(runXatlas(mesh, padding));
+}
+process.stdout.write(`## Texture atlas vs xatlas: CGAL meshes\n\n${table(rows, vertexCounts)}\n\n`);
+
+if (env.BIG !== '0') {
+  const big = [subdivided('armadillo', 1), subdivided('armadillo', 2), subdivided('man', 3), 'heightfield:1000'];
+  const bigRows = [];
+  for (const mesh of big) {
+    vertexCounts[mesh] = vertexCount(mesh);
+    bigRows.push(runOurs(mesh, 2, bigRepeats));
+    if (env.XATLAS !== '0' && !mesh.startsWith('heightfield:')) bigRows.push(runXatlas(mesh, 0));
+  }
+  process.stdout.write(`## Texture atlas: meshes over xatlasjs's 65,535 vertices\n\n${table(bigRows, vertexCounts)}\n\n`);
+}
+log(`runs in ${runsFile}; load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
