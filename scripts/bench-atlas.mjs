@@ -5,8 +5,9 @@
 // meshes past xatlasjs's 65,535-vertex limit: armadillo subdivided 1:4 once and twice (bench/atlas/subdivide.mjs),
 // man subdivided three times (~1.1M vertices, closed) and heightfield:1000 (1M, a disk).
 //
-// Prints one markdown table per part on stdout (progress on stderr) and writes every run as a JSON line to
-// build/bench/atlas/runs.jsonl. Seconds are each tool's whole process (start-up, loading and writing
+// Prints the tables on stdout (progress on stderr), writes them as the section "Texture atlas vs xatlas" of
+// docs/BENCHMARKS.md (WRITE_DOCS=0: not) and every run as a JSON line to build/bench/atlas/runs.jsonl;
+// `--report` only rebuilds the tables and the section from that file. Seconds are each tool's whole process (start-up, loading and writing
 // included), from outside: min / median over REPEATS runs for ours, one run for xatlas (1–300 s each).
 // Each process runs alone (xatlas in Node on one thread; ours natively with --threads 1 and --threads 2).
 //
@@ -19,6 +20,7 @@
 //   BIG=1                     0: skip the large meshes
 //   BIG_REPEATS=1             runs per thread count on the large meshes
 //   WASM=1                    0: skip the WebAssembly column (see runOursWasm)
+//   WRITE_DOCS=1              0: print only
 // Takes ~20–25 minutes on 2 loaded cores, most of it xatlas on bunny00 and refined_elephant and the
 // subdivision of the large meshes (cached in build/data/atlas).
 import { execFileSync, spawnSync } from 'node:child_process';
@@ -26,6 +28,7 @@ import { existsSync, mkdirSync, readFileSync, writeFileSync, appendFileSync } fr
 import { cpus, loadavg } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { mergeSections } from './doc-sections.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const env = process.env;
@@ -192,14 +195,96 @@ function vertexCount(mesh) {
   return Number(/^[A-Z]*OFF$/.test(tokens[0]) ? tokens[1] : tokens[0]);
 }
 
+// ---------------------------------------------------------------- report
+const isBig = (mesh) => mesh.startsWith('heightfield:') || mesh.startsWith(bigDir);
+const targets = [
+  { mesh: 'armadillo-x16', what: 'closed 416k-vertex mesh: L2 ≤ 1.05 in < 60 s native', l2: 1.05, seconds: 60 },
+  { mesh: 'man-x64', what: '1M-vertex mesh (closed): < 120 s native', seconds: 120 },
+  { mesh: 'heightfield:1000', what: '1M-vertex mesh (a disk): < 120 s native', seconds: 120 },
+];
+
+/** The issue's targets against the large meshes' rows: met or missed, with the numbers. */
+function targetLines(rows) {
+  return targets.map((t) => {
+    const row = rows.find((r) => r.tool === 'ours' && r.mesh.replace(/^.*\//, '').replace(/\.off$/, '') === t.mesh);
+    if (!row) return `- ${t.what}: not run`;
+    if (row.error) return `- ${t.what}: **miss** (${row.error})`;
+    const fastest = Math.min(...Object.values(row.seconds).map((s) => s.median));
+    const l2 = row.result.stretch.l2;
+    const met = fastest < t.seconds && (t.l2 === undefined || l2 <= t.l2);
+    return `- ${t.what}: ${met ? 'met' : '**miss**'} — L2 ${l2.toFixed(4)}, ` +
+      `${Object.entries(row.seconds).map(([k, s]) => `${s.median.toFixed(1)} s on ${k.slice(1)} thread${k === 't1' ? '' : 's'}`).join(', ')}`;
+  }).join('\n');
+}
+
+function report(rows, machine) {
+  const vertexCounts = {};
+  for (const row of rows) vertexCounts[row.mesh] = row.result?.vertices ?? (existsSync(row.mesh) || row.mesh.startsWith('heightfield:') ? vertexCount(row.mesh) : '');
+  const small = rows.filter((r) => !isBig(r.mesh));
+  const big = rows.filter((r) => isBig(r.mesh));
+  const section = `## Texture atlas vs xatlas (scripts/bench-atlas.mjs)
+
+\`node scripts/bench-atlas.mjs\` on ${machine.date} (${machine.cpus} × ${machine.model}, shared with other jobs: 1-minute load average ${machine.load} during the runs),
+Node ${machine.node}. Ours: \`straightest atlas MESH --padding P --threads T\` (native CLI), ${machine.repeats} runs per
+padding and thread count (min / median); xatlas: xatlasjs 0.2.0 (xatlas compiled to WebAssembly, one thread in Node) with
+its default options and the padding given, one run (bench/atlas/xatlas-run.mjs). Seconds are each tool's whole process
+(start-up, loading the mesh and writing the result included). Every quality column is measureAtlas's
+(core/atlas/include/straightest/atlas/atlas_quality.hpp): the CLI's own fields for ours, build/native/atlas_compare on
+xatlas's per-corner uv for xatlas, so charts are counted from the uv alone (a cluster of degenerate faces is a chart).
+**Not WASM against WASM yet:** ours is native; the WASM column stays n/a until the npm module's \`mesh.atlas\`
+exists (scripts/bench-atlas.mjs's runOursWasm is the hook). Degenerate faces are faces xatlas leaves unmapped (all corners
+at one uv point): they make its L2/L∞ infinite and its min gap 0.
+
+${table(small, vertexCounts)}
+
+### Meshes over xatlasjs's 65,535 vertices
+
+armadillo-xK and man-xK are CGAL's armadillo and man subdivided 1:4 at edge midpoints (bench/atlas/subdivide.mjs; the
+surface is unchanged, closed), heightfield:1000 is the CLI's 1M-vertex disk. xatlasjs refuses them (its addMesh copies
+the indices to 16 bits). Ours at padding 2, ${machine.bigRepeats} run(s) per thread count.
+
+${table(big, vertexCounts)}
+
+The issue's targets:
+
+${targetLines(big)}
+`;
+  process.stdout.write(`${section}\n`);
+  if (env.WRITE_DOCS !== '0') {
+    const file = join(root, 'docs/BENCHMARKS.md');
+    writeFileSync(file, mergeSections(readFileSync(file, 'utf8'), section, (a, b) => a.split(' (')[0] === b.split(' (')[0]));
+    log('wrote its section of docs/BENCHMARKS.md');
+  }
+}
+
 // ---------------------------------------------------------------- main
+const loadText = () => loadavg().map((x) => x.toFixed(1)).join(' ');
+function repeatsOf(runs) {
+  const counts = new Map();
+  for (const r of runs) counts.set(`${r.mesh}|${r.padding}|${r.threads}`, (counts.get(`${r.mesh}|${r.padding}|${r.threads}`) ?? 0) + 1);
+  return Math.max(0, ...counts.values());
+}
+
+/** The machine's state from the runs themselves: the range of the load average each run saw. */
+function machineOf(lines) {
+  const loads = lines.filter((l) => typeof l.load === 'number').map((l) => l.load);
+  const single = lines.filter((l) => l.tool === 'ours' && typeof l.threads === 'number');
+  return { date: new Date().toISOString().slice(0, 10), cpus: cpus().length, model: cpus()[0]?.model ?? 'CPU', node: process.version,
+    load: `${Math.min(...loads).toFixed(1)}–${Math.max(...loads).toFixed(1)}`,
+    repeats: repeatsOf(single.filter((l) => !isBig(l.mesh))), bigRepeats: repeatsOf(single.filter((l) => isBig(l.mesh))) };
+}
+if (process.argv.includes('--report')) {
+  // Only the tables and the docs section, from the last run's build/bench/atlas/runs.jsonl.
+  const lines = readFileSync(runsFile, 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l));
+  const rows = lines.filter((l) => (l.tool === 'ours' || l.tool === 'xatlas') && typeof l.seconds === 'object');
+  report(rows, { ...machineOf(lines), ...lines.find((l) => l.tool === 'machine') });
+  process.exit(0);
+}
 setup();
-log(`${cpus().length} × ${cpus()[0]?.model ?? 'CPU'}, load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
+log(`${cpus().length} × ${cpus()[0]?.model ?? 'CPU'}, load average ${loadText()}`);
 const rows = [];
-const vertexCounts = {};
 for (const name of meshNames) {
   const mesh = cgalMesh(name);
-  vertexCounts[mesh] = vertexCount(mesh);
   for (const padding of paddings) {
     const row = runOurs(mesh, padding, repeats);
     row.wasm = runOursWasm(mesh, padding);
@@ -207,16 +292,11 @@ for (const name of meshNames) {
   }
   if (env.XATLAS !== '0') for (const padding of xatlasPaddings) rows.push(runXatlas(mesh, padding));
 }
-process.stdout.write(`## Texture atlas vs xatlas: CGAL meshes\n\n${table(rows, vertexCounts)}\n\n`);
-
 if (env.BIG !== '0') {
-  const big = [subdivided('armadillo', 1), subdivided('armadillo', 2), subdivided('man', 3), 'heightfield:1000'];
-  const bigRows = [];
-  for (const mesh of big) {
-    vertexCounts[mesh] = vertexCount(mesh);
-    bigRows.push(runOurs(mesh, 2, bigRepeats));
-    if (env.XATLAS !== '0' && !mesh.startsWith('heightfield:')) bigRows.push(runXatlas(mesh, 0));
+  for (const mesh of [subdivided('armadillo', 1), subdivided('armadillo', 2), subdivided('man', 3), 'heightfield:1000']) {
+    rows.push(runOurs(mesh, 2, bigRepeats));
+    if (env.XATLAS !== '0' && !mesh.startsWith('heightfield:')) rows.push(runXatlas(mesh, 0));
   }
-  process.stdout.write(`## Texture atlas: meshes over xatlasjs's 65,535 vertices\n\n${table(bigRows, vertexCounts)}\n\n`);
 }
-log(`runs in ${runsFile}; load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
+report(rows, machineOf(readFileSync(runsFile, 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l))));
+log(`runs in ${runsFile}`);
