@@ -190,8 +190,8 @@ function benchSummary() {
     `We make ${range(ours.map((r) => r.result.charts), 0)} charts per mesh where xatlas makes ${range(xatlas.map((r) => r.result.charts), 0)}, ` +
     `${sum(ours.map((r) => r.result.mirrored))} of ours mirrored and ${sum(ours.map((r) => r.result.non_disk_charts))} not a disk, against ` +
     `${sum(xatlas.map((r) => r.result.mirrored_charts))} mirrored and ${sum(xatlas.map((r) => r.result.non_disk_charts))} non-disk of xatlas's ` +
-    `${sum(xatlas.map((r) => r.result.charts))}. Neither folds (flipped ${sum(ours.map((r) => r.result.flipped))} / ${sum(xatlas.map((r) => r.result.flipped))}) ` +
-    `or overlaps (${sum(ours.map((r) => r.result.overlaps))} / ${sum(xatlas.map((r) => r.result.overlaps))}). ` +
+    `${sum(xatlas.map((r) => r.result.charts))}. Flipped faces, ours / xatlas: ${sum(ours.map((r) => r.result.flipped))} / ${sum(xatlas.map((r) => r.result.flipped))}; ` +
+    `overlaps: ${sum(ours.map((r) => r.result.overlaps))} / ${sum(xatlas.map((r) => r.result.overlaps))}. ` +
     `${sum(xatlas.map((r) => r.result.utilization)) / xatlas.length > sum(ours.map((r) => r.result.utilization)) / ours.length ? 'xatlas packs tighter' : 'We pack tighter'}: ` +
     `utilization ${range(xatlas.map((r) => r.result.utilization), 2)} at padding 0 for xatlas against our ` +
     `${range(ours.map((r) => r.result.utilization), 2)} at padding 2 (${range(rows.filter((r) => r.tool === 'ours' && r.padding === 0).map((r) => r.result.utilization), 2)} at padding 0). ` +

@@ -217,6 +217,18 @@ function targetLines(rows) {
   }).join('\n');
 }
 
+/** Our rows that break the atlas's promises (no overlap, every chart a disk, no fold, no mirror, padding kept). */
+function oursMisses(rows) {
+  const misses = [];
+  for (const r of rows.filter((x) => x.tool === 'ours' && x.result)) {
+    const q = r.result;
+    const what = [['overlaps', q.overlaps], ['non-disk charts', q.non_disk_charts], ['flipped', q.flipped], ['mirrored charts', q.mirrored],
+      ['padding violations', q.padding_violations]].filter(([, n]) => n > 0).map(([k, n]) => `${n} ${k}`);
+    if (what.length) misses.push(`- ${r.mesh.replace(/^.*\//, '').replace(/\.off$/, '')}, padding ${r.padding}: ${what.join(', ')} (min gap ${q.min_gap_texels.toFixed(2)} texels)`);
+  }
+  return misses.length ? misses.join('\n') : '- none';
+}
+
 function report(rows, machine) {
   const vertexCounts = {};
   for (const row of rows) vertexCounts[row.mesh] = row.result?.vertices ?? (existsSync(row.mesh) || row.mesh.startsWith('heightfield:') ? vertexCount(row.mesh) : '');
@@ -241,13 +253,18 @@ ${table(small, vertexCounts)}
 
 armadillo-xK and man-xK are CGAL's armadillo and man subdivided 1:4 at edge midpoints (bench/atlas/subdivide.mjs; the
 surface is unchanged, closed), heightfield:1000 is the CLI's 1M-vertex disk. xatlasjs refuses them (its addMesh copies
-the indices to 16 bits). Ours at padding 2, ${machine.bigRepeats} run(s) per thread count.
+the indices to 16 bits). Ours at padding 2, ${machine.bigRepeats} run(s) per thread count; 1-minute load average
+${machine.loadBig} during these runs.
 
 ${table(big, vertexCounts)}
 
 The issue's targets:
 
 ${targetLines(big)}
+
+Our atlases that break its promises (overlap, non-disk chart, fold, mirror or padding violation, as measureAtlas finds them):
+
+${oursMisses(rows)}
 `;
   process.stdout.write(`${section}\n`);
   if (env.WRITE_DOCS !== '0') {
@@ -267,10 +284,10 @@ function repeatsOf(runs) {
 
 /** The machine's state from the runs themselves: the range of the load average each run saw. */
 function machineOf(lines) {
-  const loads = lines.filter((l) => typeof l.load === 'number').map((l) => l.load);
+  const loadRange = (ls) => { const xs = ls.filter((l) => typeof l.load === 'number').map((l) => l.load); return xs.length ? `${Math.min(...xs).toFixed(1)}–${Math.max(...xs).toFixed(1)}` : 'n/a'; };
   const single = lines.filter((l) => l.tool === 'ours' && typeof l.threads === 'number');
   return { date: new Date().toISOString().slice(0, 10), cpus: cpus().length, model: cpus()[0]?.model ?? 'CPU', node: process.version,
-    load: `${Math.min(...loads).toFixed(1)}–${Math.max(...loads).toFixed(1)}`,
+    load: loadRange(lines.filter((l) => l.mesh && !isBig(l.mesh))), loadBig: loadRange(lines.filter((l) => l.mesh && isBig(l.mesh))),
     repeats: repeatsOf(single.filter((l) => !isBig(l.mesh))), bigRepeats: repeatsOf(single.filter((l) => isBig(l.mesh))) };
 }
 if (process.argv.includes('--report')) {
