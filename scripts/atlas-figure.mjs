@@ -111,7 +111,8 @@ function chartPaths(atlas, w, h) {
     let d = '';
     for (const list of starts.values()) {
       while (list.length > 0) {
-        let [a, b] = list.pop();
+        const [a, b0] = list.pop();
+        let b = b0;
         d += `M${pt(a)}`;
         const first = key(a);
         for (let guard = 0; guard < 1e6; ++guard) {
@@ -119,7 +120,7 @@ function chartPaths(atlas, w, h) {
           if (key(b) === first) break;
           const next = starts.get(key(b));
           if (!next || next.length === 0) break;
-          [a, b] = next.pop();
+          b = next.pop()[1];
         }
         d += 'Z';
       }

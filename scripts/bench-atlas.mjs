@@ -236,7 +236,7 @@ function report(rows, machine) {
   const big = rows.filter((r) => isBig(r.mesh));
   const section = `## Texture atlas vs xatlas (scripts/bench-atlas.mjs)
 
-\`node scripts/bench-atlas.mjs\` on ${machine.date} (${machine.cpus} × ${machine.model}, shared with other jobs: 1-minute load average ${machine.load} during the runs),
+\`node scripts/bench-atlas.mjs\` at commit ${machine.commit ?? '?'} on ${machine.date} (${machine.cpus} × ${machine.model}, shared with other jobs: 1-minute load average ${machine.load} during the runs),
 Node ${machine.node}. Ours: \`straightest atlas MESH --padding P --threads T\` (native CLI), ${machine.repeats} runs per
 padding and thread count (min / median); xatlas: xatlasjs 0.2.0 (xatlas compiled to WebAssembly, one thread in Node) with
 its default options and the padding given, one run (bench/atlas/xatlas-run.mjs). Seconds are each tool's whole process
@@ -298,6 +298,7 @@ if (process.argv.includes('--report')) {
   process.exit(0);
 }
 setup();
+record({ tool: 'machine', commit: execFileSync('git', ['rev-parse', '--short', 'HEAD'], { cwd: root, encoding: 'utf8' }).trim() });
 log(`${cpus().length} × ${cpus()[0]?.model ?? 'CPU'}, load average ${loadText()}`);
 const rows = [];
 for (const name of meshNames) {
@@ -315,5 +316,6 @@ if (env.BIG !== '0') {
     if (env.XATLAS !== '0' && !mesh.startsWith('heightfield:')) rows.push(runXatlas(mesh, 0));
   }
 }
-report(rows, machineOf(readFileSync(runsFile, 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l))));
+const all = readFileSync(runsFile, 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l));
+report(rows, { ...machineOf(all), ...all.find((l) => l.tool === 'machine') });
 log(`runs in ${runsFile}`);
