@@ -6,9 +6,10 @@
 // (scripts/manifold-results.mjs). Every number in that file comes from this run of the native CLI and
 // tools.
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { join } from 'node:path';
+import { mergeSections } from './doc-sections.mjs';
 import { manifoldSection, measureManifolds } from './manifold-results.mjs';
 import { measurePatches, realPatchesSection, runRealPatches, startComparison } from './real-patches.mjs';
 
@@ -145,7 +146,9 @@ ${detail.join('\n')}
 
 ${realPatchesSection(patches)}\n${measuredSection()}\n${freeStartSection()}\n${manifoldSection(measureManifolds())}`;
 mkdirSync(join(root, 'docs'), { recursive: true });
-writeFileSync(join(root, 'docs/RESULTS.md'), text);
+// Sections written by other scripts (scripts/atlas-figure.mjs's "Texture atlas vs xatlas") stay.
+const resultsFile = join(root, 'docs/RESULTS.md');
+writeFileSync(resultsFile, existsSync(resultsFile) ? mergeSections(readFileSync(resultsFile, 'utf8'), text) : text);
 process.stdout.write('wrote docs/RESULTS.md\n');
 
 /// The measured boundary's repair: what changed, the real patches' counts before and after,

@@ -1,8 +1,9 @@
 // xatlas-run.mjs — runs xatlas (xatlasjs, WASM) with its default options on one mesh and writes its atlas as
 // per-corner uv aligned with the input's faces, for bench/atlas_compare.cpp to measure.
 //
-//   node bench/atlas/xatlas-run.mjs MESH.off|obj OUT.json
+//   node bench/atlas/xatlas-run.mjs MESH.off|obj OUT.json [--padding TEXELS]
 //
+// --padding sets xatlas's PackOptions.padding (its default, 0, otherwise); every other option is xatlas's default.
 // Installs xatlasjs into bench/atlas/node_modules on first use (bench-only: the straightest package never
 // lists it). OUT.json: { mesh, vertices, indices, cornerUv, width, height, charts, seconds } with cornerUv
 // 3 per input face in [0,1]² (xatlasjs's binding already divides xatlas's texel uv by width and height) and
@@ -104,7 +105,7 @@ function cornerUvOfInput(indices, out) {
   return cornerUv;
 }
 
-async function run(meshPath) {
+async function run(meshPath, padding) {
   const { vertices, indices } = readMesh(meshPath);
   if (vertices.length / 3 > 65535) {
     return { error: `xatlasjs takes 16-bit indices: ${vertices.length / 3} vertices > 65535` };
@@ -113,7 +114,7 @@ async function run(meshPath) {
   const start = process.hrtime.bigint();
   api.createAtlas();
   if (!api.addMesh(new Uint16Array(indices), new Float32Array(vertices))) return { error: 'Error adding mesh' };
-  api.generateAtlas({}, {}, false);
+  api.generateAtlas({}, padding === undefined ? {} : { padding }, false);
   const atlas = api.xatlas.getAtlas();
   const out = readAtlasOutput(api.xatlas);
   const seconds = Number(process.hrtime.bigint() - start) / 1e9;
@@ -121,17 +122,18 @@ async function run(meshPath) {
   return { vertices, indices, cornerUv: cornerUvOfInput(indices, out), width, height, charts: null, seconds };
 }
 
-const [meshPath, outPath] = process.argv.slice(2);
-if (!meshPath || !outPath) {
-  process.stderr.write('usage: node bench/atlas/xatlas-run.mjs MESH.off|obj OUT.json\n');
+const [meshPath, outPath, ...flags] = process.argv.slice(2);
+const padding = flags[0] === '--padding' ? Number(flags[1]) : undefined;
+if (!meshPath || !outPath || (flags.length > 0 && !(padding >= 0))) {
+  process.stderr.write('usage: node bench/atlas/xatlas-run.mjs MESH.off|obj OUT.json [--padding TEXELS]\n');
   process.exit(2);
 }
 let result;
 try {
-  result = await run(meshPath);
+  result = await run(meshPath, padding);
 } catch (error) {
   result = { error: String(error?.message ?? error) };
 }
-writeFileSync(outPath, JSON.stringify({ mesh: meshPath, ...result }));
+writeFileSync(outPath, JSON.stringify({ mesh: meshPath, padding: padding ?? 0, ...result }));
 process.stdout.write(result.error ? `${meshPath}: ${result.error}\n` : `${meshPath}: ${result.width}x${result.height}, ${result.seconds.toFixed(2)} s\n`);
 process.exit(result.error ? 1 : 0);
