@@ -288,7 +288,10 @@ class MeshHandle {
       }
       const auto flat = emscripten::convertJSArrayToNumberVector<double>(uv);
       if (flat.size() % 2 != 0)
-        return Error{ErrorCode::InvalidArgument, "uv has " + std::to_string(flat.size()) + " numbers, not 2 per point"};
+        return Error{ErrorCode::InvalidArgument,
+                     "uv has " + std::to_string(flat.size()) + " numbers, expected 2 per vertex (" +
+                         std::to_string(2 * mesh_->numVertices()) + ") or 2 per face corner (" +
+                         std::to_string(6 * mesh_->numFaces()) + ")"};
       std::vector<Vec2> coords(flat.size() / 2);
       for (size_t i = 0; i < coords.size(); ++i) coords[i] = {flat[2 * i], flat[2 * i + 1]};
       auto text = objWithUv(*mesh_, coords);
