@@ -1,4 +1,4 @@
-// The adapters of js_values.hpp.
+// js_values.cpp — the adapters of js_values.hpp.
 #include "js_values.hpp"
 
 #include <emscripten/em_js.h>

@@ -1,3 +1,4 @@
+// error.cpp — the error codes' user-visible names and the one mapping of a caught exception to an Error.
 #include "straightest/base/error.hpp"
 
 #include <exception>

@@ -1,3 +1,4 @@
+// geodesic_distance.cpp — the shortest-distance companions (Dijkstra, heat method, exact) and the default source.
 #include "straightest/geodesics/geodesic_distance.hpp"
 
 #include "straightest/base/names.hpp"

@@ -1,3 +1,4 @@
+// boundary_map.cpp — the boundary polygons (measured, circle, square), their convexification and the ear lift.
 #include "straightest/param/boundary_map.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// boundary_overlaps.cpp — does a map's boundary cross itself: segment crossings along a sweep in x.
 #include "straightest/param/boundary_overlaps.hpp"
 
 #include <algorithm>

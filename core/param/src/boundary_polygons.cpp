@@ -1,3 +1,4 @@
+// boundary_polygons.cpp — every kind's boundary polygon without a solve, a non-disk's through its cut disk.
 #include "straightest/param/boundary_polygons.hpp"
 
 #include "parameterize_cut.hpp"

@@ -1,3 +1,4 @@
+// compare_parameterizations.cpp — every boundary × weights side by side, and the best by preferredMap.
 #include "straightest/param/compare_parameterizations.hpp"
 
 #include <algorithm>

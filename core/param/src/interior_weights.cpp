@@ -1,3 +1,4 @@
+// interior_weights.cpp — the interior convex-combination weights and the system they make with a fixed boundary.
 #include "straightest/param/interior_weights.hpp"
 
 #include <algorithm>

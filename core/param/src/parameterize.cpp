@@ -1,3 +1,4 @@
+// parameterize.cpp — the parameterization pipeline: boundary, weights, solve, stretch, and the best-map rule.
 #include "straightest/param/parameterize.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// base_plane.cpp — the base plane at the source, a cutting plane toward a destination, vertex normals.
 #include "straightest/paths/base_plane.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// free_boundary.cpp — SLIM refinement with the boundary free; its line search is the no-fold guarantee.
 #include "straightest/param/free_boundary.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// slim_global_step.cpp — SLIM's global step: the weighted least-squares system, solved directly or by CG.
 #include "slim_global_step.hpp"
 
 #include <Eigen/SparseCholesky>

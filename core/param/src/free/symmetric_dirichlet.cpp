@@ -1,3 +1,4 @@
+// symmetric_dirichlet.cpp — the symmetric Dirichlet energy per face, SLIM's local step, the flip-free step.
 #include "symmetric_dirichlet.hpp"
 
 #include <algorithm>

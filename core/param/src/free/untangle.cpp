@@ -1,3 +1,4 @@
+// untangle.cpp — folded maps made injective: the regularized barrier (Garanzha et al.) minimized by L-BFGS.
 #include "untangle.hpp"
 
 #include <Eigen/SparseCholesky>
