@@ -8,9 +8,9 @@
 #include <map>
 
 // A column of many small JS values is built in one call into JavaScript from packed arrays in WASM
-// memory: value by value through Embind (a call for each object, each field and each push) the 3996
-// targets and statuses of the 1M height field's all-boundary paths took 4–9 ms, as much as a tenth of
-// the traces themselves. Pointers are unsigned (the memory may exceed 2 GB), hence `>>> 2`.
+// memory: value by value through Embind (a call for each object, each field and each push) the targets
+// and statuses of many paths cost a noticeable share of the traces themselves. Pointers are unsigned (the memory may
+// exceed 2 GB), hence `>>> 2`.
 
 // The bodies are JavaScript: clang-format would break them (`===` into `== =`).
 // clang-format off

@@ -4,12 +4,11 @@
 //
 // Why: a 1M-vertex parameterization allocates a few hundred MB in blocks of 8–100 MB (meshes, sparse
 // matrices, the solver's vectors); with 4 KiB pages the first touch of every page is a fault, and on a
-// virtual machine a fault is expensive. On the 2-core development VM, solving the 1M height field's
-// system took 305k minor faults and ~1 s more than with huge pages (10k faults), and a one-shot CLI
+// virtual machine a fault is expensive; huge pages take a fraction of the faults, and a one-shot CLI
 // run meets every one of them. Where the kernel's THP mode is "madvise" (Debian's default), only memory
 // that asks for huge pages gets them — which malloc does when glibc.malloc.hugetlb=1 is set; and
 // memory freed by one stage and taken by the next is zeroed again by the kernel unless malloc keeps it
-// (solving that system: 10.8k → 950 faults, system time 1.4 → 0.7 s, the same peak memory). Tunables
+// (at the same peak memory). Figures in docs/BENCHMARKS.md. Tunables
 // are read only at process start, hence the re-exec. Mode "always" needs nothing and "never"
 // allows nothing: no re-exec then, nor where the variable already names the tunable (the user's choice
 // stands: GLIBC_TUNABLES=glibc.malloc.hugetlb=0 turns this off). Programs that link the library

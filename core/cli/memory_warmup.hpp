@@ -1,10 +1,9 @@
 // memory_warmup.hpp — the CLI's `param` touches the heap the parameterization will take while it reads
 // the mesh, on a second thread: on a virtual machine the first touch of memory is what a one-shot run
-// pays for most (1.5–3 ms per MB on the 2-core development VM), and reading the mesh leaves a core idle.
-// With the CLI's malloc tunables (huge_pages.hpp) freed memory stays with malloc, so the arrays the
-// parameterization allocates next take pages that are already backed. On that VM, after 30 s idle:
-// `param heightfield:1000` 2.5–3.0 s of wall time and 1.7–2.1 s of parameterization before, 2.0 s and
-// 1.2 s with the warm-up (1.3 s back to back); peak memory 589 → 609 MB.
+// pays for most, and reading the mesh leaves a core idle. With the CLI's malloc tunables
+// (huge_pages.hpp) freed memory stays with malloc, so the arrays the parameterization allocates next
+// take pages that are already backed: a first run then costs about what a repeat does, for a little
+// more peak memory (docs/BENCHMARKS.md).
 #pragma once
 #include <unistd.h>
 
@@ -20,7 +19,7 @@
 namespace straightest::cli {
 
 /// A lower estimate of the heap a measured-boundary parameterization of `mesh` takes, made before the mesh
-/// is read (0: none). The call grows the heap by ~315 bytes per vertex (the 1M height field: 314 MB);
+/// is read (0: none). The call grows the heap by ~315 bytes per vertex (measured on the 1M height field);
 /// heightfield:N has N² vertices. An OBJ, OFF or PLY file is taken to hold a vertex per ≤ 300 bytes: the 1M
 /// OBJ the CLI writes (texture coordinates included) holds one per 189, the plain 1M OBJ and OFF one
 /// per 84 and 82, and binary PLY stores less per vertex than text. So ~1.05 × the file's size stays below

@@ -72,8 +72,8 @@ std::atomic<bool> codeWarmed{false};  // the sample ran to the end once (one war
 }  // namespace
 
 std::size_t parameterizationHeapBytes(int64_t vertices) {
-  // Fresh heap the first call takes, per vertex, at 1M vertices: natively 314 MB (mallinfo2, the
-  // heap's growth); in WebAssembly (32-bit pointers) the module's memory grew by 256 MB.
+  // Fresh heap the first call takes, per vertex, as measured at 1M vertices (natively the heap's growth
+  // by mallinfo2; in WebAssembly, with 32-bit pointers, the module memory's growth): docs/BENCHMARKS.md.
 #if defined(__wasm__)
   constexpr double kBytesPerVertex = 250;
 #else

@@ -7,7 +7,7 @@
 // which thread runs a chunk varies from run to run, but every chunk writes only its own data, so the
 // results do not. threadCount() == 1 keeps the serial loop and never starts a thread.
 //
-// Waking a thread that sleeps on a condition variable took ~25 µs here (a 2-vCPU VM): a worker joined
+// Waking a thread that sleeps on a condition variable is slow on a virtual machine: a worker joined
 // every loop that late, and the caller, done first, slept until the last chunk's worker woke it. The
 // solver runs hundreds of loops of a millisecond or less per solve, so both sides first spin for a
 // while (kSpin) on an atomic before they sleep.

@@ -6,12 +6,11 @@
 // of the window it came from, a vertex's distance at least that of the window that set it), and an entry
 // is queued, at most, a few edge lengths beyond the last key popped; so a ring of buckets over the keys
 // just ahead of the front holds nearly all of them, and each entry is written once and read once. (The
-// radix heap this replaced moved each entry between its buckets a few to tens of times: the propagation
-// took 1.5–2× as long with it.) Entries of one bucket pop newest first, in any order of their keys: the width
-// is the order's resolution. The propagation stays exact in any pop order (every window it drops is
-// dominated by a path it measured); the order only decides how much it prunes: a width of 1/64 of the mean
-// edge length made 0.5–1.2% more windows than the exact order (mannequin-devil, lion-head, heightfield
-// 100), 1/16 made 1.4–3.4% more, and a coarser order (6% of the key) made 3.6× more on mannequin-devil.
+// radix heap this replaced moved each entry between its buckets a few to tens of times.) Entries of one bucket pop
+// newest first, in any order of their keys: the width is the order's resolution. The propagation stays exact in any pop
+// order (every window it drops is dominated by a path it measured); the order only decides how much it prunes: the
+// finer the width, the closer the window count to the exact order's, and a coarse order makes several times more
+// (docs/BENCHMARKS.md).
 //
 // A bucket is a stack of fixed-size chunks taken from a shared pool (a free list), so memory follows the
 // entries queued rather than the largest each bucket ever held. An entry beyond the ring's reach waits in

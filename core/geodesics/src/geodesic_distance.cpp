@@ -142,8 +142,7 @@ std::vector<double> dijkstraFrom(const TriMesh& mesh, const std::vector<std::pai
         dist[w] = nd;
         queue.push(nd, w);
         // w's row is read when w is settled, later and far from here in memory: most of the search's
-        // time was the wait for it (at 1M vertices the default source took 263–298 ms, 198–206 with
-        // this). A prefetch does not change what is computed; WebAssembly has none and ignores it.
+        // time was the wait for it. A prefetch does not change what is computed; WebAssembly has none and ignores it.
         __builtin_prefetch(&g.neighbour[g.start[w]]);
         __builtin_prefetch(&g.length[g.start[w]]);
       }

@@ -5,7 +5,7 @@
 // the closest 16- or 17-digit one. (std::to_chars for double would do it, but Emscripten 3.1.6's libc++
 // lacks it.) vertices keep the mesh's order, so `vt` k belongs to vertex k. With a uv per
 // face corner (a cut mesh's map) each distinct uv is one `vt`, in the order faces first use it.
-// Formatting is the writer's whole cost (up to three snprintf per number: ~3.5 s for a 1M-vertex map),
+// Formatting is the writer's whole cost (up to three snprintf per number),
 // so runs of lines are formatted on all threads into their own strings and appended in order: the text
 // is the same for any thread count.
 #include <cmath>

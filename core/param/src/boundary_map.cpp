@@ -75,8 +75,8 @@ std::vector<int32_t> loopPositions(const TriMesh& mesh, const std::vector<int32_
 
 /// What ring(v) lists around the loop's vertices v and keep(item) accepts, ascending, each once: what a
 /// scan of the whole mesh finds of the items that touch the loop, from the loop's rings alone (every vertex
-/// is one fan, so its ring holds all its halfedges and faces). At 1M vertices the scans over the 6M
-/// halfedges and 2M faces took most of the measured boundary's time outside the traces.
+/// is one fan, so its ring holds all its halfedges and faces). A scan of every halfedge and face would
+/// cost more than the rest of the measured boundary outside the traces.
 template <class Ring, class Keep>
 std::vector<int32_t> aroundLoop(const std::vector<int32_t>& loop, const Ring& ring, const Keep& keep) {
   std::vector<int32_t> items;

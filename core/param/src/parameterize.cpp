@@ -14,8 +14,8 @@ namespace {
 
 /// Solves u_i = Σ λ_ij u_j for the interior with the boundary fixed; u and v together. Returns the
 /// relative residual. lastUse: no other boundary will be solved with W, so its matrix is freed once the
-/// system is assembled, and the solver's arrays take memory the process has already touched (at 1M
-/// vertices 88 MB; first touching fresh memory costs a first call 1.5–3 ms per MB on this VM).
+/// system is assembled, and the solver's arrays take memory the process has already touched (first
+/// touching fresh memory is much of a first call's cost on a virtual machine).
 Expected<double> solveInterior(const TriMesh& mesh, InteriorWeights& W, bool lastUse, const BoundaryMap& boundary,
                                LinearSolver solver, std::vector<Vec2>& uv, const Progress& progress) {
   const int32_t nv = mesh.numVertices();

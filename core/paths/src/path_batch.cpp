@@ -90,9 +90,8 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
   // A chunk is a run of neighbouring targets, whose paths cross nearly the same faces: the longer the
   // runs a thread walks, the more of the mesh it finds in its own caches. About 16 chunks (at least 8
   // targets each; at most 1024, a few milliseconds of walking, so that progress moves and a cancel is
-  // heard) keep the threads' shares even. On the 1M height field's 3996 boundary targets (1 thread:
-  // 64–68 ms), 2 threads took 49–54 ms in runs of 8 targets, and in 128 / 64 / 32 / 16 / 8 / 4 chunks
-  // 39 / 37–38 / 36–37 / 35 / 36 / 35–36 ms.
+  // heard) keep the threads' shares even; runs of a few targets each were much slower, and from about
+  // 16 chunks down the count hardly mattered (docs/BENCHMARKS.md).
   const size_t targetsPerChunk = std::clamp<size_t>((n + 15) / 16, 8, 1024);
   const size_t chunks = detail::chunkCount(n, targetsPerChunk);
   std::vector<std::vector<Vec3>> chunkPoints(chunks), chunkOtherPoints(chunks);

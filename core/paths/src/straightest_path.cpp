@@ -31,8 +31,8 @@ struct Exit {
   double dTail = 0, dHead = 0;  // signed distances of the crossed halfedge's ends (reused next step)
 };
 
-// The per-step helpers of the walk must be inlined into its loop (GCC left segment() out of line, at a
-// cost of ~9% of the 1M-vertex all-boundary benchmark).
+// The per-step helpers of the walk must be inlined into its loop (GCC left segment() out of line, which
+// cost the walk a call per step).
 #if defined(__GNUC__) || defined(__clang__)
 #define STRAIGHTEST_INLINE __attribute__((always_inline)) inline
 #else
@@ -297,9 +297,8 @@ struct StraightestPathTracer::Impl::Walk {
   /// arithmetic as crossing() and segment() (so the same bits); its steps do not depend on each other
   /// (but for the sum), so the processor overlaps their divisions and square roots, which in one pass
   /// stood in every step's chain. Faces of S and D, where a segment must be tested against the end
-  /// points, are walked one at a time. (1M-vertex height field, all 3996 boundary targets, one thread,
-  /// interleaved runs: 85 ms before, 65 ms after; computing the choice of exit without a branch was
-  /// 60 % slower: see STRAIGHTEST_KEEP_BRANCH.)
+  /// points, are walked one at a time. (The choice of exit keeps its branch, which the processor predicts
+  /// well: see STRAIGHTEST_KEEP_BRANCH. Figures in docs/BENCHMARKS.md.)
   STRAIGHTEST_INLINE bool crossEdges(Exit& e, Vec3& P, bool& first, int32_t& pieceStart, int64_t& step) {
     const FaceAdjacency* adjacency = mesh.adjacencyData();
     const Vec3* positions = mesh.positions().data();

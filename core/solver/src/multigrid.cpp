@@ -28,8 +28,8 @@ namespace {
 /// block, then the border rows in ascending order; a backward sweep the exact reverse. No inner row reads
 /// another block, so the blocks run on all threads and the sweep is one and the same Gauss–Seidel sweep
 /// — the same bits — on any number of threads. The border rows, swept on one thread, are the few rows
-/// next to a cut (3 % at 1M on a height field; all of them only on a mesh whose neighbours are scattered
-/// across the numbering, where the sweep is the plain sequential one).
+/// next to a cut (a small share on a mesh numbered by neighbourhood; all of them only on a mesh whose
+/// neighbours are scattered across the numbering, where the sweep is the plain sequential one).
 struct SweepOrder {
   std::vector<int32_t> blockStart;   // every block's first row, then the row count
   std::vector<int32_t> border;       // the border rows, ascending
@@ -64,7 +64,7 @@ struct AggregationMultigrid::Hierarchy {
     std::vector<double> invDiag;
     // The cycle's copies of A's, P's and R's values in single precision (P and R keep no others): 8
     // bytes per entry instead of 12 (value and column) are fewer cache lines to wait for in the
-    // sweeps' scattered reads (~12 % per cycle at 1M). Still a fixed linear operator, as the Krylov
+    // sweeps' scattered reads. Still a fixed linear operator, as the Krylov
     // solver needs; its own products and residuals stay in double precision (matrix()), so the
     // solution's accuracy is unchanged.
     std::vector<float> a32, p32, r32;
@@ -199,8 +199,7 @@ Expected<bool> AggregationMultigrid::compute(CsrMatrix A, const Progress& progre
     level.P = smoothedProlongator(level.A, level.invDiag, agg, count);
     level.R = transpose(level.P);
     // Galerkin coarse operator Pᵀ (A P), both products by rows. A P is read only by the rows of Pᵀ, so it
-    // stays in the pieces it was built in: joining them copied it whole (at 1M 5.5M entries, 66 MB; the
-    // 2-thread setup took 179–207 ms with the copy, 173–194 without, alternating runs).
+    // stays in the pieces it was built in: joining them would copy it whole for nothing.
     const RowPieces AP = multiplyInPieces(level.A, level.P, level.P.col.size() * 3);
     A = multiply(level.R, AP, static_cast<size_t>(count) * 16);
     level.p32 = toSingle(level.P.value);

@@ -14,8 +14,7 @@
 namespace straightest {
 
 // Fixed-size buffers and no push_back in add(): a possible reallocation call per entry kept the
-// compilers (and WebAssembly in particular, 4× slower than native) from holding the pointers in
-// registers.
+// compilers (and WebAssembly in particular) from holding the pointers in registers.
 class RowAccumulator {
  public:
   explicit RowAccumulator(int32_t cols) : slot_(cols, -1), cols_(cols), values_(cols) {}
@@ -32,7 +31,7 @@ class RowAccumulator {
   /// Appends the row to m (dropping exact zeros when asked) and clears the accumulator. The row is
   /// compacted in place and appended as two ranges: growing m's arrays by resize() instead zero-filled
   /// the new entries before they were overwritten, a call per row (in WebAssembly a call and a loop per
-  /// row: ~4 % of a 1M parameterization in Node).
+  /// row).
   void flushInto(CsrMatrix& m, bool dropZeros) {
     int32_t kept = 0;
     for (int32_t k = 0; k < used_; ++k) {
@@ -75,8 +74,7 @@ RowPieces buildRowPieces(int32_t rows, int32_t cols, size_t expectedNonZeros, bo
   const auto pieces = static_cast<int32_t>(first.size() - 1);
   // The pieces' arrays are reserved here, on the calling thread: a block a worker thread allocates
   // comes from that thread's own malloc arena, which gives its pages back when the block is freed.
-  // With the reservation made by the workers, repeated multigrid setups at 1M on 2 threads faulted
-  // 1100–1500 times each in some repeats (the first one 5000–8600 times); now ~0 (the first ~1400).
+  // Reserved by the workers, every repeated multigrid setup faulted its pages in again.
   std::vector<CsrMatrix>& parts = out.parts;
   parts.resize(pieces);
   for (int32_t p = 0; p < pieces; ++p) {

@@ -13,8 +13,8 @@
 // (multigrid.hpp; symmetric, as conjugate gradients need); the hierarchy is kept across iterations,
 // whose weights change little, and rebuilt when a solve needs more than kStaleIterations. Cholesky is
 // the fallback when conjugate gradients do not converge. Why both: a factorization is immune to the
-// ill-conditioning of very distorted maps but fills in (a 100k-vertex height field: 3.4M entries in
-// the factor, 0.5 s a factorization, against ~0.15 s a multigrid-preconditioned solve).
+// ill-conditioning of very distorted maps but fills in, so above kDirectSize a multigrid-preconditioned
+// solve is cheaper than a factorization.
 // Private to the free-boundary refinement.
 #pragma once
 #include <cstdint>

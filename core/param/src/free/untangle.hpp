@@ -7,12 +7,11 @@
 //     f = (1 − θ) ‖J‖²_F / χ(D, ε) + θ (D² + 1) / χ(D, ε),
 // finite for every map when ε > 0 and tending to a barrier against D ≤ 0 as ε → 0. Each round
 // minimizes it with L-BFGS at fixed ε (its initial inverse Hessian the inverse cotan Laplacian of the
-// 3D shape: with the identity, a 9.8k-vertex camel patch whose legs had underflowed was still folded after
-// 60 rounds and 37 s; with the Laplacian it was untangled in 3 rounds), then lowers ε by the paper's rule (from the
+// 3D shape: with the identity, thin protrusions whose map had underflowed stayed folded for every round
+// allowed; with the Laplacian they untangle in a few rounds), then lowers ε by the paper's rule (from the
 // smallest D and the round's energy decrease), until every face is positive by a margin. It stops there: the refinement
-// that follows needs positive faces, not good ones (on a 3.8k-vertex finger, going on until the smallest face was 1e-3
-// of its ideal size took 60 rounds and 7 s; stopping when every face was positive took 5 rounds, and SLIM then ended
-// within about 1% of the same energy). Private to the free-boundary refinement.
+// that follows needs positive faces, not good ones (going on until the smallest face is 1e-3 of its ideal size takes
+// many more rounds, and SLIM ends at about the same energy either way). Private to the free-boundary refinement.
 #pragma once
 #include <chrono>
 #include <cstdint>

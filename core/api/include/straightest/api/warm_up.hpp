@@ -1,5 +1,5 @@
-// warm_up.hpp — a first call costs more than a repeat: fresh memory is faulted in page by page (1.5–3 ms
-// per MB on the 2-core development VM), and where code is compiled at run time (WebAssembly) the engine
+// warm_up.hpp — a first call costs more than a repeat: fresh memory is faulted in page by page (slowly on
+// a virtual machine; docs/BENCHMARKS.md), and where code is compiled at run time (WebAssembly) the engine
 // runs baseline code until it has optimized the hot functions. Loading a mesh is serial and leaves the
 // other cores idle; loadWhileWarmingUp uses one of them meanwhile, so that the first parameterization
 // after the load runs like a repeat. The warm-up changes no result: it touches memory it gives back, and

@@ -19,8 +19,8 @@ inline void prefetch(const void* a) {
 // Keeps the branch it stands in: an empty volatile asm statement cannot be executed speculatively, so
 // the compiler does not turn the branch into conditional moves. Where a branch is predicted well, a
 // conditional move only puts its condition into the chain of dependent loads: Clang did so with the
-// tracer's choice of exit (its two arms only assign), which made the WASM walk 1.6× slower than with the
-// branch (GCC keeps the branch; computed without it, the native walk was 1.6× slower too).
+// tracer's choice of exit (its two arms only assign), which slowed the WASM walk down (GCC keeps the
+// branch; computed without it, the native walk was slower too; docs/BENCHMARKS.md).
 #if defined(__GNUC__) || defined(__clang__)
 #define STRAIGHTEST_KEEP_BRANCH() __asm__ volatile("")
 #else

@@ -2,8 +2,8 @@
 // transparent huge pages (2 MiB) where the system leaves them to the program (THP "madvise" mode).
 //
 // The exact geodesics' propagation fills arrays of a few MiB per call (per halfedge and per edge records)
-// and then reads them at random; each 4 KiB page touched first is a page fault, and on the virtual machine
-// the benchmarks run on a fault costs 12 µs: a third of a 13k-vertex mesh's whole propagation. One 2 MiB
+// and then reads them at random; each 4 KiB page touched first is a page fault, and on a virtual machine
+// the faults can cost as much as a small mesh's whole propagation (docs/BENCHMARKS.md). One 2 MiB
 // page is one fault (and fewer TLB misses). Allocations below 1 MiB, and other systems, use operator new.
 #pragma once
 #include <cstddef>

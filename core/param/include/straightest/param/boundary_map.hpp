@@ -75,7 +75,7 @@ struct BoundaryMap {
 
 /// The radius a failed or outlying trace gets, per vertex: the heat method's geodesic distance from the source,
 /// kept between the straight-line distance (no path is shorter; on coarse patches the heat method can fall far
-/// below it) and the edge-graph distance (an upper bound, which overestimates by 4–15 % on real patches).
+/// below it) and the edge-graph distance (an upper bound, which overestimates on real patches).
 std::vector<double> fallbackRadii(const TriMesh& mesh, const SurfacePoint& source);
 
 /// Requires a disk (checked by the caller). `source` must be an interior surface point for measured.

@@ -3,24 +3,23 @@
 // The systems are I − W: M-matrices, one row per interior vertex, W row-stochastic, not symmetric for
 // shape-preserving or mean-value weights.
 //
-// Why: Eigen's direct solvers fill in badly on million-vertex meshes (SparseLU with COLAMD: ~85 s for
-// 1M vertices) and unpreconditioned Krylov methods need thousands of iterations; a multigrid V-cycle
+// Why: Eigen's direct solvers fill in badly on million-vertex meshes (SparseLU with COLAMD takes over a
+// minute at 1M vertices) and unpreconditioned Krylov methods need thousands of iterations; a multigrid V-cycle
 // makes BiCGSTAB converge in about ten iterations at any size.
 //
 // Setup: strength of connection |a_ij| >= kStrength·sqrt(|a_ii a_jj|); greedy aggregation (roots whose
 // strong neighbours are all free, then attach the rest); tentative prolongator = piecewise constants
-// per aggregate, smoothed by one damped Jacobi step (ω = 2/3: on a 100k height field ω = 0.6 and 0.8
-// took 13 and 24 iterations instead of 9); A_c = Pᵀ A P by two row-wise sparse products; down to at
+// per aggregate, smoothed by one damped Jacobi step (ω = 2/3: it needed the fewest iterations of the
+// values tried); A_c = Pᵀ A P by two row-wise sparse products; down to at
 // most kCoarseSize unknowns, solved exactly by a sparse LU (Eigen's, hidden in the source). R = Pᵀ is
 // kept (the transpose the Galerkin product needs anyway): the cycle restricts by R's rows, each coarse
 // row on its own, so the restriction runs on all threads (~12 bytes per entry of P). Cycle: V(1, 1)
 // with Gauss–Seidel smoothing, forward before the coarse correction and backward after it (a fixed
 // linear operator, as a Krylov preconditioner must be); at 1M vertices it beat V(2, 2) Gauss–Seidel
 // and V(2, 2) damped Jacobi on time to solution. The cycle reads A, P and R in single precision (its
-// vectors stay double): fewer bytes per entry to wait for; at 1M vertices this made a cycle ~12 %
-// faster with the same iteration count. (The cycle is bound by latency — the sweeps' chain of dependent
-// rows and scattered reads — not by bandwidth: see bench/bench_bandwidth.cpp.) The Krylov solver's
-// products use A in double precision.
+// vectors stay double): fewer bytes per entry to wait for, with the same iteration count. (The cycle is bound by
+// latency — the sweeps' chain of dependent rows and scattered reads — not by bandwidth: see bench/bench_bandwidth.cpp.)
+// The Krylov solver's products use A in double precision.
 #pragma once
 #include <cstdint>
 #include <memory>
