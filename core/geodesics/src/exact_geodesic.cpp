@@ -141,7 +141,7 @@ class Propagation {
     queueLimit_ = 100 * static_cast<int64_t>(mesh.numFaces()) + 1'000'000;
   }
 
-  Expected<bool> run(const SurfacePoint& source, const Progress& progress) {
+  Expected<void> run(const SurfacePoint& source, const Progress& progress) {
     seed(source);
     int64_t referenced = 0;
     for (int32_t v = 0; v < mesh_.numVertices(); ++v) referenced += mesh_.vertexHalfedge(v) >= 0;
@@ -162,7 +162,7 @@ class Propagation {
     }
     out_.stats.maxQueue = static_cast<int64_t>(queue_.peak());
     if (!progress("distances", 1.0)) return cancelledError("exact geodesic distances");
-    return true;
+    return {};
   }
 
  private:

@@ -71,7 +71,7 @@ class Walk {
   }
 
   /// Maps the tangent vector `tangent` (in the plane of normal n) into a face around the source and walks.
-  Expected<bool> run(const Vec3& tangent, const Vec3& n) {
+  Expected<void> run(const Vec3& tangent, const Vec3& n) {
     const SurfacePoint& s = shot_.source;
     // The source and the end only, without polylines (one allocation each, not two).
     shot_.points.reserve(keep_ ? 256 : 2);
@@ -164,7 +164,7 @@ class Walk {
 
   /// At a vertex source: the face whose projected sector holds the tangent, at the same fraction of its
   /// corner angle; an interior vertex whose projection folds falls back to the angle scaled by θ/2π.
-  Expected<bool> startAtVertex(int32_t v, const Vec3& tangent, const Vec3& n) {
+  Expected<void> startAtVertex(int32_t v, const Vec3& tangent, const Vec3& n) {
     const Vec3& pv = mesh_.position(v);
     const double tangent2 = dot(tangent, tangent);
     int32_t first = -1;
@@ -184,7 +184,7 @@ class Walk {
       const double sector = signedAngle(p1, p2, n), a = std::atan2(y, x);
       if (sector > 0 && a >= 0 && a <= sector) {
         leaveVertex(h, cornerAngle(mesh_, h) * a / sector);
-        return true;
+        return {};
       }
     }
     if (first < 0) return invalid("the source vertex is not used by any face");
@@ -194,7 +194,7 @@ class Walk {
     double total = 0;
     for (int32_t h : mesh_.outgoingHalfedges(v)) total += cornerAngle(mesh_, h);
     turnAround(first, a * total / kTwoPi);
-    return true;
+    return {};
   }
 
   /// Leaves tail(h) into face(h) at angle beta from h: the walk then looks only at the opposite edge.
@@ -293,7 +293,7 @@ class Walk {
     return true;
   }
 
-  Expected<bool> finish() {
+  Expected<void> finish() {
     if (!have3d_) {  // the same 3D point as a walk that made them all
       last_ = lastEdge_ >= 0 ? edgePosition(lastEdge_, lastT_) : position(mesh_, lastPoint_);
       if (lastEdge_ >= 0) lastPoint_ = edgePoint(lastEdge_, lastTwin_, lastT_);
@@ -304,14 +304,14 @@ class Walk {
       shot_.points.push_back(shot_.end);
       shot_.positions.push_back(shot_.endPosition);
     }
-    return true;
+    return {};
   }
 
-  Expected<bool> walk() { return table_ ? walkWith<true>() : walkWith<false>(); }
+  Expected<void> walk() { return table_ ? walkWith<true>() : walkWith<false>(); }
 
   /// The walk, specialized on whether records come from a table (kTable) or are made per face.
   template <bool kTable>
-  Expected<bool> walkWith() {
+  Expected<void> walkWith() {
     const double requested = shot_.requestedLength, tolerance2 = vertexTolerance_ * vertexTolerance_;
     const FlatFace* const table = table_;
     // The state lives in locals (registers) while the walk crosses edges; the members are written back

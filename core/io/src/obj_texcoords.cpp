@@ -21,7 +21,7 @@ bool cornerTexcoord(std::string_view corner, int64_t& vt) {
 }
 
 /// Appends the uv of each corner of face line `tokens` (vt indices resolved against `texcoords`).
-Expected<bool> readFaceTexcoords(const text::Tokens& tokens, const std::vector<Vec2>& texcoords, int64_t line,
+Expected<void> readFaceTexcoords(const text::Tokens& tokens, const std::vector<Vec2>& texcoords, int64_t line,
                                  std::vector<Vec2>& cornerUv) {
   if (tokens.count != 4)
     return text::parseError(line,
@@ -40,7 +40,7 @@ Expected<bool> readFaceTexcoords(const text::Tokens& tokens, const std::vector<V
       cornerUv.push_back(texcoords[i]);
     }
   }
-  return true;
+  return {};
 }
 
 }  // namespace
@@ -59,7 +59,7 @@ Expected<std::vector<Vec2>> readObjCornerUv(std::string_view bytes) {
         error = text::parseError(line, "bad texture coordinate");
       texcoords.push_back({u, v});
     } else if (tokens.items[0] == "f") {
-      Expected<bool> read = readFaceTexcoords(tokens, texcoords, line, cornerUv);
+      Expected<void> read = readFaceTexcoords(tokens, texcoords, line, cornerUv);
       if (!read) error = read.error();
     }
     return !error;

@@ -65,9 +65,9 @@ void normalizeIntoUnitSquare(const TriMesh& mesh, std::vector<Vec2>& uv, std::ve
 
 }  // namespace
 
-Expected<bool> requireDisk(const TriMesh& mesh) {
+Expected<void> requireDisk(const TriMesh& mesh) {
   const MeshSummary& s = mesh.summary();
-  if (s.boundaryLoopSizes.size() == 1 && s.eulerCharacteristic == 1 && s.components == 1) return true;
+  if (s.boundaryLoopSizes.size() == 1 && s.eulerCharacteristic == 1 && s.components == 1) return {};
   std::string found = std::to_string(s.boundaryLoopSizes.size()) + " boundary loop" +
                       (s.boundaryLoopSizes.size() == 1 ? "" : "s") + ", Euler characteristic " +
                       std::to_string(s.eulerCharacteristic) + ", " + std::to_string(s.components) + " component" +

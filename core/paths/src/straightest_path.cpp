@@ -239,8 +239,7 @@ struct StraightestPathTracer::Impl::Walk {
     return best;
   }
 
-  void run(const Vec3& startDir, bool forward) {
-    (void)forward;
+  void run(const Vec3& startDir) {
     emit(tr.source_, tr.sourcePosition_);
     Vec3 P = tr.sourcePosition_;
     const int32_t sourceVertex = tr.source_.kind == SurfacePoint::Kind::Vertex ? tr.source_.index : -1;
@@ -503,7 +502,7 @@ void StraightestPathTracer::Impl::walk(const SurfacePoint& destination, const Ve
     epoch_ = 1;
   }
   Walk w{*this, mesh_, destination, position(mesh_, destination), out, meanEdge_};
-  w.run(direction, forwardSide);
+  w.run(direction);
 }
 
 const StraightestPath& StraightestPathTracer::Impl::trace(const SurfacePoint& destination) {

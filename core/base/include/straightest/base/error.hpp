@@ -4,6 +4,7 @@
 // category (stable, machine-readable; the CLI maps every category to exit code 2) and a message that
 // says what was found and where (line, face, vertex). Exceptions are reserved for programmer errors.
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -57,6 +58,20 @@ class Expected {
 
  private:
   std::variant<T, Error> v_;
+};
+
+/// Success or an Error, for work whose result is what it did: `return {};` on success.
+template <>
+class Expected<void> {
+ public:
+  Expected() = default;
+  Expected(Error error) : error_(std::move(error)) {}  // NOLINT(implicit)
+  bool ok() const { return !error_; }
+  explicit operator bool() const { return ok(); }
+  const Error& error() const { return *error_; }
+
+ private:
+  std::optional<Error> error_;
 };
 
 /// The error for the exception being handled (call inside a catch block): allocation failure is

@@ -99,7 +99,7 @@ struct Parameterization {
 
 /// Checks that the mesh is a single disk (message says what was found otherwise): the fixed-boundary
 /// polygons and the free refinement of a given start need one; parameterize does not.
-Expected<bool> requireDisk(const TriMesh& mesh);
+Expected<void> requireDisk(const TriMesh& mesh);
 
 /// The source the measured boundary is centred on: resolveSource, then moved onto an edge or vertex
 /// within kSnapSource as the tracer will; an InvalidArgument error when that point is on the boundary.
