@@ -152,6 +152,89 @@ std::vector<Vec2> onRealVertices(std::vector<Vec2> uv, const std::vector<int32_t
   return uv;
 }
 
+namespace {
+
+/// The source: an interior point where a boundary is traced or refined, else wherever the caller put it.
+Expected<SurfacePoint> diskSource(const TriMesh& mesh, const ParamOptions& options, bool needsSource) {
+  if (needsSource) return interiorSource(mesh, options.source);
+  auto s = resolveSource(mesh, options.source);
+  if (!s) return s.error();
+  return options.source ? canonical(mesh, s.value(), kSnapSource) : s.value();
+}
+
+/// The fixed boundaries to solve, in measured, circle, square order: the one asked for, every one for
+/// auto, and for free the measured (when it can be traced) and the circle. `traceTime` gets the traces.
+Expected<std::vector<BoundaryMap>> fixedBoundaries(const TriMesh& mesh, const SurfacePoint& source,
+                                                   const ParamOptions& options, bool needsSource,
+                                                   const Progress& progress, Timings& traceTime) {
+  const bool chooses = !options.boundary;
+  const bool free = options.boundary == BoundaryKind::Free;
+  std::vector<BoundaryMap> boundaries;
+  if (needsSource) {
+    auto m = measuredBoundary(mesh, source, progress, &traceTime);
+    if (!m && m.error().code == ErrorCode::Cancelled) return m.error();
+    if (m) boundaries.push_back(std::move(m).value());
+    else if (options.boundary == BoundaryKind::Measured) return m.error();
+    // auto and free go on without it: free then starts from the circle.
+  }
+  if (chooses || free || *options.boundary == BoundaryKind::Circle) boundaries.push_back(circleBoundary(mesh));
+  if (chooses || *options.boundary == BoundaryKind::Square) boundaries.push_back(squareBoundary(mesh));
+  return std::move(boundaries);
+}
+
+/// One fixed boundary's map: the interior solved, the stretch measured on the real vertices, the
+/// boundary's polygon and loop moved into it.
+Expected<SolvedMap> solveBoundary(const TriMesh& mesh, const TriMesh& real, const std::vector<int32_t>& extraOrigin,
+                                  InteriorWeights& W, bool lastUse, BoundaryMap& boundary, const ParamOptions& options,
+                                  const Progress& progress, Stopwatch& stage) {
+  const Error cancelled = cancelledError("parameterization");
+  SolvedMap map;
+  const auto solved = solveInterior(mesh, W, lastUse, boundary, options.solver, map.uv, progress);
+  if (!solved) return solved.error().code == ErrorCode::Cancelled ? cancelled : solved.error();
+  map.residual = solved.value();
+  record(options.timings, "solve", stage.lap());
+  if (!report(progress, "metrics", 0)) return cancelled;
+  map.metrics = textureStretch(real, extraOrigin.empty() ? map.uv : onRealVertices(map.uv, extraOrigin));
+  record(options.timings, "metrics", stage.lap());
+  map.kind = boundary.kind;
+  map.polygon = std::move(boundary.polygon);
+  map.loop = std::move(boundary.loop);
+  map.fallbacks = boundary.fallbacks;
+  map.outliers = boundary.outliers;
+  return std::move(map);
+}
+
+/// The free boundary's refinement of `start`, which takes `result`'s place for free, when there is no
+/// fixed map, or when preferredMap prefers it (else only its candidates are kept).
+Expected<void> refineStart(const TriMesh& mesh, const TriMesh& real, const std::vector<int32_t>& extraOrigin,
+                           const ParamOptions& options, bool haveBest, SolvedMap start, Parameterization& result,
+                           const Progress& progress) {
+  const bool free = options.boundary == BoundaryKind::Free;
+  Parameterization from;
+  from.source = result.source;
+  from.weights = result.weights;
+  from.weightFallbacks = result.weightFallbacks;
+  from.candidates = std::move(result.candidates);
+  takeMap(from, std::move(start));
+  // Refined from the start in [0, 1]², exactly as refineParameterization of parameterize's own
+  // result would be (the comparison refines that way): the same map either way.
+  normalizeIntoUnitSquare(mesh, from.uv, from.boundaryPolygon);
+  if (!extraOrigin.empty()) from.uv = onRealVertices(std::move(from.uv), extraOrigin);
+  auto refined = refineOnDisk(real, from, options.free, progress, options.timings);
+  if (!refined) return refined.error();
+  Parameterization& r = refined.value();
+  if (free || !haveBest ||
+      preferredMap(r.metrics.l2, r.metrics.flipped + r.metrics.degenerate, result.metrics.l2,
+                   result.metrics.flipped + result.metrics.degenerate)) {
+    result = std::move(r);
+  } else {
+    result.candidates = std::move(r.candidates);
+  }
+  return {};
+}
+
+}  // namespace
+
 Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& real,
                                             const std::vector<int32_t>& extraOrigin, const ParamOptions& options,
                                             const Progress& progress) {
@@ -169,28 +252,15 @@ Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& 
   if (!report(progress, "source", 0)) return cancelled;
   Stopwatch stage;
   const bool needsSource = refines || *options.boundary == BoundaryKind::Measured;
-  if (needsSource) {
-    auto s = interiorSource(mesh, options.source);
-    if (!s) return s.error();
-    result.source = s.value();
-  } else {
-    auto s = resolveSource(mesh, options.source);
-    if (!s) return s.error();
-    result.source = options.source ? canonical(mesh, s.value(), kSnapSource) : s.value();
-  }
+  auto source = diskSource(mesh, options, needsSource);
+  if (!source) return source.error();
+  result.source = source.value();
   record(timings, "source", stage.lap());
 
-  std::vector<BoundaryMap> boundaries;
   Timings traceTime;
-  if (needsSource) {
-    auto m = measuredBoundary(mesh, result.source, progress, &traceTime);
-    if (!m && m.error().code == ErrorCode::Cancelled) return m.error();
-    if (m) boundaries.push_back(std::move(m).value());
-    else if (options.boundary == BoundaryKind::Measured) return m.error();
-    // auto and free go on without it: free then starts from the circle.
-  }
-  if (chooses || free || *options.boundary == BoundaryKind::Circle) boundaries.push_back(circleBoundary(mesh));
-  if (chooses || *options.boundary == BoundaryKind::Square) boundaries.push_back(squareBoundary(mesh));
+  auto fixed = fixedBoundaries(mesh, result.source, options, needsSource, progress, traceTime);
+  if (!fixed) return fixed.error();
+  std::vector<BoundaryMap>& boundaries = fixed.value();
   record(timings, "trace", traceTime["trace"]);
   record(timings, "boundary", stage.lap() - traceTime["trace"]);
 
@@ -204,20 +274,10 @@ Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& 
   for (BoundaryMap& boundary : boundaries) {
     if (free && start) break;  // the measured map is bijective: no circle needed
     stage.lap();
-    SolvedMap map;
     const bool lastUse = &boundary == &boundaries.back();
-    const auto solved = solveInterior(mesh, W, lastUse, boundary, options.solver, map.uv, progress);
-    if (!solved) return solved.error().code == ErrorCode::Cancelled ? cancelled : solved.error();
-    map.residual = solved.value();
-    record(timings, "solve", stage.lap());
-    if (!report(progress, "metrics", 0)) return cancelled;
-    map.metrics = textureStretch(real, extraOrigin.empty() ? map.uv : onRealVertices(map.uv, extraOrigin));
-    record(timings, "metrics", stage.lap());
-    map.kind = boundary.kind;
-    map.polygon = std::move(boundary.polygon);
-    map.loop = std::move(boundary.loop);
-    map.fallbacks = boundary.fallbacks;
-    map.outliers = boundary.outliers;
+    auto solved = solveBoundary(mesh, real, extraOrigin, W, lastUse, boundary, options, progress, stage);
+    if (!solved) return solved.error();
+    SolvedMap& map = solved.value();
     result.candidates.push_back(candidateOf(map.kind, map.metrics));
     const bool startsFree = refines && !start &&
                             (map.kind == BoundaryKind::Circle ||
@@ -232,26 +292,8 @@ Expected<Parameterization> parameterizeDisk(const TriMesh& mesh, const TriMesh& 
   }
   if (haveBest) normalizeIntoUnitSquare(mesh, result.uv, result.boundaryPolygon);
   if (refines && start) {
-    Parameterization from;
-    from.source = result.source;
-    from.weights = result.weights;
-    from.weightFallbacks = result.weightFallbacks;
-    from.candidates = std::move(result.candidates);
-    takeMap(from, std::move(*start));
-    // Refined from the start in [0, 1]², exactly as refineParameterization of parameterize's own
-    // result would be (the comparison refines that way): the same map either way.
-    normalizeIntoUnitSquare(mesh, from.uv, from.boundaryPolygon);
-    if (!extraOrigin.empty()) from.uv = onRealVertices(std::move(from.uv), extraOrigin);
-    auto refined = refineOnDisk(real, from, options.free, progress, timings);
+    auto refined = refineStart(mesh, real, extraOrigin, options, haveBest, std::move(*start), result, progress);
     if (!refined) return refined.error();
-    Parameterization& r = refined.value();
-    if (free || !haveBest ||
-        preferredMap(r.metrics.l2, r.metrics.flipped + r.metrics.degenerate, result.metrics.l2,
-                     result.metrics.flipped + result.metrics.degenerate)) {
-      result = std::move(r);
-    } else {
-      result.candidates = std::move(r.candidates);
-    }
     haveBest = true;
   }
   if (!haveBest) return Error{ErrorCode::Topology, "no boundary map could be built"};
