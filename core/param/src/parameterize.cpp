@@ -179,7 +179,7 @@ Expected<std::vector<BoundaryMap>> fixedBoundaries(const TriMesh& mesh, const Su
   }
   if (chooses || free || *options.boundary == BoundaryKind::Circle) boundaries.push_back(circleBoundary(mesh));
   if (chooses || *options.boundary == BoundaryKind::Square) boundaries.push_back(squareBoundary(mesh));
-  return std::move(boundaries);
+  return boundaries;
 }
 
 /// One fixed boundary's map: the interior solved, the stretch measured on the real vertices, the
@@ -201,7 +201,7 @@ Expected<SolvedMap> solveBoundary(const TriMesh& mesh, const TriMesh& real, cons
   map.loop = std::move(boundary.loop);
   map.fallbacks = boundary.fallbacks;
   map.outliers = boundary.outliers;
-  return std::move(map);
+  return map;
 }
 
 /// The free boundary's refinement of `start`, which takes `result`'s place for free, when there is no
