@@ -48,7 +48,9 @@ Expected<std::vector<FlatChart>> flattenAndSplit(const TriMesh& mesh, std::vecto
     for (ChartFlattening& result : flattened.value()) {
       const size_t count = done.size() + pending.size() + unread--;
       const bool mayGrow = options.maxCharts == 0 || count < static_cast<size_t>(options.maxCharts);
-      if (result.acceptable || !mayGrow) {
+      // The cap keeps a chart that is only too stretched; one that has no flat map (its faces would lie
+      // apart and overlap) is split whatever the cap: the atlas never overlaps.
+      if (result.acceptable || (!mayGrow && std::isfinite(result.chart.l2))) {
         if (!result.acceptable) set.capped = true, ++set.overStretch;
         flattenedFaces += static_cast<double>(result.chart.faces.size());
         done.push_back(std::move(result.chart));

@@ -32,7 +32,8 @@ namespace straightest {
 
 struct ChartOptions {
   double maxStretch = 1.02;  // per-chart Sander L2 target after flattening (>= 1); charts above it are split
-  int32_t maxCharts = 0;     // 0: no cap; otherwise splitting stops at this many charts (ChartSet::capped)
+  int32_t maxCharts = 0;     // 0: no cap; otherwise splitting for stretch stops at this many charts (ChartSet::capped);
+                             // a chart with no flat map is split anyway, so the count can pass it
   // The most faces a chart grows to or merges into (0: no cap). Without it a large smooth mesh becomes a few
   // huge charts whose refinement solves dominate and run one at a time; with it a big developable region
   // becomes several charts, which costs a texture a little seam and keeps every solve small and parallel.
