@@ -22,7 +22,7 @@ export const WAIT_TIMEOUT_MS = 8_000 * TIME_SCALE; // any single wait in a page
 export const BIG_WAIT_TIMEOUT_MS = 30_000 * TIME_SCALE; // waits for the work on the 200k-vertex mesh
 export const TEST_TIMEOUT_MS = 20_000 * TIME_SCALE;
 export const BIG_TEST_TIMEOUT_MS = 45_000 * TIME_SCALE; // tests on the 200k-vertex mesh
-const RUN_TIMEOUT_MS = 300_000 * TIME_SCALE; // the whole run (36 tests, ~3.5 min on 2 cores) must stay under 5 min
+const RUN_TIMEOUT_MS = 600_000 * TIME_SCALE; // a guard against a hang, not a speed target: the whole run (~50 tests) takes ~5–6 min on 2 cores
 const VIEWPORT = { width: 1000, height: 700 };
 
 // The run: the server and the browser every test shares, and the tally of the tests' results.
