@@ -17,7 +17,7 @@
 namespace straightest {
 
 struct WarmUp {
-  std::size_t heapBytes = 0;  // fresh heap to touch and give back to malloc (none below 16 MB)
+  std::size_t heapBytes = 0;  // fresh heap to touch and give back to malloc (none when too small to matter)
   // Or the bytes of the mesh file being loaded: the heap for the vertices it holds (verticesInFile, counted
   // on the warm-up's thread). They must stay valid until the load returns.
   std::string_view meshFile;
@@ -39,7 +39,7 @@ int64_t verticesInFile(std::string_view bytes, MeshFormat format, const std::ato
 /// touched block is allocated on the worker: that serves WebAssembly's single heap; glibc would give it
 /// the worker's own arena, which is why the CLI allocates its block on its main thread instead
 /// (core/cli/memory_warmup.hpp). The
-/// warm-up stops when load returns (within ~1 MB of touching or one progress step of the sample), so it
+/// warm-up stops when load returns (within one step of touching or one progress step of the sample), so it
 /// never delays the load by more than that. With one thread, or while the pool is taken, only load runs.
 void loadWhileWarmingUp(const WarmUp& warmUp, const std::function<void()>& load);
 

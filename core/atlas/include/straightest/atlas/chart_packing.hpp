@@ -20,7 +20,7 @@
 
 namespace straightest {
 
-/// The largest atlas side accepted: the occupancy bitmap of a 16384² atlas is 32 MB.
+/// The largest atlas side accepted: it bounds the occupancy bitmaps the packer holds.
 inline constexpr int32_t kMaxAtlasSide = 16384;
 
 struct PackOptions {
