@@ -1,29 +1,14 @@
 // uv_charts.cpp — charts as connected components of uv-joined faces (union–find), and the seam edges.
 #include "uv_charts.hpp"
 
+#include "straightest/base/disjoint_sets.hpp"
+
 #include <cmath>
 #include <numeric>
 
 namespace straightest::atlas_detail {
 
 namespace {
-
-/// Union–find over faces with path halving.
-class FaceSets {
- public:
-  explicit FaceSets(int32_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int32_t find(int32_t f) {
-    while (parent_[f] != f) f = parent_[f] = parent_[parent_[f]];
-    return f;
-  }
-  void join(int32_t a, int32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<int32_t> parent_;
-};
 
 void snapCorners(const std::vector<Vec2>& cornerUv, UvCharts& c) {
   const size_t faces = cornerUv.size() / 3;
@@ -41,7 +26,7 @@ void snapCorners(const std::vector<Vec2>& cornerUv, UvCharts& c) {
 
 /// Joins halfedges whose twin's endpoints snap to the same uv (twin t runs head(h) → tail(h)); counts the
 /// interior edges that are not joined as seams.
-void joinAcrossEdges(const TriMesh& mesh, UvCharts& c, FaceSets& sets) {
+void joinAcrossEdges(const TriMesh& mesh, UvCharts& c, DisjointSets& sets) {
   const int32_t halfedges = 3 * mesh.numFaces();
   c.joined.assign(halfedges, 0);
   for (int32_t h = 0; h < halfedges; ++h) {
@@ -52,7 +37,7 @@ void joinAcrossEdges(const TriMesh& mesh, UvCharts& c, FaceSets& sets) {
                       c.corner[TriMesh::next(h)] == c.corner[t];
     if (same) {
       c.joined[h] = c.joined[t] = 1;
-      sets.join(f, g);
+      sets.unite(f, g);
     } else {
       ++c.seamEdges;
       c.seamLength += norm(mesh.position(mesh.head(h)) - mesh.position(mesh.tail(h)));
@@ -66,7 +51,7 @@ UvCharts findUvCharts(const TriMesh& mesh, const std::vector<Vec2>& cornerUv) {
   UvCharts c;
   const int32_t faces = mesh.numFaces();
   snapCorners(cornerUv, c);
-  FaceSets sets(faces);
+  DisjointSets sets(faces);
   joinAcrossEdges(mesh, c, sets);
   c.chartOfFace.assign(faces, -1);
   std::vector<int32_t> chartOfRoot(faces, -1);

@@ -2,6 +2,8 @@
 // a pruned tree–cotree cut graph for genus ≥ 1.
 #include "cut_graph.hpp"
 
+#include "straightest/base/disjoint_sets.hpp"
+
 #include <algorithm>
 #include <functional>
 #include <limits>
@@ -59,21 +61,6 @@ int32_t farthest(const std::vector<double>& distance) {
 
 /// One key per undirected edge of a closed mesh: the smaller of its two halfedges.
 int32_t edgeKey(const TriMesh& mesh, int32_t h) { return std::min(h, mesh.twin(h)); }
-
-struct DisjointSets {
-  std::vector<int32_t> parent;
-  explicit DisjointSets(int32_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int32_t find(int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool unite(int32_t a, int32_t b) {
-    a = find(a), b = find(b);
-    if (a == b) return false;
-    parent[a] = b;
-    return true;
-  }
-};
 
 }  // namespace
 
