@@ -18,7 +18,7 @@ import { pageModes } from './modes.js';
 import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { isCancelled } from './requests.js';
-import { SEAM_COLOR, checkerboardCanvas } from './uv-layout.js';
+import { SEAM_COLOR, checkerboardCanvas, surfaceTexture } from './uv-layout.js';
 import { chartColor, chartCss, chartPaths, drawAtlasLayout } from './atlas-layout.js';
 import { createAtlasExport } from './atlas-export.js';
 import { formatCount, formatMetric, formatMs, formatPercent } from './param-format.js';
@@ -124,13 +124,7 @@ export function createAtlasMode({ session, view, surface }) {
   let checkerTexture = null;
   let imageTexture = null;
 
-  function configureTexture(texture) {
-    texture.colorSpace = THREE.SRGBColorSpace;
-    texture.anisotropy = maxAnisotropy;
-    texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
-    texture.needsUpdate = true;
-    return texture;
-  }
+  const configureTexture = (texture) => surfaceTexture(texture, maxAnisotropy);
 
   /** The material from the Show menu: chart colours, or the checkerboard / image through the atlas uv. */
   function updateMaterial() {

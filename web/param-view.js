@@ -21,7 +21,7 @@ import { latest } from './latest.js';
 import { createCompareView } from './compare-view.js';
 import { createStretchView } from './stretch-view.js';
 import { WEIGHT_LABELS, formatCount, formatMetric, formatMs } from './param-format.js';
-import { SEAM_COLOR, checkerboardCanvas, drawLayout } from './uv-layout.js';
+import { SEAM_COLOR, checkerboardCanvas, drawLayout, surfaceTexture } from './uv-layout.js';
 import { isCancelled } from './requests.js';
 import { parameterizationHint, renderHint } from './hints.js';
 import { download } from './image-export.js';
@@ -70,13 +70,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   let checkerCells = 16; // squares per side of the checkerboard (the export panel's density)
   let imageTexture = null; // the user's image, once loaded
 
-  function configureTexture(texture) {
-    texture.colorSpace = THREE.SRGBColorSpace;
-    texture.anisotropy = maxAnisotropy;
-    texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
-    texture.needsUpdate = true;
-    return texture;
-  }
+  const configureTexture = (texture) => surfaceTexture(texture, maxAnisotropy);
 
   /** The map of the surface: null without a uv on the mesh or with texture 'none'. */
   function texture() {

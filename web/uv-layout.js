@@ -2,10 +2,20 @@
 // the 2D UV-layout canvas. Everything drawn here comes from the worker's arrays as they are; the
 // page computes no uv or stretch itself (the colour scales are colormap.js).
 
+import * as THREE from 'three';
 import { BOUNDARY_COLORS, STRETCH_INFINITE, stretchIndex, stretchRgb, stretchTable } from './colormap.js';
 
 /** The seam of a cut mesh, in the layout and on the surface (param-view.js). */
 export const SEAM_COLOR = '#ff4fd8';
+
+/** A texture set up to be seen on the mesh through its uv: sRGB, the renderer's anisotropy, no wrapping. */
+export function surfaceTexture(texture, anisotropy) {
+  texture.colorSpace = THREE.SRGBColorSpace;
+  texture.anisotropy = anisotropy;
+  texture.wrapS = texture.wrapT = THREE.ClampToEdgeWrapping;
+  texture.needsUpdate = true;
+  return texture;
+}
 
 /**
  * The checkerboard of the texture: `cells` × `cells` squares, light and dark, with a thin darker
