@@ -13,7 +13,10 @@ export default [
   },
   { files: ['wasm/**/*.js'], languageOptions: { globals: { ...globals.browser, ...globals.node } } },
   { files: ['web/**/*.js'], languageOptions: { globals: globals.browser } },
-  { files: ['scripts/**/*.mjs', 'tests/js/**/*.mjs', 'tests/cli/**/*.mjs'], languageOptions: { globals: globals.node } },
+  {
+    files: ['scripts/**/*.mjs', 'tests/js/**/*.mjs', 'tests/cli/**/*.mjs'],
+    languageOptions: { globals: globals.node },
+  },
   { files: ['tests/e2e/**/*.mjs'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },
   { files: ['eslint.config.js'], languageOptions: { globals: globals.node } },
 ];

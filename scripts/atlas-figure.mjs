@@ -55,11 +55,18 @@ const same = (p, q) => p[0] === q[0] && p[1] === q[1];
 function charts({ faces, cornerUv }) {
   const nf = faces.length / 3;
   const parent = Int32Array.from({ length: nf }, (_, i) => i);
-  const find = (x) => { while (parent[x] !== x) { parent[x] = parent[parent[x]]; x = parent[x]; } return x; };
+  const find = (x) => {
+    while (parent[x] !== x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
   const edges = new Map();
   for (let f = 0; f < nf; ++f) {
     for (let k = 0; k < 3; ++k) {
-      const a = faces[3 * f + k], b = faces[3 * f + ((k + 1) % 3)];
+      const a = faces[3 * f + k],
+        b = faces[3 * f + ((k + 1) % 3)];
       const key = `${Math.min(a, b)},${Math.max(a, b)}`;
       const list = edges.get(key) ?? [];
       list.push({ f, ca: 3 * f + k, cb: 3 * f + ((k + 1) % 3), a });
@@ -97,7 +104,12 @@ function chartPaths(atlas, w, h) {
   for (let f = 0; f < faces.length / 3; ++f) {
     const [p, q, r] = [cornerUv[3 * f], cornerUv[3 * f + 1], cornerUv[3 * f + 2]];
     area[chartOf[f]] += (q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1]);
-    for (const [a, b] of [[p, q], [q, r], [r, p]]) half.set(`${chartOf[f]}|${key(a)}|${key(b)}`, [a, b]);
+    for (const [a, b] of [
+      [p, q],
+      [q, r],
+      [r, p],
+    ])
+      half.set(`${chartOf[f]}|${key(a)}|${key(b)}`, [a, b]);
   }
   for (const [k, [a, b]] of half) {
     const c = Number(k.slice(0, k.indexOf('|')));
@@ -133,7 +145,8 @@ function panel(atlas, x0, y0, size, title, caption) {
   const aspect = (atlas.width ?? 1) / (atlas.height ?? 1);
   const [w, h] = aspect >= 1 ? [size, size / aspect] : [size * aspect, size];
   const paths = chartPaths(atlas, w, h);
-  let s = `<g transform="translate(${x0} ${y0})">\n<text x="0" y="-30" font-size="15" font-weight="bold">${title}</text>\n` +
+  let s =
+    `<g transform="translate(${x0} ${y0})">\n<text x="0" y="-30" font-size="15" font-weight="bold">${title}</text>\n` +
     `<text x="0" y="-12" font-size="12">${caption}</text>\n<rect x="0" y="0" width="${w.toFixed(1)}" height="${h.toFixed(1)}" fill="#fafafa" stroke="#888"/>\n`;
   paths.forEach(({ d, mirrored }, c) => {
     const hue = (c * 137.508) % 360;
@@ -146,24 +159,53 @@ function panel(atlas, x0, y0, size, title, caption) {
 const captions = [];
 for (const name of names) {
   const mesh = join(root, 'build/data/data/meshes', `${name}.off`);
-  if (!existsSync(mesh)) execFileSync('tar', ['xzf', '/usr/share/doc/libcgal-dev/data.tar.gz', '-C', join(root, 'build/data'), `data/meshes/${name}.off`]);
+  if (!existsSync(mesh))
+    execFileSync('tar', [
+      'xzf',
+      '/usr/share/doc/libcgal-dev/data.tar.gz',
+      '-C',
+      join(root, 'build/data'),
+      `data/meshes/${name}.off`,
+    ]);
   const obj = join(outDir, `ours-${name}.obj`);
-  const ours = JSON.parse(execFileSync(join(root, 'build/native/straightest'), ['atlas', mesh, '-o', obj], { encoding: 'utf8' }));
+  const ours = JSON.parse(
+    execFileSync(join(root, 'build/native/straightest'), ['atlas', mesh, '-o', obj], { encoding: 'utf8' }),
+  );
   const xjson = join(outDir, `xatlas-${name}-p0.json`);
-  if (!existsSync(xjson)) execFileSync(process.execPath, [join(root, 'bench/atlas/xatlas-run.mjs'), mesh, xjson], { stdio: ['ignore', 2, 2] });
-  const xq = JSON.parse(spawnSync(join(root, 'build/native/atlas_compare'), [xjson, '--mesh', mesh], { encoding: 'utf8' }).stdout);
+  if (!existsSync(xjson))
+    execFileSync(process.execPath, [join(root, 'bench/atlas/xatlas-run.mjs'), mesh, xjson], {
+      stdio: ['ignore', 2, 2],
+    });
+  const xq = JSON.parse(
+    spawnSync(join(root, 'build/native/atlas_compare'), [xjson, '--mesh', mesh], { encoding: 'utf8' }).stdout,
+  );
   const oursAtlas = { ...readObjAtlas(obj), width: ours.width, height: ours.height };
   const xAtlas = readXatlasAtlas(xjson);
-  const size = 440, gap = 40, top = 50;
+  const size = 440,
+    gap = 40,
+    top = 50;
   const pct = (m, n) => `${m} mirrored (${Math.round((100 * m) / n)} %)`;
-  const svg = `<svg xmlns="http://www.w3.org/2000/svg" width="${2 * size + 3 * gap}" height="${size + top + gap}" font-family="sans-serif">\n` +
+  const svg =
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${2 * size + 3 * gap}" height="${size + top + gap}" font-family="sans-serif">\n` +
     '<defs><pattern id="hatch" width="5" height="5" patternUnits="userSpaceOnUse" patternTransform="rotate(45)">' +
     '<rect width="5" height="5" fill="#000" fill-opacity="0.25"/><line x1="0" y1="0" x2="0" y2="5" stroke="#000" stroke-width="2"/></pattern></defs>\n' +
     '<rect width="100%" height="100%" fill="#fff"/>\n' +
-    panel(oursAtlas, gap, top + 10, size, `${name}: straightest (padding 2)`,
-      `${ours.charts} charts, L2 ${ours.stretch.l2.toFixed(4)}, utilization ${ours.utilization.toFixed(2)}, ${pct(ours.mirrored, ours.charts)}, ${ours.width}×${ours.height}`) +
-    panel(xAtlas, 2 * gap + size, top + 10, size, `${name}: xatlas (padding 0, hatched: mirrored)`,
-      `${xq.charts} charts, L2 ${Number(xq.l2).toFixed(4)}, utilization ${xq.utilization.toFixed(2)}, ${pct(xq.mirrored_charts, xq.charts)}, ${xq.width}×${xq.height}`) +
+    panel(
+      oursAtlas,
+      gap,
+      top + 10,
+      size,
+      `${name}: straightest (padding 2)`,
+      `${ours.charts} charts, L2 ${ours.stretch.l2.toFixed(4)}, utilization ${ours.utilization.toFixed(2)}, ${pct(ours.mirrored, ours.charts)}, ${ours.width}×${ours.height}`,
+    ) +
+    panel(
+      xAtlas,
+      2 * gap + size,
+      top + 10,
+      size,
+      `${name}: xatlas (padding 0, hatched: mirrored)`,
+      `${xq.charts} charts, L2 ${Number(xq.l2).toFixed(4)}, utilization ${xq.utilization.toFixed(2)}, ${pct(xq.mirrored_charts, xq.charts)}, ${xq.width}×${xq.height}`,
+    ) +
     '</svg>\n';
   const file = join(root, 'docs', `atlas-${name}.svg`);
   writeFileSync(file, svg);
@@ -175,28 +217,66 @@ for (const name of names) {
 function benchSummary() {
   const runs = join(outDir, 'runs.jsonl');
   if (!existsSync(runs)) return '';
-  const rows = readFileSync(runs, 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l))
-    .filter((r) => typeof r.seconds === 'object' && r.result && !r.error && !r.mesh.includes('/atlas/') && !r.mesh.startsWith('heightfield:'));
+  const rows = readFileSync(runs, 'utf8')
+    .split('\n')
+    .filter(Boolean)
+    .map((l) => JSON.parse(l))
+    .filter(
+      (r) =>
+        typeof r.seconds === 'object' &&
+        r.result &&
+        !r.error &&
+        !r.mesh.includes('/atlas/') &&
+        !r.mesh.startsWith('heightfield:'),
+    );
   const ours = rows.filter((r) => r.tool === 'ours' && r.padding === 2);
   const xatlas = rows.filter((r) => r.tool === 'xatlas' && r.padding === 0);
   if (ours.length === 0 || xatlas.length === 0) return '';
-  const range = (xs, d) => { const f = xs.filter(Number.isFinite); return `${Math.min(...f).toFixed(d)}–${Math.max(...f).toFixed(d)}`; };
+  const range = (xs, d) => {
+    const f = xs.filter(Number.isFinite);
+    return `${Math.min(...f).toFixed(d)}–${Math.max(...f).toFixed(d)}`;
+  };
   const l2x = xatlas.map((r) => Number(r.result.l2));
-  const inf = xatlas.filter((r) => !Number.isFinite(Number(r.result.l2))).map((r) => r.mesh.replace(/^.*\//, '').replace(/\.off$/, ''));
-  const worse = ours.filter((o) => { const x = xatlas.find((r) => r.mesh === o.mesh); return x && o.result.stretch.l2 > Number(x.result.l2); });
+  const inf = xatlas
+    .filter((r) => !Number.isFinite(Number(r.result.l2)))
+    .map((r) => r.mesh.replace(/^.*\//, '').replace(/\.off$/, ''));
+  const worse = ours.filter((o) => {
+    const x = xatlas.find((r) => r.mesh === o.mesh);
+    return x && o.result.stretch.l2 > Number(x.result.l2);
+  });
   const sum = (xs) => xs.reduce((a, b) => a + b, 0);
-  return `On the ${ours.length} CGAL meshes of the benchmark, our L2 stretch is ${range(ours.map((r) => r.result.stretch.l2), 4)} and ` +
+  return (
+    `On the ${ours.length} CGAL meshes of the benchmark, our L2 stretch is ${range(
+      ours.map((r) => r.result.stretch.l2),
+      4,
+    )} and ` +
     `xatlas's ${range(l2x, 4)}${inf.length ? ` (infinite on ${inf.join(', ')}: faces it leaves unmapped)` : ''}; ours is above xatlas's on ` +
     `${worse.length === 0 ? 'none' : worse.map((r) => r.mesh.replace(/^.*\//, '').replace(/\.off$/, '')).join(', ')}. ` +
-    `We make ${range(ours.map((r) => r.result.charts), 0)} charts per mesh where xatlas makes ${range(xatlas.map((r) => r.result.charts), 0)}, ` +
+    `We make ${range(
+      ours.map((r) => r.result.charts),
+      0,
+    )} charts per mesh where xatlas makes ${range(
+      xatlas.map((r) => r.result.charts),
+      0,
+    )}, ` +
     `${sum(ours.map((r) => r.result.mirrored))} of ours mirrored and ${sum(ours.map((r) => r.result.non_disk_charts))} not a disk, against ` +
     `${sum(xatlas.map((r) => r.result.mirrored_charts))} mirrored and ${sum(xatlas.map((r) => r.result.non_disk_charts))} non-disk of xatlas's ` +
     `${sum(xatlas.map((r) => r.result.charts))}. Flipped faces, ours / xatlas: ${sum(ours.map((r) => r.result.flipped))} / ${sum(xatlas.map((r) => r.result.flipped))}; ` +
     `overlaps: ${sum(ours.map((r) => r.result.overlaps))} / ${sum(xatlas.map((r) => r.result.overlaps))}. ` +
     `${sum(xatlas.map((r) => r.result.utilization)) / xatlas.length > sum(ours.map((r) => r.result.utilization)) / ours.length ? 'xatlas packs tighter' : 'We pack tighter'}: ` +
-    `utilization ${range(xatlas.map((r) => r.result.utilization), 2)} at padding 0 for xatlas against our ` +
-    `${range(ours.map((r) => r.result.utilization), 2)} at padding 2 (${range(rows.filter((r) => r.tool === 'ours' && r.padding === 0).map((r) => r.result.utilization), 2)} at padding 0). ` +
-    'Times and every column per mesh: [BENCHMARKS.md, Texture atlas vs xatlas](BENCHMARKS.md#texture-atlas-vs-xatlas-scriptsbench-atlasmjs).';
+    `utilization ${range(
+      xatlas.map((r) => r.result.utilization),
+      2,
+    )} at padding 0 for xatlas against our ` +
+    `${range(
+      ours.map((r) => r.result.utilization),
+      2,
+    )} at padding 2 (${range(
+      rows.filter((r) => r.tool === 'ours' && r.padding === 0).map((r) => r.result.utilization),
+      2,
+    )} at padding 0). ` +
+    'Times and every column per mesh: [BENCHMARKS.md, Texture atlas vs xatlas](BENCHMARKS.md#texture-atlas-vs-xatlas-scriptsbench-atlasmjs).'
+  );
 }
 
 const section = `## Texture atlas vs xatlas
@@ -207,11 +287,16 @@ are mirrored (their uv winding is the reverse of the surface's). Both are measur
 Our charts are flattened with the free boundary (never folded, never mirrored) and placed by rotations only;
 xatlas ignores the winding, so many of its charts come out as the surface's mirror image.
 
-${captions.map(({ name, ours, xq }) => `![${name}: our atlas and xatlas's](atlas-${name}.svg)
+${captions
+  .map(
+    ({ name, ours, xq }) =>
+      `![${name}: our atlas and xatlas's](atlas-${name}.svg)
 
 ${name}: ours ${ours.charts} charts, L2 ${ours.stretch.l2.toFixed(4)}, L∞ ${ours.stretch.linf.toFixed(2)}, utilization ${ours.utilization.toFixed(2)}, ` +
-  `${ours.mirrored} mirrored; xatlas ${xq.charts} charts, L2 ${Number(xq.l2).toFixed(4)}, L∞ ${Number(xq.linf).toFixed(2)}, ` +
-  `utilization ${xq.utilization.toFixed(2)}, ${xq.mirrored_charts} mirrored.`).join('\n\n')}
+      `${ours.mirrored} mirrored; xatlas ${xq.charts} charts, L2 ${Number(xq.l2).toFixed(4)}, L∞ ${Number(xq.linf).toFixed(2)}, ` +
+      `utilization ${xq.utilization.toFixed(2)}, ${xq.mirrored_charts} mirrored.`,
+  )
+  .join('\n\n')}
 
 ${benchSummary()}
 `;

@@ -34,8 +34,13 @@ const root = fileURLToPath(new URL('..', import.meta.url));
 const env = process.env;
 const repeats = Number(env.REPEATS ?? 3);
 const bigRepeats = Number(env.BIG_REPEATS ?? 1);
-const meshNames = (env.MESHES ?? 'eight elephant elephant-with-holes cow triceratops dino bull lion-head camel ' +
-  'ChineseDragon-10kv mannequin-devil man diplodocus armadillo bunny00 refined_elephant').split(/\s+/).filter(Boolean);
+const meshNames = (
+  env.MESHES ??
+  'eight elephant elephant-with-holes cow triceratops dino bull lion-head camel ' +
+    'ChineseDragon-10kv mannequin-devil man diplodocus armadillo bunny00 refined_elephant'
+)
+  .split(/\s+/)
+  .filter(Boolean);
 const paddings = (env.PADDINGS ?? '0 2').split(/\s+/).filter(Boolean).map(Number);
 const xatlasPaddings = (env.XATLAS_PADDINGS ?? '0').split(/\s+/).filter(Boolean).map(Number);
 const cli = join(root, 'build/native/straightest');
@@ -51,7 +56,10 @@ const log = (line) => process.stderr.write(`bench-atlas: ${line}\n`);
 function setup() {
   execFileSync('bash', [join(root, 'scripts/setup.sh'), 'libcgal-demo'], { stdio: ['ignore', 2, 2] });
   execFileSync('cmake', ['--preset', 'native'], { cwd: root, stdio: ['ignore', 'ignore', 2] });
-  execFileSync('cmake', ['--build', '--preset', 'native', '--target', 'straightest', 'atlas_compare'], { cwd: root, stdio: ['ignore', 'ignore', 2] });
+  execFileSync('cmake', ['--build', '--preset', 'native', '--target', 'straightest', 'atlas_compare'], {
+    cwd: root,
+    stdio: ['ignore', 'ignore', 2],
+  });
   mkdirSync(bigDir, { recursive: true });
   mkdirSync(outDir, { recursive: true });
   writeFileSync(runsFile, '');
@@ -68,7 +76,9 @@ function cgalMesh(name) {
 function subdivided(name, levels) {
   const file = join(bigDir, `${name}-x${4 ** levels}.off`);
   if (!existsSync(file)) {
-    execFileSync(process.execPath, [join(root, 'bench/atlas/subdivide.mjs'), cgalMesh(name), file, String(levels)], { stdio: ['ignore', 2, 2] });
+    execFileSync(process.execPath, [join(root, 'bench/atlas/subdivide.mjs'), cgalMesh(name), file, String(levels)], {
+      stdio: ['ignore', 2, 2],
+    });
   }
   return file;
 }
@@ -87,7 +97,10 @@ function record(row) {
   return row;
 }
 
-const median = (xs) => { const s = [...xs].sort((a, b) => a - b); return s[Math.floor((s.length - 1) / 2)]; };
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.floor((s.length - 1) / 2)];
+};
 
 /** Ours, native: REPEATS whole-process runs per thread count; the quality of the first (the runs agree). */
 function runOurs(mesh, padding, n, threadCounts = [1, 2]) {
@@ -95,18 +108,31 @@ function runOurs(mesh, padding, n, threadCounts = [1, 2]) {
   for (const threads of threadCounts) {
     const times = [];
     for (let k = 0; k < n; ++k) {
-      const r = timed(cli, ['atlas', mesh, '--padding', String(padding), '--threads', String(threads), '--json-errors']);
+      const r = timed(cli, [
+        'atlas',
+        mesh,
+        '--padding',
+        String(padding),
+        '--threads',
+        String(threads),
+        '--json-errors',
+      ]);
       const out = JSON.parse(r.stdout.trim().split('\n').pop());
       if (out.error) return record({ ...row, error: out.error });
       if (!row.result) row.result = out;
-      else if (out.charts !== row.result.charts || out.stretch.l2 !== row.result.stretch.l2) row.nondeterministic = true;
+      else if (out.charts !== row.result.charts || out.stretch.l2 !== row.result.stretch.l2)
+        row.nondeterministic = true;
       times.push(r.seconds);
       record({ tool: 'ours', mesh, padding, threads, seconds: r.seconds, timings_ms: out.timings_ms });
     }
     row.seconds[`t${threads}`] = { min: Math.min(...times), median: median(times), runs: times.length };
   }
-  log(`ours ${mesh} padding ${padding}: ${row.result.charts} charts, L2 ${row.result.stretch.l2.toFixed(4)}, ` +
-      Object.entries(row.seconds).map(([t, s]) => `${t} ${s.median.toFixed(2)} s`).join(', '));
+  log(
+    `ours ${mesh} padding ${padding}: ${row.result.charts} charts, L2 ${row.result.stretch.l2.toFixed(4)}, ` +
+      Object.entries(row.seconds)
+        .map(([t, s]) => `${t} ${s.median.toFixed(2)} s`)
+        .join(', '),
+  );
   return record(row);
 }
 
@@ -137,12 +163,29 @@ function runOursWasm(mesh, padding) {
 /** xatlas (xatlasjs 0.2.0, WASM in Node, one thread): one whole-process run, measured by atlas_compare. */
 function runXatlas(mesh, padding) {
   const json = join(outDir, `xatlas-${mesh.replace(/^.*\//, '').replace(/\.off$/, '')}-p${padding}.json`);
-  const r = timed(process.execPath, [join(root, 'bench/atlas/xatlas-run.mjs'), mesh, json, '--padding', String(padding)]);
-  const c = spawnSync(compare, [json, '--mesh', mesh, '--padding', String(padding)], { encoding: 'utf8', maxBuffer: 1 << 26 });
+  const r = timed(process.execPath, [
+    join(root, 'bench/atlas/xatlas-run.mjs'),
+    mesh,
+    json,
+    '--padding',
+    String(padding),
+  ]);
+  const c = spawnSync(compare, [json, '--mesh', mesh, '--padding', String(padding)], {
+    encoding: 'utf8',
+    maxBuffer: 1 << 26,
+  });
   const result = JSON.parse(c.stdout.trim().split('\n').pop());
-  const row = { tool: 'xatlas', mesh, padding, seconds: { t1: { min: r.seconds, median: r.seconds, runs: 1 } }, result };
+  const row = {
+    tool: 'xatlas',
+    mesh,
+    padding,
+    seconds: { t1: { min: r.seconds, median: r.seconds, runs: 1 } },
+    result,
+  };
   if (result.error) row.error = result.error;
-  log(`xatlas ${mesh} padding ${padding}: ${row.error ?? `${result.charts} charts, L2 ${result.l2}`}, ${r.seconds.toFixed(1)} s`);
+  log(
+    `xatlas ${mesh} padding ${padding}: ${row.error ?? `${result.charts} charts, L2 ${result.l2}`}, ${r.seconds.toFixed(1)} s`,
+  );
   return record(row);
 }
 
@@ -151,13 +194,35 @@ function runXatlas(mesh, padding) {
 function fields(row) {
   const q = row.result;
   if (row.tool === 'ours') {
-    return { vertices: null, charts: q.charts, nonDisk: q.non_disk_charts, l2: q.stretch.l2, linf: q.stretch.linf,
-      utilization: q.utilization, flipped: q.flipped, degenerate: q.degenerate, mirrored: q.mirrored, overlaps: q.overlaps,
-      gap: q.min_gap_texels, size: `${q.width}×${q.height}` };
+    return {
+      vertices: null,
+      charts: q.charts,
+      nonDisk: q.non_disk_charts,
+      l2: q.stretch.l2,
+      linf: q.stretch.linf,
+      utilization: q.utilization,
+      flipped: q.flipped,
+      degenerate: q.degenerate,
+      mirrored: q.mirrored,
+      overlaps: q.overlaps,
+      gap: q.min_gap_texels,
+      size: `${q.width}×${q.height}`,
+    };
   }
-  return { vertices: q.vertices, charts: q.charts, nonDisk: q.non_disk_charts, l2: q.l2, linf: q.linf, utilization: q.utilization,
-    flipped: q.flipped, degenerate: q.degenerate, mirrored: q.mirrored_charts, overlaps: q.overlaps, gap: q.min_gap_texels,
-    size: `${q.width}×${q.height}` };
+  return {
+    vertices: q.vertices,
+    charts: q.charts,
+    nonDisk: q.non_disk_charts,
+    l2: q.l2,
+    linf: q.linf,
+    utilization: q.utilization,
+    flipped: q.flipped,
+    degenerate: q.degenerate,
+    mirrored: q.mirrored_charts,
+    overlaps: q.overlaps,
+    gap: q.min_gap_texels,
+    size: `${q.width}×${q.height}`,
+  };
 }
 
 const num = (x, d) => (typeof x === 'number' && Number.isFinite(x) ? x.toFixed(d) : String(x));
@@ -172,16 +237,20 @@ function table(rows, vertexCounts) {
     const name = row.mesh.replace(/^.*\//, '').replace(/\.off$/, '');
     const label = `${row.tool === 'ours' ? 'ours (native)' : 'xatlas (WASM)'}, ${row.padding}`;
     if (row.error) {
-      lines.push(`| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${String(row.error).replace(/\|/g, '\\|')} |||||||||||||`);
+      lines.push(
+        `| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${String(row.error).replace(/\|/g, '\\|')} |||||||||||||`,
+      );
       continue;
     }
     const f = fields(row);
     const wasm = row.tool === 'xatlas' ? secs(row.seconds.t1) : row.wasm ? secs(row.wasm) : 'n/a';
-    lines.push(`| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${f.charts} | ${num(f.l2, 4)} | ${num(f.linf, 2)} | ` +
-      `${num(f.utilization, 3)} | ${f.flipped} | ${f.degenerate} | ${f.mirrored}${f.charts ? ` (${Math.round((100 * f.mirrored) / f.charts)} %)` : ''} | ` +
-      `${f.overlaps} | ${f.nonDisk} | ${num(f.gap, 2)} | ${f.size} | ` +
-      `${row.tool === 'ours' ? secs(row.seconds.t1) : '—'} | ${row.tool === 'ours' ? secs(row.seconds.t2) : '—'} | ${wasm} |` +
-      (row.nondeterministic ? ' ⚠ runs differ' : ''));
+    lines.push(
+      `| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${f.charts} | ${num(f.l2, 4)} | ${num(f.linf, 2)} | ` +
+        `${num(f.utilization, 3)} | ${f.flipped} | ${f.degenerate} | ${f.mirrored}${f.charts ? ` (${Math.round((100 * f.mirrored) / f.charts)} %)` : ''} | ` +
+        `${f.overlaps} | ${f.nonDisk} | ${num(f.gap, 2)} | ${f.size} | ` +
+        `${row.tool === 'ours' ? secs(row.seconds.t1) : '—'} | ${row.tool === 'ours' ? secs(row.seconds.t2) : '—'} | ${wasm} |` +
+        (row.nondeterministic ? ' ⚠ runs differ' : ''),
+    );
   }
   return lines.join('\n');
 }
@@ -190,7 +259,11 @@ function table(rows, vertexCounts) {
 function vertexCount(mesh) {
   const hf = /^heightfield:(\d+)$/.exec(mesh);
   if (hf) return Number(hf[1]) ** 2;
-  const head = readFileSync(mesh, 'utf8').slice(0, 4096).split('\n').map((l) => l.replace(/#.*/, '').trim()).filter(Boolean);
+  const head = readFileSync(mesh, 'utf8')
+    .slice(0, 4096)
+    .split('\n')
+    .map((l) => l.replace(/#.*/, '').trim())
+    .filter(Boolean);
   const tokens = head.join(' ').split(/\s+/);
   return Number(/^[A-Z]*OFF$/.test(tokens[0]) ? tokens[1] : tokens[0]);
 }
@@ -205,16 +278,22 @@ const targets = [
 
 /** The issue's targets against the large meshes' rows: met or missed, with the numbers. */
 function targetLines(rows) {
-  return targets.map((t) => {
-    const row = rows.find((r) => r.tool === 'ours' && r.mesh.replace(/^.*\//, '').replace(/\.off$/, '') === t.mesh);
-    if (!row) return `- ${t.what}: not run`;
-    if (row.error) return `- ${t.what}: **miss** (${row.error})`;
-    const fastest = Math.min(...Object.values(row.seconds).map((s) => s.median));
-    const l2 = row.result.stretch.l2;
-    const met = fastest < t.seconds && (t.l2 === undefined || l2 <= t.l2);
-    return `- ${t.what}: ${met ? 'met' : '**miss**'} — L2 ${l2.toFixed(4)}, ` +
-      `${Object.entries(row.seconds).map(([k, s]) => `${s.median.toFixed(1)} s on ${k.slice(1)} thread${k === 't1' ? '' : 's'}`).join(', ')}`;
-  }).join('\n');
+  return targets
+    .map((t) => {
+      const row = rows.find((r) => r.tool === 'ours' && r.mesh.replace(/^.*\//, '').replace(/\.off$/, '') === t.mesh);
+      if (!row) return `- ${t.what}: not run`;
+      if (row.error) return `- ${t.what}: **miss** (${row.error})`;
+      const fastest = Math.min(...Object.values(row.seconds).map((s) => s.median));
+      const l2 = row.result.stretch.l2;
+      const met = fastest < t.seconds && (t.l2 === undefined || l2 <= t.l2);
+      return (
+        `- ${t.what}: ${met ? 'met' : '**miss**'} — L2 ${l2.toFixed(4)}, ` +
+        `${Object.entries(row.seconds)
+          .map(([k, s]) => `${s.median.toFixed(1)} s on ${k.slice(1)} thread${k === 't1' ? '' : 's'}`)
+          .join(', ')}`
+      );
+    })
+    .join('\n');
 }
 
 /** Our rows that break the atlas's promises (no overlap, every chart a disk, no fold, no mirror, padding kept). */
@@ -222,16 +301,29 @@ function oursMisses(rows) {
   const misses = [];
   for (const r of rows.filter((x) => x.tool === 'ours' && x.result)) {
     const q = r.result;
-    const what = [['overlaps', q.overlaps], ['non-disk charts', q.non_disk_charts], ['flipped', q.flipped], ['mirrored charts', q.mirrored],
-      ['padding violations', q.padding_violations]].filter(([, n]) => n > 0).map(([k, n]) => `${n} ${k}`);
-    if (what.length) misses.push(`- ${r.mesh.replace(/^.*\//, '').replace(/\.off$/, '')}, padding ${r.padding}: ${what.join(', ')} (min gap ${q.min_gap_texels.toFixed(2)} texels)`);
+    const what = [
+      ['overlaps', q.overlaps],
+      ['non-disk charts', q.non_disk_charts],
+      ['flipped', q.flipped],
+      ['mirrored charts', q.mirrored],
+      ['padding violations', q.padding_violations],
+    ]
+      .filter(([, n]) => n > 0)
+      .map(([k, n]) => `${n} ${k}`);
+    if (what.length)
+      misses.push(
+        `- ${r.mesh.replace(/^.*\//, '').replace(/\.off$/, '')}, padding ${r.padding}: ${what.join(', ')} (min gap ${q.min_gap_texels.toFixed(2)} texels)`,
+      );
   }
   return misses.length ? misses.join('\n') : '- none';
 }
 
 function report(rows, machine) {
   const vertexCounts = {};
-  for (const row of rows) vertexCounts[row.mesh] = row.result?.vertices ?? (existsSync(row.mesh) || row.mesh.startsWith('heightfield:') ? vertexCount(row.mesh) : '');
+  for (const row of rows)
+    vertexCounts[row.mesh] =
+      row.result?.vertices ??
+      (existsSync(row.mesh) || row.mesh.startsWith('heightfield:') ? vertexCount(row.mesh) : '');
   const small = rows.filter((r) => !isBig(r.mesh));
   const big = rows.filter((r) => isBig(r.mesh));
   const section = `## Texture atlas vs xatlas (scripts/bench-atlas.mjs)
@@ -269,36 +361,59 @@ ${oursMisses(rows)}
   process.stdout.write(`${section}\n`);
   if (env.WRITE_DOCS !== '0') {
     const file = join(root, 'docs/BENCHMARKS.md');
-    writeFileSync(file, mergeSections(readFileSync(file, 'utf8'), section, (a, b) => a.split(' (')[0] === b.split(' (')[0]));
+    writeFileSync(
+      file,
+      mergeSections(readFileSync(file, 'utf8'), section, (a, b) => a.split(' (')[0] === b.split(' (')[0]),
+    );
     log('wrote its section of docs/BENCHMARKS.md');
   }
 }
 
 // ---------------------------------------------------------------- main
-const loadText = () => loadavg().map((x) => x.toFixed(1)).join(' ');
+const loadText = () =>
+  loadavg()
+    .map((x) => x.toFixed(1))
+    .join(' ');
 function repeatsOf(runs) {
   const counts = new Map();
-  for (const r of runs) counts.set(`${r.mesh}|${r.padding}|${r.threads}`, (counts.get(`${r.mesh}|${r.padding}|${r.threads}`) ?? 0) + 1);
+  for (const r of runs)
+    counts.set(`${r.mesh}|${r.padding}|${r.threads}`, (counts.get(`${r.mesh}|${r.padding}|${r.threads}`) ?? 0) + 1);
   return Math.max(0, ...counts.values());
 }
 
 /** The machine's state from the runs themselves: the range of the load average each run saw. */
 function machineOf(lines) {
-  const loadRange = (ls) => { const xs = ls.filter((l) => typeof l.load === 'number').map((l) => l.load); return xs.length ? `${Math.min(...xs).toFixed(1)}–${Math.max(...xs).toFixed(1)}` : 'n/a'; };
+  const loadRange = (ls) => {
+    const xs = ls.filter((l) => typeof l.load === 'number').map((l) => l.load);
+    return xs.length ? `${Math.min(...xs).toFixed(1)}–${Math.max(...xs).toFixed(1)}` : 'n/a';
+  };
   const single = lines.filter((l) => l.tool === 'ours' && typeof l.threads === 'number');
-  return { date: new Date().toISOString().slice(0, 10), cpus: cpus().length, model: cpus()[0]?.model ?? 'CPU', node: process.version,
-    load: loadRange(lines.filter((l) => l.mesh && !isBig(l.mesh))), loadBig: loadRange(lines.filter((l) => l.mesh && isBig(l.mesh))),
-    repeats: repeatsOf(single.filter((l) => !isBig(l.mesh))), bigRepeats: repeatsOf(single.filter((l) => isBig(l.mesh))) };
+  return {
+    date: new Date().toISOString().slice(0, 10),
+    cpus: cpus().length,
+    model: cpus()[0]?.model ?? 'CPU',
+    node: process.version,
+    load: loadRange(lines.filter((l) => l.mesh && !isBig(l.mesh))),
+    loadBig: loadRange(lines.filter((l) => l.mesh && isBig(l.mesh))),
+    repeats: repeatsOf(single.filter((l) => !isBig(l.mesh))),
+    bigRepeats: repeatsOf(single.filter((l) => isBig(l.mesh))),
+  };
 }
 if (process.argv.includes('--report')) {
   // Only the tables and the docs section, from the last run's build/bench/atlas/runs.jsonl.
-  const lines = readFileSync(runsFile, 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l));
+  const lines = readFileSync(runsFile, 'utf8')
+    .split('\n')
+    .filter(Boolean)
+    .map((l) => JSON.parse(l));
   const rows = lines.filter((l) => (l.tool === 'ours' || l.tool === 'xatlas') && typeof l.seconds === 'object');
   report(rows, { ...machineOf(lines), ...lines.find((l) => l.tool === 'machine') });
   process.exit(0);
 }
 setup();
-record({ tool: 'machine', commit: execFileSync('git', ['rev-parse', '--short', 'HEAD'], { cwd: root, encoding: 'utf8' }).trim() });
+record({
+  tool: 'machine',
+  commit: execFileSync('git', ['rev-parse', '--short', 'HEAD'], { cwd: root, encoding: 'utf8' }).trim(),
+});
 log(`${cpus().length} × ${cpus()[0]?.model ?? 'CPU'}, load average ${loadText()}`);
 const rows = [];
 for (const name of meshNames) {
@@ -311,11 +426,19 @@ for (const name of meshNames) {
   if (env.XATLAS !== '0') for (const padding of xatlasPaddings) rows.push(runXatlas(mesh, padding));
 }
 if (env.BIG !== '0') {
-  for (const mesh of [subdivided('armadillo', 1), subdivided('armadillo', 2), subdivided('man', 3), 'heightfield:1000']) {
+  for (const mesh of [
+    subdivided('armadillo', 1),
+    subdivided('armadillo', 2),
+    subdivided('man', 3),
+    'heightfield:1000',
+  ]) {
     rows.push(runOurs(mesh, 2, bigRepeats));
     if (env.XATLAS !== '0' && !mesh.startsWith('heightfield:')) rows.push(runXatlas(mesh, 0));
   }
 }
-const all = readFileSync(runsFile, 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l));
+const all = readFileSync(runsFile, 'utf8')
+  .split('\n')
+  .filter(Boolean)
+  .map((l) => JSON.parse(l));
 report(rows, { ...machineOf(all), ...all.find((l) => l.tool === 'machine') });
 log(`runs in ${runsFile}`);

@@ -12,26 +12,47 @@ import { mergeSections } from './doc-sections.mjs';
 const root = fileURLToPath(new URL('..', import.meta.url));
 const repeats = Number(process.env.REPEATS ?? 3);
 const cgalDir = join(root, 'build/data/data/meshes');
-const cgalMeshes = (process.env.CGAL_MESHES ?? 'nefertiti.off,lion-head.off,cylinder_locally_refined.off,mannequin-devil.off').split(',').map((f) => join(cgalDir, f)).filter(existsSync);
-const meshes = process.env.MESHES ? process.env.MESHES.split(',') : ['heightfield:100', 'heightfield:317', 'heightfield:1000', ...cgalMeshes];
+const cgalMeshes = (
+  process.env.CGAL_MESHES ?? 'nefertiti.off,lion-head.off,cylinder_locally_refined.off,mannequin-devil.off'
+)
+  .split(',')
+  .map((f) => join(cgalDir, f))
+  .filter(existsSync);
+const meshes = process.env.MESHES
+  ? process.env.MESHES.split(',')
+  : ['heightfield:100', 'heightfield:317', 'heightfield:1000', ...cgalMeshes];
 
 function run(target, mesh) {
-  const [cmd, args] = target === 'native'
-    ? [join(root, 'build/native/bench_stages'), []]
-    : [process.execPath, ['--no-experimental-fetch', join(root, 'build/wasm/bench_stages.js')]];
+  const [cmd, args] =
+    target === 'native'
+      ? [join(root, 'build/native/bench_stages'), []]
+      : [process.execPath, ['--no-experimental-fetch', join(root, 'build/wasm/bench_stages.js')]];
   const out = execFileSync(cmd, [...args, target, mesh, String(repeats)], { encoding: 'utf8', maxBuffer: 1 << 26 });
   return JSON.parse(out.trim().split('\n').pop());
 }
 
 // "refine" = the free boundary's refinement of the measured map (its iterations are the same natively and
 // as WASM, so its wasm/native ratio compares like with like).
-const stages = ['load', 'source', 'base_plane', 'traces', 'boundary', 'weights', 'solve', 'metrics', 'param_total', 'refine'];
+const stages = [
+  'load',
+  'source',
+  'base_plane',
+  'traces',
+  'boundary',
+  'weights',
+  'solve',
+  'metrics',
+  'param_total',
+  'refine',
+];
 const results = [];
 for (const mesh of meshes) {
   const native = run('native', mesh);
   const wasm = run('wasm', mesh);
   results.push({ mesh, native, wasm });
-  process.stdout.write(`${mesh}: native param ${native.stages_ms.param_total.toFixed(0)} ms, wasm ${wasm.stages_ms.param_total.toFixed(0)} ms\n`);
+  process.stdout.write(
+    `${mesh}: native param ${native.stages_ms.param_total.toFixed(0)} ms, wasm ${wasm.stages_ms.param_total.toFixed(0)} ms\n`,
+  );
 }
 
 const name = (m) => m.replace(/^.*\//, '');
@@ -69,32 +90,58 @@ for (const { mesh, native, wasm } of results) {
 // The issue's targets, checked against the numbers above (and the CGAL run's JSON lines).
 const big = results.find((r) => r.mesh === 'heightfield:1000');
 const cgalRows = existsSync(join(root, 'build/bench/cgal.jsonl'))
-  ? readFileSync(join(root, 'build/bench/cgal.jsonl'), 'utf8').trim().split('\n').filter(Boolean).map((l) => JSON.parse(l))
+  ? readFileSync(join(root, 'build/bench/cgal.jsonl'), 'utf8')
+      .trim()
+      .split('\n')
+      .filter(Boolean)
+      .map((l) => JSON.parse(l))
   : [];
 const targets = [];
-const check = (what, value, goal, ok) => targets.push(`| ${what} | ${value} | ${goal} | ${ok ? 'met' : '**missed**'} |`);
+const check = (what, value, goal, ok) =>
+  targets.push(`| ${what} | ${value} | ${goal} | ${ok ? 'met' : '**missed**'} |`);
 if (big) {
   const n = big.native.stages_ms;
   const rate = big.native.faces_crossed / n.traces / 1000;
   check('trace throughput, 1M height field, native', `${rate.toFixed(1)} M faces/s`, '≥ 30 M faces/s', rate >= 30);
   check('all-boundary traces, 1M height field, native', `${f(n.traces)} ms`, '< 100 ms', n.traces < 100);
-  check('measured-boundary parameterization, 1M height field, native (param_total)', `${f(n.param_total)} ms, bijective: ${big.native.bijective}`,
-    '< 3000 ms, bijective', n.param_total < 3000 && big.native.bijective);
-  check('peak WASM memory, 1M parameterization', `${f(big.wasm.peak_memory_mb, 0)} MB`, '≤ 1536 MB', big.wasm.peak_memory_mb <= 1536);
+  check(
+    'measured-boundary parameterization, 1M height field, native (param_total)',
+    `${f(n.param_total)} ms, bijective: ${big.native.bijective}`,
+    '< 3000 ms, bijective',
+    n.param_total < 3000 && big.native.bijective,
+  );
+  check(
+    'peak WASM memory, 1M parameterization',
+    `${f(big.wasm.peak_memory_mb, 0)} MB`,
+    '≤ 1536 MB',
+    big.wasm.peak_memory_mb <= 1536,
+  );
 }
 const patch = results.find((r) => r.mesh === 'heightfield:317');
 if (patch) {
   const n = patch.native;
-  check('free-boundary refinement, 100k height field, native (refine)', `${f(n.stages_ms.refine)} ms, ${n.free_iterations} iterations, bijective: ${n.free_bijective}`,
-    '< 3000 ms, bijective', n.stages_ms.refine < 3000 && n.free_bijective);
+  check(
+    'free-boundary refinement, 100k height field, native (refine)',
+    `${f(n.stages_ms.refine)} ms, ${n.free_iterations} iterations, bijective: ${n.free_bijective}`,
+    '< 3000 ms, bijective',
+    n.stages_ms.refine < 3000 && n.free_bijective,
+  );
 }
 let worst = { ratio: 0 };
 for (const { mesh, native, wasm } of results)
   for (const s of stages)
     if (native.stages_ms[s] > 10 && wasm.stages_ms[s] / native.stages_ms[s] > worst.ratio)
       worst = { ratio: wasm.stages_ms[s] / native.stages_ms[s], where: `${s} on ${name(mesh)}` };
-if (worst.where) check('WASM / native, worst stage over 10 ms', `${worst.ratio.toFixed(2)} (${worst.where})`, '≤ 1.5', worst.ratio <= 1.5);
-const cgalBig = cgalRows.filter((r) => r.vertices >= 5000 && r.cgal_circle_mean_value?.ms && r.ours_circle_mean_value?.timings_ms);
+if (worst.where)
+  check(
+    'WASM / native, worst stage over 10 ms',
+    `${worst.ratio.toFixed(2)} (${worst.where})`,
+    '≤ 1.5',
+    worst.ratio <= 1.5,
+  );
+const cgalBig = cgalRows.filter(
+  (r) => r.vertices >= 5000 && r.cgal_circle_mean_value?.ms && r.ours_circle_mean_value?.timings_ms,
+);
 if (cgalBig.length) {
   let least = { speedup: Infinity };
   let l2 = 0;
@@ -103,9 +150,18 @@ if (cgalBig.length) {
     if (speedup < least.speedup) least = { speedup, mesh: r.mesh };
     l2 = Math.max(l2, r.l2_relative_difference_cgal_vs_ours_circle_mean_value ?? Infinity);
   }
-  check(`CGAL circle + mean value ÷ ours, least over the ${cgalBig.length} meshes of ≥ 5k vertices`,
-    `${least.speedup.toFixed(1)}× (${least.mesh})`, '≥ 3×', least.speedup >= 3);
-  check('L2 stretch, CGAL vs ours (circle + mean value), largest relative difference', l2.toExponential(1), '≤ 1e-6', l2 <= 1e-6);
+  check(
+    `CGAL circle + mean value ÷ ours, least over the ${cgalBig.length} meshes of ≥ 5k vertices`,
+    `${least.speedup.toFixed(1)}× (${least.mesh})`,
+    '≥ 3×',
+    least.speedup >= 3,
+  );
+  check(
+    'L2 stretch, CGAL vs ours (circle + mean value), largest relative difference',
+    l2.toExponential(1),
+    '≤ 1e-6',
+    l2 <= 1e-6,
+  );
 }
 if (targets.length) {
   text += `\n## Targets\n\n| target | measured | goal | |\n|---|---|---|---|\n${targets.join('\n')}\n`;
@@ -165,13 +221,26 @@ const timeMs = (fn) => {
 };
 const loadRows = [];
 for (const target of ['native', 'wasm']) {
-  const [cmd, args] = target === 'native'
-    ? [join(root, 'build/native/bench_load'), []]
-    : [process.execPath, ['--no-experimental-fetch', join(root, 'build/wasm/bench_load.js')]];
-  const out = execFileSync(cmd, [...args, target, String(loadSide), String(repeats), loadDir], { encoding: 'utf8', maxBuffer: 1 << 26 });
+  const [cmd, args] =
+    target === 'native'
+      ? [join(root, 'build/native/bench_load'), []]
+      : [process.execPath, ['--no-experimental-fetch', join(root, 'build/wasm/bench_load.js')]];
+  const out = execFileSync(cmd, [...args, target, String(loadSide), String(repeats), loadDir], {
+    encoding: 'utf8',
+    maxBuffer: 1 << 26,
+  });
   for (const line of out.split('\n').filter((l) => l.startsWith('| ') && !l.startsWith('| target'))) {
     const [, , format, vertices, mb, loadMs, loadRate, parseMs, parseRate] = line.split('|').map((c) => c.trim());
-    loadRows.push({ target, format, vertices: Number(vertices), mb: Number(mb), loadMs: Number(loadMs), loadRate, parseMs, parseRate });
+    loadRows.push({
+      target,
+      format,
+      vertices: Number(vertices),
+      mb: Number(mb),
+      loadMs: Number(loadMs),
+      loadRate,
+      parseMs,
+      parseRate,
+    });
   }
 }
 const { createStraightest } = await import(pathToFileURL(join(root, 'wasm/index.js')).href);
@@ -186,7 +255,14 @@ for (const format of ['obj', 'off']) {
   }
   const native = loadRows.find((row) => row.target === 'native' && row.format === format);
   const loadMs = median(ms);
-  loadRows.push({ ...native, target: 'npm (Node)', loadMs, loadRate: (native.mb / loadMs * 1e3).toFixed(0), parseMs: '–', parseRate: '–' });
+  loadRows.push({
+    ...native,
+    target: 'npm (Node)',
+    loadMs,
+    loadRate: ((native.mb / loadMs) * 1e3).toFixed(0),
+    parseMs: '–',
+    parseRate: '–',
+  });
   wcMs[format] = median(Array.from({ length: repeats }, () => timeMs(() => execFileSync('wc', ['-w', path]))));
 }
 rmSync(loadDir, { recursive: true, force: true });
@@ -207,14 +283,20 @@ ${loadRows.map((r) => `| ${r.target} | ${r.format} | ${r.vertices} | ${r.mb} | $
 
 | target | measured | goal | |
 |---|---|---|---|
-${['obj', 'off'].map((format) => {
-  const ratio = loadNative(format) / wcMs[format];
-  return `| native ${format} load ÷ \`wc -w\` | ${ratio.toFixed(2)} | ≤ 2 | ${ratio <= 2 ? 'met' : '**missed**'} |`;
-}).join('\n')}
-${['wasm', 'npm (Node)'].flatMap((target) => ['obj', 'off'].map((format) => {
-  const ratio = loadRows.find((r) => r.target === target && r.format === format).loadMs / loadNative(format);
-  return `| ${target} ${format} load ÷ native | ${ratio.toFixed(2)} | ≤ 1.5 | ${ratio <= 1.5 ? 'met' : '**missed**'} |`;
-})).join('\n')}
+${['obj', 'off']
+  .map((format) => {
+    const ratio = loadNative(format) / wcMs[format];
+    return `| native ${format} load ÷ \`wc -w\` | ${ratio.toFixed(2)} | ≤ 2 | ${ratio <= 2 ? 'met' : '**missed**'} |`;
+  })
+  .join('\n')}
+${['wasm', 'npm (Node)']
+  .flatMap((target) =>
+    ['obj', 'off'].map((format) => {
+      const ratio = loadRows.find((r) => r.target === target && r.format === format).loadMs / loadNative(format);
+      return `| ${target} ${format} load ÷ native | ${ratio.toFixed(2)} | ≤ 1.5 | ${ratio <= 1.5 ? 'met' : '**missed**'} |`;
+    }),
+  )
+  .join('\n')}
 `;
 
 const cgalFile = join(root, 'build/bench/cgal.md');

@@ -6,7 +6,13 @@
 export function splitSections(markdown) {
   const parts = markdown.split(/\n(?=## )/);
   const head = parts[0].startsWith('## ') ? '' : parts.shift();
-  return { head, sections: parts.map((text) => ({ title: text.slice(3, text.indexOf('\n') < 0 ? undefined : text.indexOf('\n')).trim(), text })) };
+  return {
+    head,
+    sections: parts.map((text) => ({
+      title: text.slice(3, text.indexOf('\n') < 0 ? undefined : text.indexOf('\n')).trim(),
+      text,
+    })),
+  };
 }
 
 /**

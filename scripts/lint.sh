@@ -2,11 +2,13 @@
 # npm run lint: the repository's habits, each a check that passes or fails —
 #   format — C++ formatted as .clang-format says (clang-format --dry-run --Werror): core/, wasm/*.cpp,
 #            tests/core/, tests/fuzz/*.cpp|hpp, bench/
+#   prettier — JavaScript, TypeScript declarations, CSS and HTML formatted as .prettierrc.json says
+#            (prettier --check): wasm/, web/, scripts/, tests/, bench/ (.prettierignore lists what is not)
 #   eslint — JavaScript: wasm/, web/, scripts/, tests/js/, tests/e2e/ (eslint.config.js)
 #   types  — the package's TypeScript declarations against a consumer's code, strict (tests/types)
 # Prints one line per check and "N passed, M failed" last (scripts/test.sh reads it); exits non-zero if
-# any check fails. `lint.sh --fix` reformats the C++ files in place instead of checking them (and
-# reports how many files it changed); the other checks still run (eslint is not asked to fix).
+# any check fails. `lint.sh --fix` reformats the C++ and JavaScript files in place instead of checking
+# them (and reports what it changed); the other checks still run (eslint is not asked to fix).
 source "$(dirname "$0")/common.sh"
 
 fix=false
@@ -16,7 +18,11 @@ if [ "${1:-}" = --fix ]; then fix=true; elif [ $# -gt 0 ]; then
 fi
 
 # eslint and typescript come from npm (package.json); install them when this runs on its own.
-if [ ! -x node_modules/.bin/eslint ] || [ ! -x node_modules/.bin/tsc ]; then ensure_node_modules; fi
+if [ ! -x node_modules/.bin/eslint ] || [ ! -x node_modules/.bin/tsc ] || [ ! -x node_modules/.bin/prettier ]; then
+  ensure_node_modules
+fi
+JS_GLOBS=('wasm/**/*.{js,ts}' 'web/**/*.{js,css,html}' 'scripts/**/*.mjs' 'tests/**/*.{mjs,js,ts}' 'bench/**/*.mjs'
+  eslint.config.js)
 
 cpp_files() {
   {
@@ -59,6 +65,16 @@ format_check() {
   return 1
 }
 
+prettier_check() {
+  if $fix; then
+    node_modules/.bin/prettier --write --log-level warn "${JS_GLOBS[@]}" && echo "prettier: files written"
+    return
+  fi
+  node_modules/.bin/prettier --check --log-level warn "${JS_GLOBS[@]}" && return 0
+  echo "prettier: the files above differ from .prettierrc.json (scripts/lint.sh --fix)"
+  return 1
+}
+
 eslint_check() {
   node_modules/.bin/eslint --max-warnings 0 wasm web scripts tests/js tests/e2e eslint.config.js
 }
@@ -68,6 +84,7 @@ types_check() {
 }
 
 check format format_check
+check prettier prettier_check
 check eslint eslint_check
 check types types_check
 echo "$passed passed, $failed failed"

@@ -57,12 +57,17 @@ export function measureManifolds(files = cgalMeshFiles()) {
   return files.map(measure).filter(Boolean);
 }
 
-const fmt = (x) => (x === null || x === undefined || !Number.isFinite(x) ? '∞' : x < 100 ? x.toFixed(3) : x.toPrecision(3));
+const fmt = (x) =>
+  x === null || x === undefined || !Number.isFinite(x) ? '∞' : x < 100 ? x.toFixed(3) : x.toPrecision(3);
 
 function stretch(p) {
   if (p.error) return { cell: `error: ${p.error}`, ok: false };
   if (!p.bijective) {
-    const why = [['flipped', p.flipped], ['degenerate', p.degenerate], ['overlaps', p.overlaps]]
+    const why = [
+      ['flipped', p.flipped],
+      ['degenerate', p.degenerate],
+      ['overlaps', p.overlaps],
+    ]
       .filter(([, n]) => n > 0)
       .map(([what, n]) => `${n} ${what}`);
     return { cell: `∞ (${why.join(', ')})`, ok: false };

@@ -29,7 +29,10 @@ function reachable(deps, from) {
   const stack = [...(deps.get(from) ?? [])];
   while (stack.length) {
     const m = stack.pop();
-    if (!seen.has(m)) { seen.add(m); stack.push(...(deps.get(m) ?? [])); }
+    if (!seen.has(m)) {
+      seen.add(m);
+      stack.push(...(deps.get(m) ?? []));
+    }
   }
   return seen;
 }

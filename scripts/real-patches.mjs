@@ -16,13 +16,18 @@ function cell(r) {
   if (!r) return 'n/a';
   if (r.error) return `error: ${r.error}`;
   if (r.bijective) return fmtL2(r.l2);
-  const why = [['flipped', r.flipped], ['degenerate', r.degenerate], ['overlaps', r.overlaps]]
+  const why = [
+    ['flipped', r.flipped],
+    ['degenerate', r.degenerate],
+    ['overlaps', r.overlaps],
+  ]
     .filter(([, n]) => n > 0)
     .map(([what, n]) => `${n} ${what}`);
   return `∞ (${why.join(', ')})`;
 }
 
-const freeRun = (r) => (!r || r.error || !r.init ? '–' : `${r.init}, ${r.iterations}${r.untangled ? ', untangled' : ''}`);
+const freeRun = (r) =>
+  !r || r.error || !r.init ? '–' : `${r.init}, ${r.iterations}${r.untangled ? ', untangled' : ''}`;
 
 const fmtL2 = (x) => (!Number.isFinite(x) ? '∞' : x < 100 ? x.toFixed(3) : x.toPrecision(3));
 
@@ -156,13 +161,17 @@ export function realPatchesSection(patches) {
     const ratios = bijSomewhere.filter((p) => p.free?.bijective).map((p) => l2Of(p.free) / bestFixed(p));
     const failing = patches
       .filter((p) => !p.free?.bijective)
-      .map((p) => `${p.patch}: ${cell(p.free)}${p.free?.untangled ? ' left by untangling' : ''}, ${p.free?.iterations ?? 0} SLIM iterations`)
+      .map(
+        (p) =>
+          `${p.patch}: ${cell(p.free)}${p.free?.untangled ? ' left by untangling' : ''}, ${p.free?.iterations ?? 0} SLIM iterations`,
+      )
       .join('; ');
     targets += `
 ### The free boundary's targets on the real patches
 
 - bijective on every patch (0 flipped, 0 degenerate, 0 overlaps): ${yes(freeBij === n)} (${freeBij} of ${n}${
-      failing ? `; not bijective: ${failing}` : ''})${
+      failing ? `; not bijective: ${failing}` : ''
+    })${
       n - bijSomewhere.length > 0
         ? `; bijective on ${count((p) => !Number.isFinite(bestFixed(p)) && p.free?.bijective)} of the ${
             n - bijSomewhere.length

@@ -57,17 +57,22 @@ for (const model of models) {
   const m = results.measured;
   const f = results.free;
   const change = c.stretch.l2 && m.stretch.l2 ? (100 * (m.stretch.l2 - c.stretch.l2)) / c.stretch.l2 : NaN;
-  rows.push(`| ${model.name} | ${info.vertices} | ${fmt(c.stretch.l2)} | ${fmt(m.stretch.l2)} | ${change.toFixed(1)}% | ` +
-    `${fmt(c.stretch.linf, 2)} | ${fmt(m.stretch.linf, 2)} | ${fmt(f.stretch.l2)} | ${fmt(f.stretch.linf, 2)} | ` +
-    `${f.init}, ${f.iterations} | ${m.fallbacks} | ${model.paper.circle} → ${model.paper.measured} |`);
+  rows.push(
+    `| ${model.name} | ${info.vertices} | ${fmt(c.stretch.l2)} | ${fmt(m.stretch.l2)} | ${change.toFixed(1)}% | ` +
+      `${fmt(c.stretch.linf, 2)} | ${fmt(m.stretch.linf, 2)} | ${fmt(f.stretch.l2)} | ${fmt(f.stretch.linf, 2)} | ` +
+      `${f.init}, ${f.iterations} | ${m.fallbacks} | ${model.paper.circle} → ${model.paper.measured} |`,
+  );
   for (const weights of ['shape-preserving', 'mean-value', 'cotan', 'uniform']) {
     const cells = ['circle', 'measured', 'square', 'free'].map((b) => {
-      const r = weights === 'shape-preserving' ? results[b] : run(['param', model.mesh, '--boundary', b, '--weights', weights]);
+      const r =
+        weights === 'shape-preserving' ? results[b] : run(['param', model.mesh, '--boundary', b, '--weights', weights]);
       return `${fmt(r.stretch.l2)} / ${fmt(r.stretch.linf, 2)}${r.flipped ? ` (${r.flipped} flipped)` : ''}`;
     });
     detail.push(`| ${model.name} | ${weights} | ${cells.join(' | ')} |`);
   }
-  process.stdout.write(`${model.name}: circle ${fmt(c.stretch.l2)} → measured ${fmt(m.stretch.l2)}, free ${fmt(f.stretch.l2)}\n`);
+  process.stdout.write(
+    `${model.name}: circle ${fmt(c.stretch.l2)} → measured ${fmt(m.stretch.l2)}, free ${fmt(f.stretch.l2)}\n`,
+  );
 }
 
 // CGAL's sample disks, and their measured L2 before the measured boundary's repair (ears
@@ -90,7 +95,16 @@ const cgalDisks = [
 ];
 // The plane-like disks (height fields over a plane, and the cylinder) whose measured map must stay at
 // least as good as before the repair.
-const planeLike = new Set(['plane', 'cylinder', 'patch-01', 'patch-13', 'patch-20', 'patch-21', 'patch-23', 'patch-30']);
+const planeLike = new Set([
+  'plane',
+  'cylinder',
+  'patch-01',
+  'patch-13',
+  'patch-20',
+  'patch-21',
+  'patch-23',
+  'patch-30',
+]);
 const before = new Map(cgalDisks);
 const diskFiles = cgalDisks.map(([name]) => cgalMesh(name)).filter(Boolean);
 const disks = diskFiles.length ? runRealPatches(diskFiles) : [];
@@ -104,7 +118,9 @@ const diskRows = disks.map((d) => {
   );
 });
 // "At least as good": not above the recorded value beyond its 4 printed digits.
-const notWorse = disks.filter((d) => planeLike.has(d.patch)).filter((d) => l2(d.measured) <= before.get(d.patch) + 5e-5);
+const notWorse = disks
+  .filter((d) => planeLike.has(d.patch))
+  .filter((d) => l2(d.measured) <= before.get(d.patch) + 5e-5);
 const nef = disks.find((d) => d.patch === 'nefertiti');
 const patches = measurePatches();
 

@@ -47,9 +47,23 @@ export interface MeshInfo {
 
 /** Error categories: see core/include/straightest/error.hpp (also listed by `st.errorCategories`). */
 export type ErrorCategory =
-  | 'io' | 'unsupported_format' | 'parse' | 'empty' | 'too_large' | 'non_finite' | 'index_out_of_range'
-  | 'invalid_face' | 'duplicate_face' | 'degenerate' | 'non_manifold_edge' | 'non_manifold_vertex' | 'non_orientable'
-  | 'topology' | 'invalid_argument' | 'cancelled' | 'internal';
+  | 'io'
+  | 'unsupported_format'
+  | 'parse'
+  | 'empty'
+  | 'too_large'
+  | 'non_finite'
+  | 'index_out_of_range'
+  | 'invalid_face'
+  | 'duplicate_face'
+  | 'degenerate'
+  | 'non_manifold_edge'
+  | 'non_manifold_vertex'
+  | 'non_orientable'
+  | 'topology'
+  | 'invalid_argument'
+  | 'cancelled'
+  | 'internal';
 
 /**
  * The error every call of the package throws for bad input, a failed computation, a cancelled one
@@ -63,16 +77,14 @@ export class StraightestError extends Error {
 
 /** A point on the surface as results give it: {vertex}, {face, bary: [a, b, c]} or {halfedge, t}. */
 export type SurfacePointObject =
-  | { vertex: number }
-  | { face: number; bary: [number, number, number] }
-  | { halfedge: number; t: number };
+  { vertex: number } | { face: number; bary: [number, number, number] } | { halfedge: number; t: number };
 
 /** A point on the surface as arguments take it: a vertex index or any SurfacePointObject. */
 export type SurfacePoint = number | SurfacePointObject;
 
 /** How a path ended: 'reached' is the only success (see README.md for each status). */
 export type TraceStatus =
-  | 'reached' | 'hit_boundary' | 'other_component' | 'loop' | 'step_limit' | 'no_exit' | 'degenerate_plane';
+  'reached' | 'hit_boundary' | 'other_component' | 'loop' | 'step_limit' | 'no_exit' | 'degenerate_plane';
 
 /** The plane every cutting plane at a source contains the normal of. */
 export interface BasePlane {
@@ -176,8 +188,22 @@ export interface StraightestPathsOptions {
   onProgress?: ProgressCallback;
 }
 
-export type { ShootStatus, ShootGeodesicOptions, GeodesicShot, ExactShortestPathsOptions, ExactGeodesicStats, ExactShortestPaths } from './geodesics.js';
-import type { ShootStatus, ShootGeodesicOptions, GeodesicShot, ExactShortestPathsOptions, ExactGeodesicStats, ExactShortestPaths } from './geodesics.js';
+export type {
+  ShootStatus,
+  ShootGeodesicOptions,
+  GeodesicShot,
+  ExactShortestPathsOptions,
+  ExactGeodesicStats,
+  ExactShortestPaths,
+} from './geodesics.js';
+import type {
+  ShootStatus,
+  ShootGeodesicOptions,
+  GeodesicShot,
+  ExactShortestPathsOptions,
+  ExactGeodesicStats,
+  ExactShortestPaths,
+} from './geodesics.js';
 export type { AtlasOptions, Atlas, SharedAtlas } from './atlas.js';
 import type { AtlasOptions, Atlas, SharedAtlas } from './atlas.js';
 
@@ -188,8 +214,19 @@ import type { AtlasOptions, Atlas, SharedAtlas } from './atlas.js';
  * Other names may come with new versions.
  */
 export type ProgressStage =
-  | 'source' | 'trace' | 'weights' | 'solve' | 'refine' | 'metrics' | 'compare' | 'shoot' | 'distances'
-  | 'segment' | 'flatten' | 'pack' | 'measure'
+  | 'source'
+  | 'trace'
+  | 'weights'
+  | 'solve'
+  | 'refine'
+  | 'metrics'
+  | 'compare'
+  | 'shoot'
+  | 'distances'
+  | 'segment'
+  | 'flatten'
+  | 'pack'
+  | 'measure'
   | (string & {});
 
 /**
@@ -353,8 +390,15 @@ export interface Parameterization {
   virtualVertices: number;
   /** Milliseconds per stage; every stage is listed (0 when it did not run). */
   timings: {
-    cut: number; source: number; trace: number; boundary: number; weights: number; solve: number; refine: number;
-    metrics: number; total: number;
+    cut: number;
+    source: number;
+    trace: number;
+    boundary: number;
+    weights: number;
+    solve: number;
+    refine: number;
+    metrics: number;
+    total: number;
   };
 }
 

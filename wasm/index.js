@@ -14,7 +14,8 @@ const disposeSymbol = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
 /** The result, or its {error, category} thrown as a StraightestError (hint(category) may add a sentence). */
 function unwrap(result, hint = undefined) {
-  if (result.error !== undefined) throw new StraightestError(result.error + (hint?.(result.category) ?? ''), result.category);
+  if (result.error !== undefined)
+    throw new StraightestError(result.error + (hint?.(result.category) ?? ''), result.category);
   return result;
 }
 
@@ -26,8 +27,10 @@ const isArrayLike = (a) => a !== null && typeof a === 'object' && typeof a.lengt
  * typed array of numbers as it is, anything else converted here (a BigInt, a Symbol or a throwing
  * getter fails in JavaScript, not inside the module's C++ frames).
  */
-const numberArray = (a) => (ArrayBuffer.isView(a) && !(a instanceof DataView)
-  && !(a instanceof BigInt64Array) && !(a instanceof BigUint64Array) ? a : Float64Array.from(a));
+const numberArray = (a) =>
+  ArrayBuffer.isView(a) && !(a instanceof DataView) && !(a instanceof BigInt64Array) && !(a instanceof BigUint64Array)
+    ? a
+    : Float64Array.from(a);
 
 /**
  * A call's options object as given (undefined: {}), or StraightestError 'invalid_argument' for anything
@@ -37,12 +40,17 @@ const numberArray = (a) => (ArrayBuffer.isView(a) && !(a instanceof DataView)
 function checkedOptions(options, known, call) {
   if (options === undefined) return {};
   if (options === null || typeof options !== 'object' || Array.isArray(options)) {
-    throw new StraightestError(`${call} takes an object of options, got ${Array.isArray(options) ? 'an array' : String(options)}`,
-      'invalid_argument');
+    throw new StraightestError(
+      `${call} takes an object of options, got ${Array.isArray(options) ? 'an array' : String(options)}`,
+      'invalid_argument',
+    );
   }
   for (const name of Object.keys(options)) {
     if (!known.includes(name)) {
-      throw new StraightestError(`${call}: unknown option '${name}' (it takes ${known.join(', ')})`, 'invalid_argument');
+      throw new StraightestError(
+        `${call}: unknown option '${name}' (it takes ${known.join(', ')})`,
+        'invalid_argument',
+      );
     }
   }
   return options;
@@ -54,7 +62,17 @@ const SHOT = ['source', 'direction', 'angle', 'toward', 'length', 'points', 'onP
 const PARAMETERIZE = ['source', 'boundary', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
 const POLYGONS = ['source', 'kinds', 'onProgress'];
 const COMPARE = ['source', 'boundaries', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
-const ATLAS = ['maxStretch', 'maxCharts', 'resolution', 'width', 'height', 'padding', 'texelsPerUnit', 'rotate', 'onProgress'];
+const ATLAS = [
+  'maxStretch',
+  'maxCharts',
+  'resolution',
+  'width',
+  'height',
+  'padding',
+  'texelsPerUnit',
+  'rotate',
+  'onProgress',
+];
 const CREATE = ['threads', 'warmUp', 'wasmUrl', 'locateFile', 'wasmBinary'];
 
 /** The warmUp option, or a TypeError (checked before a module is started for it). */
@@ -81,7 +99,8 @@ function toBytes(data) {
  */
 function withProgress(onProgress, call, hint = undefined) {
   if (onProgress === undefined || onProgress === null) return unwrap(call(null), hint);
-  if (typeof onProgress !== 'function') throw new TypeError('onProgress must be a function (stage, fraction) => boolean | void');
+  if (typeof onProgress !== 'function')
+    throw new TypeError('onProgress must be a function (stage, fraction) => boolean | void');
   let thrown = null;
   const result = call((stage, fraction) => {
     if (thrown) return false;
@@ -96,9 +115,16 @@ function withProgress(onProgress, call, hint = undefined) {
   return unwrap(result, hint);
 }
 
-const finalizer = typeof FinalizationRegistry === 'function'
-  ? new FinalizationRegistry((handle) => { try { handle.delete(); } catch { /* already gone */ } })
-  : null;
+const finalizer =
+  typeof FinalizationRegistry === 'function'
+    ? new FinalizationRegistry((handle) => {
+        try {
+          handle.delete();
+        } catch {
+          /* already gone */
+        }
+      })
+    : null;
 
 // Only the library makes meshes and modules: their constructors take this token.
 const internal = Symbol('straightest internal');
@@ -112,7 +138,8 @@ export class Mesh {
   #handle;
 
   constructor(token, handle) {
-    if (token !== internal) throw new TypeError('Mesh has no public constructor: use st.loadMesh, st.meshFromArrays or st.sample');
+    if (token !== internal)
+      throw new TypeError('Mesh has no public constructor: use st.loadMesh, st.meshFromArrays or st.sample');
     this.#handle = handle;
     finalizer?.register(this, handle, this);
   }
@@ -125,39 +152,59 @@ export class Mesh {
     if (category !== 'topology' || !this.#handle) return '';
     const { faces, components } = this.#handle.info();
     if (faces < 2 || components <= faces / 2) return '';
-    return ` (${components} components for ${faces} triangles: the triangles share no vertices, as in a non-indexed `
-      + "geometry such as STLLoader's; weld coincident vertices first, e.g. meshFromBufferGeometry(st, geometry, "
-      + "{ weld: true }) from 'straightest/three')";
+    return (
+      ` (${components} components for ${faces} triangles: the triangles share no vertices, as in a non-indexed ` +
+      "geometry such as STLLoader's; weld coincident vertices first, e.g. meshFromBufferGeometry(st, geometry, " +
+      "{ weld: true }) from 'straightest/three')"
+    );
   };
 
   #live() {
-    if (!this.#handle) throw new StraightestError('this mesh has been deleted (delete() or the end of its `using` scope)', 'invalid_argument');
+    if (!this.#handle)
+      throw new StraightestError(
+        'this mesh has been deleted (delete() or the end of its `using` scope)',
+        'invalid_argument',
+      );
     return this.#handle;
   }
 
   /** { vertices, faces, edges, boundaryLoops, eulerCharacteristic, components, degenerateFaces, ... } */
-  info() { return this.#live().info(); }
+  info() {
+    return this.#live().info();
+  }
 
   /** Vertex positions, 3 per vertex, in the file's order (a copy). */
-  positions() { return this.#live().positionsView().slice(); }
+  positions() {
+    return this.#live().positionsView().slice();
+  }
 
   /** Triangle vertex indices, 3 per face (a copy; faces may have been reoriented for consistency). */
-  indices() { return this.#live().indicesView().slice(); }
+  indices() {
+    return this.#live().indicesView().slice();
+  }
 
   /** Every boundary loop's vertices in order (the surface on the left), longest first. */
-  boundaryLoops() { return this.#live().boundaryLoops(); }
+  boundaryLoops() {
+    return this.#live().boundaryLoops();
+  }
 
   /** Area-weighted unit vertex normals, 3 floats per vertex (zero for unreferenced vertices). */
-  vertexNormals() { return unwrap(this.#live().vertexNormals(), this.#hint).normals; }
+  vertexNormals() {
+    return unwrap(this.#live().vertexNormals(), this.#hint).normals;
+  }
 
   /**
    * The default source: the interior vertex farthest from the boundary ("center of the mesh"); 'topology'
    * when every vertex lies on the boundary (there an 'auto' source is the middle of the largest face).
    */
-  defaultSource() { return unwrap(this.#live().defaultSource(), this.#hint).vertex; }
+  defaultSource() {
+    return unwrap(this.#live().defaultSource(), this.#hint).vertex;
+  }
 
   /** The base plane at a source: { source, origin, normal, fallback, note }. */
-  basePlane(source = 'auto') { return unwrap(this.#live().basePlane(source), this.#hint); }
+  basePlane(source = 'auto') {
+    return unwrap(this.#live().basePlane(source), this.#hint);
+  }
 
   /**
    * Straightest paths from one source to many targets (shared setup). targets: 'boundary' (every
@@ -168,9 +215,18 @@ export class Mesh {
    * path, `backward` says which way it leaves, otherArcLengths/otherPoints/otherOffsets the other arc.
    */
   straightestPaths(options) {
-    const { source = 'auto', targets = 'boundary', points = true, onProgress } = checkedOptions(options, PATHS, 'straightestPaths');
+    const {
+      source = 'auto',
+      targets = 'boundary',
+      points = true,
+      onProgress,
+    } = checkedOptions(options, PATHS, 'straightestPaths');
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.straightestPaths(source, targets, !!points, progress), this.#hint);
+    return withProgress(
+      onProgress,
+      (progress) => handle.straightestPaths(source, targets, !!points, progress),
+      this.#hint,
+    );
   }
 
   /**
@@ -189,10 +245,21 @@ export class Mesh {
    * x, y, z), length, facesCrossed, end, status and, with `toward`, missDistance.
    */
   shootGeodesic(options) {
-    const { source = 'auto', direction, angle, toward, length, points = true, onProgress } = checkedOptions(options, SHOT, 'shootGeodesic');
+    const {
+      source = 'auto',
+      direction,
+      angle,
+      toward,
+      length,
+      points = true,
+      onProgress,
+    } = checkedOptions(options, SHOT, 'shootGeodesic');
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.shootGeodesic(source, { direction, angle, toward, length },
-      !!points, progress), this.#hint);
+    return withProgress(
+      onProgress,
+      (progress) => handle.shootGeodesic(source, { direction, angle, toward, length }, !!points, progress),
+      this.#hint,
+    );
   }
 
   /**
@@ -201,9 +268,18 @@ export class Mesh {
    * polylines packed like straightestPaths' (path i is points offsets[i]..offsets[i+1], 3 floats each).
    */
   exactShortestPaths(options) {
-    const { source = 'auto', targets = 'boundary', points = true, onProgress } = checkedOptions(options, PATHS, 'exactShortestPaths');
+    const {
+      source = 'auto',
+      targets = 'boundary',
+      points = true,
+      onProgress,
+    } = checkedOptions(options, PATHS, 'exactShortestPaths');
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.exactShortestPaths(source, targets, !!points, progress), this.#hint);
+    return withProgress(
+      onProgress,
+      (progress) => handle.exactShortestPaths(source, targets, !!points, progress),
+      this.#hint,
+    );
   }
 
   /**
@@ -218,12 +294,28 @@ export class Mesh {
    */
   parameterize(options) {
     const {
-      source = 'auto', boundary = 'measured', weights = 'shape-preserving', solver = 'multigrid',
-      maxIterations, timeBudgetMs, onProgress,
+      source = 'auto',
+      boundary = 'measured',
+      weights = 'shape-preserving',
+      solver = 'multigrid',
+      maxIterations,
+      timeBudgetMs,
+      onProgress,
     } = checkedOptions(options, PARAMETERIZE, 'parameterize');
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.parameterize(source, String(boundary), String(weights),
-      String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
+    return withProgress(
+      onProgress,
+      (progress) =>
+        handle.parameterize(
+          source,
+          String(boundary),
+          String(weights),
+          String(solver),
+          { maxIterations, timeBudgetMs },
+          progress,
+        ),
+      this.#hint,
+    );
   }
 
   /**
@@ -235,7 +327,8 @@ export class Mesh {
   boundaryPolygons(options) {
     const { source = 'auto', kinds, onProgress } = checkedOptions(options, POLYGONS, 'boundaryPolygons');
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.boundaryPolygons(source, kinds, progress), this.#hint).polygons;
+    return withProgress(onProgress, (progress) => handle.boundaryPolygons(source, kinds, progress), this.#hint)
+      .polygons;
   }
 
   /**
@@ -246,11 +339,28 @@ export class Mesh {
    */
   compareParameterizations(options) {
     const {
-      source = 'auto', boundaries, weights, solver = 'multigrid', maxIterations, timeBudgetMs, onProgress,
+      source = 'auto',
+      boundaries,
+      weights,
+      solver = 'multigrid',
+      maxIterations,
+      timeBudgetMs,
+      onProgress,
     } = checkedOptions(options, COMPARE, 'compareParameterizations');
     const handle = this.#live();
-    return withProgress(onProgress, (progress) => handle.compareParameterizations(source, boundaries, weights,
-      String(solver), { maxIterations, timeBudgetMs }, progress), this.#hint);
+    return withProgress(
+      onProgress,
+      (progress) =>
+        handle.compareParameterizations(
+          source,
+          boundaries,
+          weights,
+          String(solver),
+          { maxIterations, timeBudgetMs },
+          progress,
+        ),
+      this.#hint,
+    );
   }
 
   /**
@@ -268,15 +378,21 @@ export class Mesh {
   }
 
   /** The live Embind handle, for Straightest.atlas (the token keeps it from the public API). */
-  [internal]() { return this.#live(); }
+  [internal]() {
+    return this.#live();
+  }
 
   /**
    * The mesh as OBJ text (input vertex order); with uv also `vt` lines: 2 numbers per vertex (a vt per
    * vertex), or 2 per face corner (a parameterization's cornerUv: a vt per distinct uv, so seams split).
    */
-  toOBJ(uv) { return unwrap(this.#live().toObj(uv === undefined || uv === null ? null : numberArray(uv))).text; }
+  toOBJ(uv) {
+    return unwrap(this.#live().toObj(uv === undefined || uv === null ? null : numberArray(uv))).text;
+  }
 
-  get deleted() { return !this.#handle; }
+  get deleted() {
+    return !this.#handle;
+  }
 
   /** Frees the WASM memory of this mesh. Idempotent. */
   delete() {
@@ -287,7 +403,9 @@ export class Mesh {
   }
 
   /** The same as delete(): `using mesh = st.sample('cap')` frees the mesh at the end of the scope. */
-  [disposeSymbol]() { this.delete(); }
+  [disposeSymbol]() {
+    this.delete();
+  }
 }
 
 /**
@@ -316,53 +434,83 @@ export class Straightest {
    * sample so the engine optimizes the hot code. The threaded module only (with at least 2
    * threads); it never makes a load slower than one step of it, and changes no result. Default true.
    */
-  get warmUp() { return this.#warmUp; }
+  get warmUp() {
+    return this.#warmUp;
+  }
 
-  set warmUp(on) { this.#warmUp = checkedWarmUp(on); }
+  set warmUp(on) {
+    this.#warmUp = checkedWarmUp(on);
+  }
 
   /** The trace statuses, in the core's order: 'reached' is the only success. */
-  get traceStatuses() { return [...this.#names.traceStatuses]; }
+  get traceStatuses() {
+    return [...this.#names.traceStatuses];
+  }
 
   /** shootGeodesic's statuses, in the core's order: 'reached_length' is the only success. */
-  get shootStatuses() { return [...this.#names.shootStatuses]; }
+  get shootStatuses() {
+    return [...this.#names.shootStatuses];
+  }
 
   /** The boundary kinds: ['measured', 'circle', 'square', 'free']. */
-  get boundaryKinds() { return [...this.#names.boundaryKinds]; }
+  get boundaryKinds() {
+    return [...this.#names.boundaryKinds];
+  }
 
   /** The kinds boundaryPolygons gives without a solve: every kind but 'free'. */
-  get polygonBoundaryKinds() { return [...this.#names.polygonBoundaryKinds]; }
+  get polygonBoundaryKinds() {
+    return [...this.#names.polygonBoundaryKinds];
+  }
 
   /** What parameterize's `boundary` takes: the kinds and 'auto'. */
-  get boundaryChoices() { return [...this.#names.boundaryChoices]; }
+  get boundaryChoices() {
+    return [...this.#names.boundaryChoices];
+  }
 
   /** The interior weight kinds: ['shape-preserving', 'mean-value', 'cotan', 'uniform']. */
-  get weightKinds() { return [...this.#names.weightKinds]; }
+  get weightKinds() {
+    return [...this.#names.weightKinds];
+  }
 
   /** The linear solvers: ['multigrid', 'lu', 'bicgstab']. */
-  get solvers() { return [...this.#names.solvers]; }
+  get solvers() {
+    return [...this.#names.solvers];
+  }
 
   /** geodesicDistances' methods: ['heat', 'dijkstra', 'exact']. */
-  get distanceMethods() { return [...this.#names.distanceMethods]; }
+  get distanceMethods() {
+    return [...this.#names.distanceMethods];
+  }
 
   /** loadMesh's formats: ['obj', 'off', 'ply', 'stl', 'auto']. */
-  get meshFormats() { return [...this.#names.meshFormats]; }
+  get meshFormats() {
+    return [...this.#names.meshFormats];
+  }
 
   /** Every StraightestError category. */
-  get errorCategories() { return [...this.#names.errorCategories]; }
+  get errorCategories() {
+    return [...this.#names.errorCategories];
+  }
 
   /** The format a file name asks for: 'obj', 'off', 'ply', 'stl' (by extension, any case) or 'auto'. */
-  formatFromFileName(name) { return this.#module.formatFromFileName(String(name ?? '')); }
+  formatFromFileName(name) {
+    return this.#module.formatFromFileName(String(name ?? ''));
+  }
 
   /** Parses an OBJ, OFF, PLY or STL file (PLY and STL ascii or binary) given as bytes (Uint8Array/ArrayBuffer) or text. */
   loadMesh(data, format = 'auto', limits) {
     const checked = checkedOptions(limits, LIMITS, 'loadMesh');
-    return new Mesh(internal, unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), checked, this.#warmUp)).mesh);
+    return new Mesh(
+      internal,
+      unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), checked, this.#warmUp)).mesh,
+    );
   }
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
   meshFromArrays(positions, indices, limits) {
     // Checked here: a JavaScript error thrown inside the module would unwind its C++ frames unfinished.
-    if (!isArrayLike(positions) || !isArrayLike(indices)) throw new TypeError('meshFromArrays expects positions and indices as arrays (or typed arrays) of numbers');
+    if (!isArrayLike(positions) || !isArrayLike(indices))
+      throw new TypeError('meshFromArrays expects positions and indices as arrays (or typed arrays) of numbers');
     const [xyz, triangles] = [numberArray(positions), numberArray(indices)];
     const checked = checkedOptions(limits, LIMITS, 'meshFromArrays');
     return new Mesh(internal, unwrap(this.#module.meshFromArrays(xyz, triangles, checked, this.#warmUp)).mesh);
@@ -383,16 +531,22 @@ export class Straightest {
   }
 
   /** Names of the built-in sample meshes. */
-  sampleNames() { return this.#module.sampleNames(); }
+  sampleNames() {
+    return this.#module.sampleNames();
+  }
 
   /** A built-in sample mesh ('mountain', 'cap', 'saddle', 'face': disks; 'holes', 'sphere', 'torus'). */
-  sample(name) { return new Mesh(internal, unwrap(this.#module.sample(String(name))).mesh); }
+  sample(name) {
+    return new Mesh(internal, unwrap(this.#module.sample(String(name))).mesh);
+  }
 
   /**
    * How many threads the core runs on: 1 in the single-threaded module, the count asked for (or every
    * core) in the threaded one.
    */
-  get threads() { return this.#module.threadCount(); }
+  get threads() {
+    return this.#module.threadCount();
+  }
 
   /**
    * Changes the thread count for later calls, from 1 to the count the module was loaded with (its Web
@@ -400,17 +554,24 @@ export class Straightest {
    */
   set threads(count) {
     if (!Number.isInteger(count) || count < 1 || count > this.#loadedThreads) {
-      throw new StraightestError(`threads must be a whole number from 1 to ${this.#loadedThreads} (the count this module `
-        + `was loaded with), got ${count}`, 'invalid_argument');
+      throw new StraightestError(
+        `threads must be a whole number from 1 to ${this.#loadedThreads} (the count this module ` +
+          `was loaded with), got ${count}`,
+        'invalid_argument',
+      );
     }
     this.#module.setThreadCount(count);
   }
 
   /** Bytes of WASM memory currently reserved (grows, never shrinks; shared memory may grow on any thread). */
-  get memoryBytes() { return (this.#module.wasmMemory?.buffer ?? this.#module.HEAPU8).byteLength; }
+  get memoryBytes() {
+    return (this.#module.wasmMemory?.buffer ?? this.#module.HEAPU8).byteLength;
+  }
 
   /** Bytes currently allocated inside WASM memory (returns to its baseline when meshes are deleted). */
-  get heapUsedBytes() { return this.#module.heapUsedBytes(); }
+  get heapUsedBytes() {
+    return this.#module.heapUsedBytes();
+  }
 }
 
 /**

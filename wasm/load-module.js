@@ -30,8 +30,10 @@ async function hardwareThreads() {
 function requestedThreads(threads) {
   if (threads === undefined || threads === null) return 0;
   if (!Number.isInteger(threads) || threads < 0) {
-    throw new StraightestError(`threads must be a whole number (0: every core, 1: one thread), got ${threads}`,
-      'invalid_argument');
+    throw new StraightestError(
+      `threads must be a whole number (0: every core, 1: one thread), got ${threads}`,
+      'invalid_argument',
+    );
   }
   return Math.min(threads, MAX_THREADS);
 }
@@ -72,27 +74,37 @@ async function startThreaded(options, threads) {
     const { default: createThreadedModule } = await import(/* @vite-ignore */ /* webpackIgnore: true */ loader);
     // The pool of threads.cpp has threads − 1 workers (the calling thread is the last): every Web Worker
     // they run on is started here, since one started while the calling thread waits would never run.
-    module = await leavingNodeGlobalsAlone(() => createThreadedModule({ wasmBinary, printErr: () => {},
-      pthreadPoolSize: threads - 1 }));
+    module = await leavingNodeGlobalsAlone(() =>
+      createThreadedModule({ wasmBinary, printErr: () => {}, pthreadPoolSize: threads - 1 }),
+    );
   } catch {
     return null;
   }
   // Idle workers must not keep a Node process alive (in a browser they end with their page or worker).
-  if (isNode()) for (const worker of [...module.PThread.unusedWorkers, ...module.PThread.runningWorkers]) worker.unref();
+  if (isNode())
+    for (const worker of [...module.PThread.unusedWorkers, ...module.PThread.runningWorkers]) worker.unref();
   module.setThreadCount(threads);
   return module;
 }
 
 async function startSingleThreaded(options) {
-  const url = options.wasmBinary ? null : wasmLocation(options, new URL('./dist/straightest-core.wasm', import.meta.url));
-  const wasmBinary = options.wasmBinary ? checkWasm(new Uint8Array(options.wasmBinary), 'wasmBinary') : await readWasm(url);
+  const url = options.wasmBinary
+    ? null
+    : wasmLocation(options, new URL('./dist/straightest-core.wasm', import.meta.url));
+  const wasmBinary = options.wasmBinary
+    ? checkWasm(new Uint8Array(options.wasmBinary), 'wasmBinary')
+    : await readWasm(url);
   try {
     const module = await createSingleThreadedModule({ wasmBinary, printErr: () => {} });
     module.setThreadCount(1);
     return module;
   } catch (error) {
     const from = url ? `from ${url}` : 'given as wasmBinary';
-    throw new StraightestError(`the WebAssembly module ${from} could not be started: ${error?.message ?? error}`, 'io', { cause: error });
+    throw new StraightestError(
+      `the WebAssembly module ${from} could not be started: ${error?.message ?? error}`,
+      'io',
+      { cause: error },
+    );
   }
 }
 
@@ -104,7 +116,7 @@ async function startSingleThreaded(options) {
  */
 export async function startModule(options) {
   const requested = requestedThreads(options.threads);
-  const threads = Math.min(requested || await hardwareThreads(), MAX_THREADS);
+  const threads = Math.min(requested || (await hardwareThreads()), MAX_THREADS);
   const threaded = threads > 1 && threadsUsable() && !options.wasmBinary && !options.wasmUrl;
-  return (threaded && await startThreaded(options, threads)) || startSingleThreaded(options);
+  return (threaded && (await startThreaded(options, threads))) || startSingleThreaded(options);
 }

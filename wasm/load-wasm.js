@@ -39,8 +39,8 @@ export function checkWasm(bytes, where) {
   if (MAGIC.every((b, i) => bytes[i] === b)) return bytes;
   const html = bytes[0] === 0x3c; // '<': a server's HTML page (a 404 page, or a dev server's index.html)
   const hint = html
-    ? ': an HTML page, so the server has no module at that URL (with a dev server that pre-bundles dependencies, '
-      + "exclude 'straightest' from pre-bundling, pass wasmUrl, or use 'straightest/inline')"
+    ? ': an HTML page, so the server has no module at that URL (with a dev server that pre-bundles dependencies, ' +
+      "exclude 'straightest' from pre-bundling, pass wasmUrl, or use 'straightest/inline')"
     : '';
   throw new StraightestError(`${where} is not a WebAssembly module: got ${describeBytes(bytes)}${hint}`, 'io');
 }
@@ -56,15 +56,19 @@ export async function readWasm(url) {
       const response = await fetch(url);
       const body = new Uint8Array(await response.arrayBuffer());
       if (!response.ok) {
-        throw new StraightestError(`could not load the WebAssembly module from ${url}: HTTP ${response.status} `
-          + `${response.statusText}, body: ${describeBytes(body)}`, 'io');
+        throw new StraightestError(
+          `could not load the WebAssembly module from ${url}: HTTP ${response.status} ` +
+            `${response.statusText}, body: ${describeBytes(body)}`,
+          'io',
+        );
       }
       bytes = body;
     }
   } catch (error) {
     if (error instanceof StraightestError) throw error;
-    throw new StraightestError(`could not load the WebAssembly module from ${url}: ${error?.message ?? error}`, 'io',
-      { cause: error });
+    throw new StraightestError(`could not load the WebAssembly module from ${url}: ${error?.message ?? error}`, 'io', {
+      cause: error,
+    });
   }
   return checkWasm(bytes, url);
 }

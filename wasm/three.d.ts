@@ -14,7 +14,11 @@ export interface MeshFromBufferGeometryOptions {
 }
 
 /** Builds a straightest Mesh from a three.js BufferGeometry's positions and index (indexed or not). */
-export function meshFromBufferGeometry(st: Straightest, geometry: BufferGeometry, options?: MeshFromBufferGeometryOptions): Mesh;
+export function meshFromBufferGeometry(
+  st: Straightest,
+  geometry: BufferGeometry,
+  options?: MeshFromBufferGeometryOptions,
+): Mesh;
 /** A BufferGeometry (Float32 positions, the core's area-weighted vertex normals, Uint32 index) of a straightest Mesh. */
 export function toBufferGeometry(mesh: Mesh): BufferGeometry;
 /** Sets geometry's 'uv' attribute from straightest's uv (2 floats per vertex); returns the geometry. */
@@ -38,8 +42,14 @@ export interface UnwrapOptions extends AtlasOptions, MeshFromBufferGeometryOptio
  * every other attribute, morph target, group and the triangles' order, and has the atlas uv on `channel`;
  * userData.vertexOrigin maps each of its vertices to the geometry's.
  */
-export function unwrap(st: Straightest, geometry: BufferGeometry, options?: UnwrapOptions): { geometry: BufferGeometry; atlas: Atlas };
+export function unwrap(
+  st: Straightest,
+  geometry: BufferGeometry,
+  options?: UnwrapOptions,
+): { geometry: BufferGeometry; atlas: Atlas };
 /** One atlas shared by several geometries (Straightest.atlas): a new geometry per given one, as unwrap's, in order. */
 export function packAtlas(
-  st: Straightest, geometries: BufferGeometry[], options?: UnwrapOptions,
+  st: Straightest,
+  geometries: BufferGeometry[],
+  options?: UnwrapOptions,
 ): { geometries: BufferGeometry[]; atlas: SharedAtlas };

@@ -37,11 +37,13 @@ function meshArrays(geometry, weld, call) {
 
 function weldTolerance(positions, weld) {
   if (typeof weld === 'number') {
-    if (!(weld >= 0) || !Number.isFinite(weld)) throw new RangeError(`meshFromBufferGeometry: weld must be true or a distance >= 0, got ${weld}`);
+    if (!(weld >= 0) || !Number.isFinite(weld))
+      throw new RangeError(`meshFromBufferGeometry: weld must be true or a distance >= 0, got ${weld}`);
     return weld;
   }
   if (weld !== true) throw new TypeError('meshFromBufferGeometry: weld must be true, false or a distance');
-  const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
+  const min = [Infinity, Infinity, Infinity],
+    max = [-Infinity, -Infinity, -Infinity];
   for (let i = 0; i < positions.length; ++i) {
     min[i % 3] = Math.min(min[i % 3], positions[i]);
     max[i % 3] = Math.max(max[i % 3], positions[i]);
@@ -55,9 +57,11 @@ function weldTolerance(positions, weld) {
  * the first vertex of a cell stands for all of it. Unreferenced vertices are dropped.
  */
 function weldVertices(positions, indices, tolerance) {
-  const key = tolerance > 0
-    ? (i) => `${Math.round(positions[3 * i] / tolerance)},${Math.round(positions[3 * i + 1] / tolerance)},${Math.round(positions[3 * i + 2] / tolerance)}`
-    : (i) => `${positions[3 * i]},${positions[3 * i + 1]},${positions[3 * i + 2]}`;
+  const key =
+    tolerance > 0
+      ? (i) =>
+          `${Math.round(positions[3 * i] / tolerance)},${Math.round(positions[3 * i + 1] / tolerance)},${Math.round(positions[3 * i + 2] / tolerance)}`
+      : (i) => `${positions[3 * i]},${positions[3 * i + 1]},${positions[3 * i + 2]}`;
   const cellVertex = new Map();
   const kept = [];
   const welded = new Uint32Array(indices.length);
@@ -109,16 +113,19 @@ export function toSeamSplitGeometry(mesh, parameterization) {
   const indices = mesh.indices();
   const corner = parameterization.cornerUv;
   if (!corner || corner.length !== 2 * indices.length) {
-    throw new RangeError(`toSeamSplitGeometry: cornerUv has ${corner?.length} numbers for ${indices.length / 3} ` +
-      `faces (expected ${2 * indices.length})`);
+    throw new RangeError(
+      `toSeamSplitGeometry: cornerUv has ${corner?.length} numbers for ${indices.length / 3} ` +
+        `faces (expected ${2 * indices.length})`,
+    );
   }
-  const copies = new Map();  // mesh vertex → [[u, v, geometry vertex], ...]: a seam vertex has a few
+  const copies = new Map(); // mesh vertex → [[u, v, geometry vertex], ...]: a seam vertex has a few
   const origin = [];
   const uvs = [];
   const index = new Uint32Array(indices.length);
   for (let c = 0; c < indices.length; ++c) {
     const v = indices[c];
-    let u = corner[2 * c], w = corner[2 * c + 1];
+    let u = corner[2 * c],
+      w = corner[2 * c + 1];
     if (!Number.isFinite(u) || !Number.isFinite(w)) u = w = 0;
     let list = copies.get(v);
     if (!list) copies.set(v, (list = []));
@@ -185,7 +192,9 @@ export function packAtlas(st, geometries, options = {}) {
     for (const a of arrays) meshes.push(st.meshFromArrays(a.positions, a.indices));
     const atlas = st.atlas(meshes, atlasOptions);
     return {
-      geometries: geometries.map((g, i) => splitGeometry(g, arrays[i], meshes[i].indices(), atlas.meshes[i].cornerUv, channel)),
+      geometries: geometries.map((g, i) =>
+        splitGeometry(g, arrays[i], meshes[i].indices(), atlas.meshes[i].cornerUv, channel),
+      ),
       atlas,
     };
   } finally {
@@ -194,7 +203,8 @@ export function packAtlas(st, geometries, options = {}) {
 }
 
 function checkedChannel(channel, call) {
-  if (!UV_CHANNELS.includes(channel)) throw new TypeError(`${call}: channel must be 'uv' or 'uv1', got ${String(channel)}`);
+  if (!UV_CHANNELS.includes(channel))
+    throw new TypeError(`${call}: channel must be 'uv' or 'uv1', got ${String(channel)}`);
 }
 
 /**
@@ -211,7 +221,8 @@ function splitGeometry(geometry, { indices, corners }, meshIndices, cornerUv, ch
   const copies = new Map(); // geometry vertex → [[u, v, new vertex], ...]: a seam vertex has a few
   for (let c = 0; c < corners.length; ++c) {
     const k = meshCorner(indices, meshIndices, c);
-    const u = cornerUv[2 * k], v = cornerUv[2 * k + 1];
+    const u = cornerUv[2 * k],
+      v = cornerUv[2 * k + 1];
     let list = copies.get(corners[c]);
     if (!list) copies.set(corners[c], (list = []));
     let found = list.find((e) => e[0] === u && e[1] === v);
@@ -257,7 +268,9 @@ function pickVertices(attribute, vertices) {
     vertices.forEach((v, i) => out.array.set(attribute.array.subarray(v * size, v * size + size), i * size));
   } else {
     // getX…getW read through the interleaving (and denormalize; setX…setW normalize back).
-    vertices.forEach((v, i) => { for (let k = 0; k < size; ++k) out[SET[k]](i, attribute[GET[k]](v)); });
+    vertices.forEach((v, i) => {
+      for (let k = 0; k < size; ++k) out[SET[k]](i, attribute[GET[k]](v));
+    });
   }
   return out;
 }

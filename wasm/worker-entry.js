@@ -27,11 +27,35 @@ const meshes = new Map();
 const CREATORS = new Set(['loadMesh', 'meshFromArrays', 'sample']);
 const MODULE_METHODS = new Set(['formatFromFileName']);
 // The Straightest getters the client offers synchronously, read once at 'init'.
-const NAME_LISTS = ['traceStatuses', 'boundaryKinds', 'polygonBoundaryKinds', 'boundaryChoices', 'weightKinds', 'solvers',
-  'distanceMethods', 'meshFormats', 'errorCategories'];
-const METHODS = new Set(['info', 'positions', 'indices', 'boundaryLoops', 'vertexNormals', 'defaultSource', 'basePlane',
-  'straightestPaths', 'geodesicDistances', 'parameterize', 'boundaryPolygons', 'compareParameterizations', 'toOBJ',
-  'shootGeodesic', 'exactShortestPaths', 'atlas']);
+const NAME_LISTS = [
+  'traceStatuses',
+  'boundaryKinds',
+  'polygonBoundaryKinds',
+  'boundaryChoices',
+  'weightKinds',
+  'solvers',
+  'distanceMethods',
+  'meshFormats',
+  'errorCategories',
+];
+const METHODS = new Set([
+  'info',
+  'positions',
+  'indices',
+  'boundaryLoops',
+  'vertexNormals',
+  'defaultSource',
+  'basePlane',
+  'straightestPaths',
+  'geodesicDistances',
+  'parameterize',
+  'boundaryPolygons',
+  'compareParameterizations',
+  'toOBJ',
+  'shootGeodesic',
+  'exactShortestPaths',
+  'atlas',
+]);
 
 /**
  * Every ArrayBuffer under `value` that a typed array owns whole (results are copies out of WASM memory;
@@ -40,8 +64,7 @@ const METHODS = new Set(['info', 'positions', 'indices', 'boundaryLoops', 'verte
 function buffers(value, found = new Set()) {
   if (ArrayBuffer.isView(value)) {
     if (value.byteOffset === 0 && value.byteLength === value.buffer.byteLength) found.add(value.buffer);
-  }
-  else if (Array.isArray(value)) for (const v of value) buffers(v, found);
+  } else if (Array.isArray(value)) for (const v of value) buffers(v, found);
   else if (value && typeof value === 'object') for (const v of Object.values(value)) buffers(v, found);
   return found;
 }
@@ -55,7 +78,9 @@ function meshOf(number) {
 /** The request's arguments; with progress, its last one (the options) gets an onProgress that posts. */
 function argumentsOf({ id, args, progress }) {
   if (!progress) return args;
-  const onProgress = (stage, fraction) => { postMessage({ id, type: 'progress', stage, fraction }); };
+  const onProgress = (stage, fraction) => {
+    postMessage({ id, type: 'progress', stage, fraction });
+  };
   return [...args.slice(0, -1), { ...args.at(-1), onProgress }];
 }
 
@@ -64,8 +89,11 @@ async function handle(request) {
   switch (type) {
     case 'init':
       straightest = await createStraightest(request.options ?? {});
-      return Object.fromEntries([['sampleNames', straightest.sampleNames()], ['threads', straightest.threads],
-        ...NAME_LISTS.map((name) => [name, straightest[name]])]);
+      return Object.fromEntries([
+        ['sampleNames', straightest.sampleNames()],
+        ['threads', straightest.threads],
+        ...NAME_LISTS.map((name) => [name, straightest[name]]),
+      ]);
     case 'module':
       if (!MODULE_METHODS.has(request.method)) throw new TypeError(`unknown module method '${request.method}'`);
       return straightest[request.method](...request.args);
@@ -99,7 +127,12 @@ addEventListener('message', ({ data }) => {
       const value = await handle(data);
       postMessage({ id: data.id, type: 'result', value }, [...buffers(value)]);
     } catch (error) {
-      postMessage({ id: data.id, type: 'error', message: String(error?.message ?? error), category: error?.category ?? 'internal' });
+      postMessage({
+        id: data.id,
+        type: 'error',
+        message: String(error?.message ?? error),
+        category: error?.category ?? 'internal',
+      });
     }
   });
 });

@@ -1,8 +1,29 @@
 // Types of straightest/worker: the package's API in a module worker, as promises.
 import type {
-  Atlas, AtlasOptions, SharedAtlas, BasePlane, BoundaryPolygon, BoundaryPolygonsOptions, BuildLimits, CompareOptions, Comparison, CreateOptions, MeshFormat,
-  MeshInfo, Parameterization, ParameterizeOptions, SampleName, StraightestPaths, StraightestPathsOptions, SurfacePoint,
-  DistanceMethod, Straightest, ShootGeodesicOptions, GeodesicShot, ExactShortestPathsOptions, ExactShortestPaths,
+  Atlas,
+  AtlasOptions,
+  SharedAtlas,
+  BasePlane,
+  BoundaryPolygon,
+  BoundaryPolygonsOptions,
+  BuildLimits,
+  CompareOptions,
+  Comparison,
+  CreateOptions,
+  MeshFormat,
+  MeshInfo,
+  Parameterization,
+  ParameterizeOptions,
+  SampleName,
+  StraightestPaths,
+  StraightestPathsOptions,
+  SurfacePoint,
+  DistanceMethod,
+  Straightest,
+  ShootGeodesicOptions,
+  GeodesicShot,
+  ExactShortestPathsOptions,
+  ExactShortestPaths,
 } from './index.js';
 
 /** What the long calls take in the worker: Mesh's options plus an AbortSignal that cancels the work. */
@@ -76,7 +97,11 @@ export interface StraightestWorker {
   /** The format a file name asks for: 'obj', 'off', 'ply', 'stl' (by extension, any case) or 'auto'. */
   formatFromFileName(name: string): Promise<MeshFormat>;
   /** Parses an OBJ, OFF, PLY or STL file (bytes or text) in the worker. */
-  loadMesh(data: Uint8Array | ArrayBuffer | ArrayBufferView | string, format?: MeshFormat, limits?: BuildLimits): Promise<WorkerMesh>;
+  loadMesh(
+    data: Uint8Array | ArrayBuffer | ArrayBufferView | string,
+    format?: MeshFormat,
+    limits?: BuildLimits,
+  ): Promise<WorkerMesh>;
   /** A mesh from flat arrays, built in the worker. */
   meshFromArrays(positions: ArrayLike<number>, indices: ArrayLike<number>, limits?: BuildLimits): Promise<WorkerMesh>;
   /** A built-in sample mesh. */

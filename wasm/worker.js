@@ -21,28 +21,64 @@ class WorkerMesh {
   }
 
   /** Whether delete() has been called. */
-  get deleted() { return this.#client.isDeleted(this.#id); }
+  get deleted() {
+    return this.#client.isDeleted(this.#id);
+  }
 
-  info() { return this.#client.call(this.#id, 'info', []); }
-  positions() { return this.#client.call(this.#id, 'positions', []); }
-  indices() { return this.#client.call(this.#id, 'indices', []); }
-  boundaryLoops() { return this.#client.call(this.#id, 'boundaryLoops', []); }
-  vertexNormals() { return this.#client.call(this.#id, 'vertexNormals', []); }
-  defaultSource() { return this.#client.call(this.#id, 'defaultSource', []); }
-  basePlane(source = 'auto') { return this.#client.call(this.#id, 'basePlane', [source]); }
-  geodesicDistances(source = 'auto', method = 'heat') { return this.#client.call(this.#id, 'geodesicDistances', [source, method]); }
-  toOBJ(uv) { return this.#client.call(this.#id, 'toOBJ', [uv]); }
+  info() {
+    return this.#client.call(this.#id, 'info', []);
+  }
+  positions() {
+    return this.#client.call(this.#id, 'positions', []);
+  }
+  indices() {
+    return this.#client.call(this.#id, 'indices', []);
+  }
+  boundaryLoops() {
+    return this.#client.call(this.#id, 'boundaryLoops', []);
+  }
+  vertexNormals() {
+    return this.#client.call(this.#id, 'vertexNormals', []);
+  }
+  defaultSource() {
+    return this.#client.call(this.#id, 'defaultSource', []);
+  }
+  basePlane(source = 'auto') {
+    return this.#client.call(this.#id, 'basePlane', [source]);
+  }
+  geodesicDistances(source = 'auto', method = 'heat') {
+    return this.#client.call(this.#id, 'geodesicDistances', [source, method]);
+  }
+  toOBJ(uv) {
+    return this.#client.call(this.#id, 'toOBJ', [uv]);
+  }
   // The long calls: options as Mesh's, plus `signal` (an AbortSignal that cancels).
-  straightestPaths(options = {}) { return this.#client.callWithOptions(this.#id, 'straightestPaths', options); }
-  parameterize(options = {}) { return this.#client.callWithOptions(this.#id, 'parameterize', options); }
-  boundaryPolygons(options = {}) { return this.#client.callWithOptions(this.#id, 'boundaryPolygons', options); }
-  compareParameterizations(options = {}) { return this.#client.callWithOptions(this.#id, 'compareParameterizations', options); }
-  shootGeodesic(options = {}) { return this.#client.callWithOptions(this.#id, 'shootGeodesic', options); }
-  exactShortestPaths(options = {}) { return this.#client.callWithOptions(this.#id, 'exactShortestPaths', options); }
-  atlas(options = {}) { return this.#client.callWithOptions(this.#id, 'atlas', options); }
+  straightestPaths(options = {}) {
+    return this.#client.callWithOptions(this.#id, 'straightestPaths', options);
+  }
+  parameterize(options = {}) {
+    return this.#client.callWithOptions(this.#id, 'parameterize', options);
+  }
+  boundaryPolygons(options = {}) {
+    return this.#client.callWithOptions(this.#id, 'boundaryPolygons', options);
+  }
+  compareParameterizations(options = {}) {
+    return this.#client.callWithOptions(this.#id, 'compareParameterizations', options);
+  }
+  shootGeodesic(options = {}) {
+    return this.#client.callWithOptions(this.#id, 'shootGeodesic', options);
+  }
+  exactShortestPaths(options = {}) {
+    return this.#client.callWithOptions(this.#id, 'exactShortestPaths', options);
+  }
+  atlas(options = {}) {
+    return this.#client.callWithOptions(this.#id, 'atlas', options);
+  }
 
   /** Frees the mesh in the worker; later calls reject with StraightestError 'invalid_argument'. */
-  delete() { return this.#client.deleteMesh(this.#id); }
+  delete() {
+    return this.#client.deleteMesh(this.#id);
+  }
 }
 
 function defaultWorker() {
@@ -68,7 +104,10 @@ export async function createStraightestWorker(options = {}) {
     worker.addEventListener('message', ({ data }) => {
       const entry = instance.pending.get(data.id);
       if (!entry) return;
-      if (data.type === 'progress') { entry.onProgress?.(data.stage, data.fraction); return; }
+      if (data.type === 'progress') {
+        entry.onProgress?.(data.stage, data.fraction);
+        return;
+      }
       instance.pending.delete(data.id);
       if (data.type === 'error') entry.reject(new StraightestError(data.message, data.category));
       else entry.resolve(data.value);
@@ -78,7 +117,9 @@ export async function createStraightestWorker(options = {}) {
       fail(instance, `the straightest worker failed: ${event.message || 'script error'}`, 'internal');
     });
     current = instance;
-    instance.ready = send(instance, { type: 'init', options: loadOptions }).then((value) => { names = value; });
+    instance.ready = send(instance, { type: 'init', options: loadOptions }).then((value) => {
+      names = value;
+    });
     return instance;
   }
 
@@ -109,7 +150,9 @@ export async function createStraightestWorker(options = {}) {
     if (!instance.meshes.has(id)) {
       const { method, args } = recipes.get(id);
       const built = send(instance, { type: 'create', mesh: id, method, args });
-      built.catch(() => { if (instance.meshes.get(id) === built) instance.meshes.delete(id); });
+      built.catch(() => {
+        if (instance.meshes.get(id) === built) instance.meshes.delete(id);
+      });
       instance.meshes.set(id, built);
     }
     return instance.meshes.get(id);
@@ -133,7 +176,9 @@ export async function createStraightestWorker(options = {}) {
   async function run(ids, message, onProgress, signal) {
     if (signal?.aborted) throw new StraightestError('cancelled', 'cancelled');
     const instance = current;
-    const onAbort = () => { if (current === instance) cancel(); };
+    const onAbort = () => {
+      if (current === instance) cancel();
+    };
     signal?.addEventListener('abort', onAbort, { once: true });
     try {
       await instance.ready;
@@ -146,7 +191,8 @@ export async function createStraightestWorker(options = {}) {
 
   /** A long call: `options` without onProgress and signal go to the worker as the call's last argument. */
   function runWithOptions(ids, message, { onProgress, signal, ...options }) {
-    if (onProgress !== undefined && typeof onProgress !== 'function') throw new TypeError('onProgress must be a function');
+    if (onProgress !== undefined && typeof onProgress !== 'function')
+      throw new TypeError('onProgress must be a function');
     return run(ids, { ...message, args: [options] }, onProgress ?? null, signal ?? null);
   }
 
@@ -171,16 +217,36 @@ export async function createStraightestWorker(options = {}) {
     /** Names of the built-in sample meshes. */
     sampleNames: () => list('sampleNames'),
     /** The name lists of Straightest (read once when the worker started). */
-    get threads() { return names.threads; },
-    get traceStatuses() { return list('traceStatuses'); },
-    get boundaryKinds() { return list('boundaryKinds'); },
-    get polygonBoundaryKinds() { return list('polygonBoundaryKinds'); },
-    get boundaryChoices() { return list('boundaryChoices'); },
-    get weightKinds() { return list('weightKinds'); },
-    get solvers() { return list('solvers'); },
-    get distanceMethods() { return list('distanceMethods'); },
-    get meshFormats() { return list('meshFormats'); },
-    get errorCategories() { return list('errorCategories'); },
+    get threads() {
+      return names.threads;
+    },
+    get traceStatuses() {
+      return list('traceStatuses');
+    },
+    get boundaryKinds() {
+      return list('boundaryKinds');
+    },
+    get polygonBoundaryKinds() {
+      return list('polygonBoundaryKinds');
+    },
+    get boundaryChoices() {
+      return list('boundaryChoices');
+    },
+    get weightKinds() {
+      return list('weightKinds');
+    },
+    get solvers() {
+      return list('solvers');
+    },
+    get distanceMethods() {
+      return list('distanceMethods');
+    },
+    get meshFormats() {
+      return list('meshFormats');
+    },
+    get errorCategories() {
+      return list('errorCategories');
+    },
     /** The format a file name asks for: 'obj', 'off', 'ply', 'stl' (by extension, any case) or 'auto'. */
     async formatFromFileName(name) {
       const instance = current;
@@ -200,8 +266,11 @@ export async function createStraightestWorker(options = {}) {
       if (!Array.isArray(meshes) || !meshes.every((m) => meshIds.has(m))) {
         throw new TypeError('atlas expects an array of meshes made by this worker API');
       }
-      return runWithOptions(meshes.map((m) => meshIds.get(m)), { type: 'atlas', meshes: meshes.map((m) => meshIds.get(m)) },
-        options);
+      return runWithOptions(
+        meshes.map((m) => meshIds.get(m)),
+        { type: 'atlas', meshes: meshes.map((m) => meshIds.get(m)) },
+        options,
+      );
     },
     /** Stops the running work: pending calls reject with 'cancelled'; meshes stay usable. */
     cancel,

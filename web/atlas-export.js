@@ -43,8 +43,11 @@ export function createAtlasExport({ session, shown, baseName }) {
 
   function svg() {
     const { reply } = shown();
-    const text = atlasSvg(reply, `${session.label || 'mesh'} — texture atlas, ${reply.charts} charts, ` +
-      `${reply.width} × ${reply.height} texels`);
+    const text = atlasSvg(
+      reply,
+      `${session.label || 'mesh'} — texture atlas, ${reply.charts} charts, ` +
+        `${reply.width} × ${reply.height} texels`,
+    );
     const name = `${baseName()}-layout.svg`;
     download(new Blob([text], { type: 'image/svg+xml' }), name);
     record('svg', name, text.length);

@@ -31,7 +31,9 @@ export const chartCss = (k) => `rgb(${chartColor(k).join(',')})`;
 /** The faces of each chart (chartOfFace inverted): an array of face lists, chart by chart. */
 export function facesByChart(chartOfFace, charts) {
   const lists = Array.from({ length: charts }, () => []);
-  chartOfFace.forEach((chart, face) => { if (chart >= 0 && chart < charts) lists[chart].push(face); });
+  chartOfFace.forEach((chart, face) => {
+    if (chart >= 0 && chart < charts) lists[chart].push(face);
+  });
   return lists;
 }
 
@@ -119,16 +121,20 @@ const num = (x) => (Math.round(x * 100) / 100).toString(); // texels to 1/100: e
  * with its colour and `data-chart` (its id), the title as the file's <title>.
  */
 export function atlasSvg({ cornerUv, chartOfFace, charts, width, height }, title = '') {
-  const escape = (text) => String(text).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' }[c]));
+  const escape = (text) =>
+    String(text).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
   const out = [
     `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}">`,
     `<title>${escape(title)}</title>`,
   ];
   facesByChart(chartOfFace, charts).forEach((faces, k) => {
-    const d = faces.map((f) => {
-      const corner = (c) => `${num(cornerUv[6 * f + 2 * c] * width)} ${num((1 - cornerUv[6 * f + 2 * c + 1]) * height)}`;
-      return `M${corner(0)}L${corner(1)}L${corner(2)}Z`;
-    }).join('');
+    const d = faces
+      .map((f) => {
+        const corner = (c) =>
+          `${num(cornerUv[6 * f + 2 * c] * width)} ${num((1 - cornerUv[6 * f + 2 * c + 1]) * height)}`;
+        return `M${corner(0)}L${corner(1)}L${corner(2)}Z`;
+      })
+      .join('');
     out.push(`<path data-chart="${k}" fill="${chartCss(k)}" d="${d}"/>`);
   });
   out.push('</svg>');

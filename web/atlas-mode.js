@@ -37,11 +37,17 @@ export function readAtlasOptions({ maxStretch, resolution, padding }) {
   const given = (text) => (String(text).trim() ? `“${text}”` : 'empty or not a number');
   const stretch = Number(maxStretch);
   if (!(String(maxStretch).trim() && stretch > 1 && stretch <= 10)) {
-    return { error: `Max stretch must be above 1 and at most 10 (1.02 keeps charts nearly isometric); it is ${given(maxStretch)}.`, field: 'atlas-max-stretch' };
+    return {
+      error: `Max stretch must be above 1 and at most 10 (1.02 keeps charts nearly isometric); it is ${given(maxStretch)}.`,
+      field: 'atlas-max-stretch',
+    };
   }
   const pad = Number(padding);
   if (!(String(padding).trim() && Number.isInteger(pad) && pad >= 0 && pad <= 64)) {
-    return { error: `Padding must be a whole number of texels from 0 to 64; it is ${given(padding)}.`, field: 'atlas-padding' };
+    return {
+      error: `Padding must be a whole number of texels from 0 to 64; it is ${given(padding)}.`,
+      field: 'atlas-padding',
+    };
   }
   return { options: { maxStretch: stretch, resolution: Number(resolution), padding: pad } };
 }
@@ -57,8 +63,12 @@ export function createAtlasMode({ session, view, surface }) {
   // ---------------------------------------------------------------- 3D objects (on ATLAS_LAYER)
 
   const material = new THREE.MeshStandardMaterial({
-    roughness: 0.75, metalness: 0, side: THREE.DoubleSide,
-    polygonOffset: true, polygonOffsetFactor: 1.5, polygonOffsetUnits: 2, // the seams on top
+    roughness: 0.75,
+    metalness: 0,
+    side: THREE.DoubleSide,
+    polygonOffset: true,
+    polygonOffsetFactor: 1.5,
+    polygonOffsetUnits: 2, // the seams on top
   });
   const seamMaterial = new THREE.LineBasicMaterial({ color: SEAM_COLOR });
   const group = new THREE.Group();
@@ -86,11 +96,14 @@ export function createAtlasMode({ session, view, surface }) {
   /** The surface split along the atlas's seams (one vertex per mesh vertex and corner uv), coloured by chart. */
   function atlasGeometry(reply) {
     const geometry = surface.mesh.geometry;
-    const split = toSeamSplitGeometry({
-      positions: () => geometry.getAttribute('position').array,
-      vertexNormals: () => geometry.getAttribute('normal').array,
-      indices: () => geometry.index.array,
-    }, reply);
+    const split = toSeamSplitGeometry(
+      {
+        positions: () => geometry.getAttribute('position').array,
+        vertexNormals: () => geometry.getAttribute('normal').array,
+        indices: () => geometry.index.array,
+      },
+      reply,
+    );
     // A split vertex belongs to one chart (charts never share a uv), so per-vertex colours are per chart.
     const linear = new Float32Array(3 * reply.charts); // each chart's colour in the renderer's linear space
     const color = new THREE.Color();
@@ -130,7 +143,8 @@ export function createAtlasMode({ session, view, surface }) {
   function updateMaterial() {
     const display = $('atlas-display').value;
     let map = null;
-    if (display === 'checker') map = checkerTexture ??= configureTexture(new THREE.CanvasTexture(checkerboardCanvas(1024, CHECKER_CELLS)));
+    if (display === 'checker')
+      map = checkerTexture ??= configureTexture(new THREE.CanvasTexture(checkerboardCanvas(1024, CHECKER_CELLS)));
     if (display === 'image') map = imageTexture;
     material.vertexColors = map === null;
     material.map = map;
@@ -180,11 +194,24 @@ export function createAtlasMode({ session, view, surface }) {
     const dd = $(`atlas-${field}`);
     dd.textContent = text;
     dd.className = className;
-    if (title) dd.title = title; else dd.removeAttribute('title');
+    if (title) dd.title = title;
+    else dd.removeAttribute('title');
   }
 
   function clearStats() {
-    for (const field of ['charts', 'l2', 'linf', 'utilization', 'flipped', 'mirrored', 'overlaps', 'gap', 'seam', 'size', 'time']) {
+    for (const field of [
+      'charts',
+      'l2',
+      'linf',
+      'utilization',
+      'flipped',
+      'mirrored',
+      'overlaps',
+      'gap',
+      'seam',
+      'size',
+      'time',
+    ]) {
       setStat(field, '–');
     }
     $('atlas-side-size').textContent = '';
@@ -194,32 +221,55 @@ export function createAtlasMode({ session, view, surface }) {
   /** The core's metrics, as the page writes numbers (param-format.js); zero is good for the counts. */
   function showStats(reply) {
     const count = (field, n, title) => setStat(field, formatCount(n), n ? 'bad' : 'good', title);
-    setStat('charts', formatCount(reply.charts), '', `${reply.splits} splits, ${reply.merges} merges` +
-      `${reply.nonDiskCharts ? `; ${reply.nonDiskCharts} charts are not disks` : ''}` +
-      `${reply.capped ? '; the chart cap stopped a split (a chart may exceed the max stretch)' : ''}`);
+    setStat(
+      'charts',
+      formatCount(reply.charts),
+      '',
+      `${reply.splits} splits, ${reply.merges} merges` +
+        `${reply.nonDiskCharts ? `; ${reply.nonDiskCharts} charts are not disks` : ''}` +
+        `${reply.capped ? '; the chart cap stopped a split (a chart may exceed the max stretch)' : ''}`,
+    );
     setStat('l2', formatMetric(reply.stretch.l2), 'strong', `L2 stretch ${reply.stretch.l2}`);
     setStat('linf', formatMetric(reply.stretch.linf), '', `L∞ stretch ${reply.stretch.linf}`);
     setStat('utilization', formatPercent(reply.utilization), '', `uv area ÷ atlas area = ${reply.utilization}`);
     count('flipped', reply.flipped, `${reply.degenerate} degenerate faces`);
     count('mirrored', reply.mirrored, 'charts whose uv is wound against their 3D faces');
     count('overlaps', reply.overlaps, 'pairs of charts that overlap (an independent check of the uv)');
-    setStat('gap', formatMetric(reply.minGapTexels), reply.paddingViolations ? 'bad' : '',
-      `${reply.paddingViolations} pairs of charts closer than the padding`);
-    setStat('seam', `${formatCount(reply.seamEdges)} · ${formatMetric(reply.seamLength)}`, '',
-      'mesh edges whose two sides have different uv, and their 3D length');
-    setStat('size', `${reply.width} × ${reply.height} · ${formatMetric(reply.texelsPerUnit)}`, '',
-      'the atlas in texels, and texels per unit of 3D length');
+    setStat(
+      'gap',
+      formatMetric(reply.minGapTexels),
+      reply.paddingViolations ? 'bad' : '',
+      `${reply.paddingViolations} pairs of charts closer than the padding`,
+    );
+    setStat(
+      'seam',
+      `${formatCount(reply.seamEdges)} · ${formatMetric(reply.seamLength)}`,
+      '',
+      'mesh edges whose two sides have different uv, and their 3D length',
+    );
+    setStat(
+      'size',
+      `${reply.width} × ${reply.height} · ${formatMetric(reply.texelsPerUnit)}`,
+      '',
+      'the atlas in texels, and texels per unit of 3D length',
+    );
     const t = reply.timings;
-    setStat('time', `${formatMs(t.charts, '')} / ${formatMs(t.pack, '')} / ${formatMs(t.measure, '')} / ${formatMs(t.total)}`,
-      '', `${formatMs(reply.timeMs)} in the worker, with the transfer`);
+    setStat(
+      'time',
+      `${formatMs(t.charts, '')} / ${formatMs(t.pack, '')} / ${formatMs(t.measure, '')} / ${formatMs(t.total)}`,
+      '',
+      `${formatMs(reply.timeMs)} in the worker, with the transfer`,
+    );
     $('atlas-side-size').textContent = `${reply.width} × ${reply.height}`;
-    $('atlas-caption').textContent = `${formatCount(reply.charts)} charts · ${formatPercent(reply.utilization)} used · ` +
+    $('atlas-caption').textContent =
+      `${formatCount(reply.charts)} charts · ${formatPercent(reply.utilization)} used · ` +
       `L2 ${formatMetric(reply.stretch.l2)} · padding ${shown.options.padding} texels`;
   }
 
   function setButtons() {
     $('atlas-button').disabled = !surface.mesh;
-    for (const id of ['atlas-obj-button', 'atlas-glb-button', 'atlas-png-button', 'atlas-svg-button']) $(id).disabled = !shown;
+    for (const id of ['atlas-obj-button', 'atlas-glb-button', 'atlas-png-button', 'atlas-svg-button'])
+      $(id).disabled = !shown;
   }
 
   // ---------------------------------------------------------------- making the atlas
@@ -228,7 +278,9 @@ export function createAtlasMode({ session, view, surface }) {
   function options() {
     for (const id of ['atlas-max-stretch', 'atlas-padding']) $(id).removeAttribute('aria-invalid');
     const read = readAtlasOptions({
-      maxStretch: $('atlas-max-stretch').value, resolution: $('atlas-resolution').value, padding: $('atlas-padding').value,
+      maxStretch: $('atlas-max-stretch').value,
+      resolution: $('atlas-resolution').value,
+      padding: $('atlas-padding').value,
     });
     if (!read.error) return read.options;
     $(read.field).setAttribute('aria-invalid', 'true');
@@ -267,11 +319,24 @@ export function createAtlasMode({ session, view, surface }) {
     seamObject.renderOrder = 2;
     updateMaterial();
     hooks.atlas = {
-      charts: reply.charts, l2: reply.stretch.l2, linf: reply.stretch.linf, utilization: reply.utilization,
-      width: reply.width, height: reply.height, texelsPerUnit: reply.texelsPerUnit, seamEdges: reply.seamEdges,
-      seamLength: reply.seamLength, flipped: reply.flipped, mirrored: reply.mirrored, overlaps: reply.overlaps,
-      degenerate: reply.degenerate, nonDiskCharts: reply.nonDiskCharts, minGapTexels: reply.minGapTexels,
-      paddingViolations: reply.paddingViolations, capped: reply.capped, options: chosen,
+      charts: reply.charts,
+      l2: reply.stretch.l2,
+      linf: reply.stretch.linf,
+      utilization: reply.utilization,
+      width: reply.width,
+      height: reply.height,
+      texelsPerUnit: reply.texelsPerUnit,
+      seamEdges: reply.seamEdges,
+      seamLength: reply.seamLength,
+      flipped: reply.flipped,
+      mirrored: reply.mirrored,
+      overlaps: reply.overlaps,
+      degenerate: reply.degenerate,
+      nonDiskCharts: reply.nonDiskCharts,
+      minGapTexels: reply.minGapTexels,
+      paddingViolations: reply.paddingViolations,
+      capped: reply.capped,
+      options: chosen,
       colors: Array.from({ length: reply.charts }, (_, k) => chartCss(k)),
     };
     hooks.atlasError = null;
@@ -307,8 +372,10 @@ export function createAtlasMode({ session, view, surface }) {
   function makeIfWanted() {
     if (!wanted || !surface.mesh || shown || running) return;
     if ((session.info?.vertices ?? 0) > LARGE_MESH_VERTICES) {
-      showNote(`Large mesh (${formatCount(session.info.vertices)} vertices): press Make atlas to run it — ` +
-        'the progress shows over the view and Cancel stops it.');
+      showNote(
+        `Large mesh (${formatCount(session.info.vertices)} vertices): press Make atlas to run it — ` +
+          'the progress shows over the view and Cancel stops it.',
+      );
       layoutMessage = 'Press Make atlas.';
       redrawLayout();
       return;
@@ -332,7 +399,9 @@ export function createAtlasMode({ session, view, surface }) {
     side: true,
     enter() {
       wanted = true;
-      view.scene.traverse((object) => { if (object.isLight) object.layers.enable(ATLAS_LAYER); });
+      view.scene.traverse((object) => {
+        if (object.isLight) object.layers.enable(ATLAS_LAYER);
+      });
       view.camera.layers.set(ATLAS_LAYER);
       view.requestRender();
       redrawLayout();
@@ -374,8 +443,12 @@ export function createAtlasMode({ session, view, surface }) {
 
   const baseName = () => `${(session.label || 'mesh').replace(/\.[^.]+$/, '').replace(/[^\w.-]+/g, '_')}-atlas`;
   const exports = createAtlasExport({ session, shown: () => shown, baseName });
-  for (const [id, run, what] of [['atlas-obj-button', exports.obj, 'OBJ'], ['atlas-glb-button', exports.glb, 'GLB'],
-    ['atlas-png-button', exports.png, 'PNG'], ['atlas-svg-button', exports.svg, 'SVG']]) {
+  for (const [id, run, what] of [
+    ['atlas-obj-button', exports.obj, 'OBJ'],
+    ['atlas-glb-button', exports.glb, 'GLB'],
+    ['atlas-png-button', exports.png, 'PNG'],
+    ['atlas-svg-button', exports.svg, 'SVG'],
+  ]) {
     $(id).addEventListener('click', async () => {
       if (!shown) return;
       $('atlas-export-status').textContent = '';

@@ -15,7 +15,9 @@ function remembered() {
 function remember(collapsed) {
   try {
     localStorage.setItem(STORAGE_KEY, JSON.stringify([...collapsed]));
-  } catch { /* storage blocked: not remembered */ }
+  } catch {
+    /* storage blocked: not remembered */
+  }
 }
 
 /** Makes every `.panel` with an id and an h2 in `root` collapsible (the error panel stays open). */
@@ -37,7 +39,8 @@ export function makePanelsCollapsible(root) {
     button.addEventListener('click', () => {
       const value = !panel.classList.contains('collapsed');
       setCollapsed(value);
-      if (value) collapsed.add(panel.id); else collapsed.delete(panel.id);
+      if (value) collapsed.add(panel.id);
+      else collapsed.delete(panel.id);
       remember(collapsed);
     });
   }

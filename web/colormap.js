@@ -42,7 +42,13 @@ export function heatGradient() {
 
 // Per-face L2 stretch, 1 (an isometry: good) … ≥ 2 (bad): green → yellow → red (ColorBrewer RdYlGn,
 // reversed); flipped or degenerate faces (infinite stretch) are magenta.
-const STRETCH_STOPS = [[26, 152, 80], [145, 207, 96], [254, 224, 139], [252, 141, 89], [215, 48, 39]];
+const STRETCH_STOPS = [
+  [26, 152, 80],
+  [145, 207, 96],
+  [254, 224, 139],
+  [252, 141, 89],
+  [215, 48, 39],
+];
 export const STRETCH_INFINITE = [255, 0, 255];
 export const STRETCH_MIN = 1;
 export const STRETCH_MAX = 2;
@@ -76,12 +82,16 @@ export function stretchTable(space = 'srgb') {
   table = new Uint8Array(3 * (STRETCH_STEPS + 1));
   const color = new Color();
   for (let i = 0; i <= STRETCH_STEPS; i++) {
-    const rgb = i < STRETCH_STEPS
-      ? stretchRgb(STRETCH_MIN + (i / (STRETCH_STEPS - 1)) * (STRETCH_MAX - STRETCH_MIN))
-      : STRETCH_INFINITE;
+    const rgb =
+      i < STRETCH_STEPS
+        ? stretchRgb(STRETCH_MIN + (i / (STRETCH_STEPS - 1)) * (STRETCH_MAX - STRETCH_MIN))
+        : STRETCH_INFINITE;
     if (space === 'linear') {
       color.setRGB(rgb[0] / 255, rgb[1] / 255, rgb[2] / 255, SRGBColorSpace); // to the linear working space
-      table.set([color.r, color.g, color.b].map((c) => Math.round(255 * c)), 3 * i);
+      table.set(
+        [color.r, color.g, color.b].map((c) => Math.round(255 * c)),
+        3 * i,
+      );
     } else {
       table.set(rgb, 3 * i);
     }

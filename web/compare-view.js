@@ -12,7 +12,12 @@ import { WEIGHT_LABELS, formatMetric, formatMs } from './param-format.js';
 const $ = (id) => document.getElementById(id);
 
 // The weights column's words, short enough for the side panel (each cell's title has the full name).
-const SHORT_WEIGHTS = { 'shape-preserving': 'shape-pres.', 'mean-value': 'mean val.', cotan: 'cotan', uniform: 'uniform' };
+const SHORT_WEIGHTS = {
+  'shape-preserving': 'shape-pres.',
+  'mean-value': 'mean val.',
+  cotan: 'cotan',
+  uniform: 'uniform',
+};
 
 /**
  * session: session.js; source(): the source option of the runs; current(): the parameterization on
@@ -85,19 +90,27 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         const refine = row.init ? `${start} ${row.iterations}${row.converged ? '' : '+'}` : '–';
         const cells = row.error
           ? [SHORT_WEIGHTS[row.weights], 'failed', '', '', '', formatMs(row.timeMs, '')]
-          : [SHORT_WEIGHTS[row.weights], formatMetric(row.l2), formatMetric(row.linf),
-            `${row.flipped + row.degenerate}/${row.overlaps}`, refine, formatMs(row.timeMs, '')];
+          : [
+              SHORT_WEIGHTS[row.weights],
+              formatMetric(row.l2),
+              formatMetric(row.linf),
+              `${row.flipped + row.degenerate}/${row.overlaps}`,
+              refine,
+              formatMs(row.timeMs, ''),
+            ];
         for (const text of cells) tr.insertCell().textContent = text;
         tr.cells[0].title = WEIGHT_LABELS[row.weights];
         if (!row.error) {
-          tr.cells[3].title = `${row.flipped} flipped, ${row.degenerate} degenerate faces; ${row.overlaps} pairs of ` +
+          tr.cells[3].title =
+            `${row.flipped} flipped, ${row.degenerate} degenerate faces; ${row.overlaps} pairs of ` +
             'boundary edges crossing';
         }
         if (best && row.boundary === best.boundary && row.weights === best.weights) tr.classList.add('best');
         if (row.error) tr.classList.add('failed');
         if (!row.error && row.flipped + row.degenerate + row.overlaps > 0) tr.cells[3].classList.add('bad');
         if (row.init) {
-          tr.cells[4].title = `refined from the ${row.init} map in ${row.iterations} iterations` +
+          tr.cells[4].title =
+            `refined from the ${row.init} map in ${row.iterations} iterations` +
             (row.converged ? '' : ' (stopped by the iteration cap or the time budget)');
         }
       }
@@ -113,8 +126,10 @@ export function createCompareView({ session, source, current, onChoose, onSettle
     const shown = current();
     for (const tr of $('compare-table').tBodies[0].rows) {
       if (!tr.dataset.boundary) continue;
-      tr.classList.toggle('current', !!shown &&
-        tr.dataset.boundary === shown.boundary && tr.dataset.weights === shown.weights);
+      tr.classList.toggle(
+        'current',
+        !!shown && tr.dataset.boundary === shown.boundary && tr.dataset.weights === shown.weights,
+      );
     }
   }
 

@@ -2,7 +2,16 @@
 // their source, the Compare table and the straightest ÷ exact table (data-export.js builds them).
 // The compare and ratio buttons show with their tables; the paths' say so when there are none.
 
-import { compareTable, distancesTable, exactRatioTable, indexBaseOf, pathsJson, pathsTable, tableJson, toCsv } from './data-export.js';
+import {
+  compareTable,
+  distancesTable,
+  exactRatioTable,
+  indexBaseOf,
+  pathsJson,
+  pathsTable,
+  tableJson,
+  toCsv,
+} from './data-export.js';
 import { download } from './image-export.js';
 import { isCancelled } from './requests.js';
 import { hooks } from './test-hooks.js';
@@ -15,7 +24,8 @@ const $ = (id) => document.getElementById(id);
  */
 export function createDataDownloads({ session, paths, source, compareRows, exactRows }) {
   const base = () => indexBaseOf(session.label, !!session.origin?.file);
-  const name = (what, ext) => `${(session.label || 'mesh').replace(/\.[^.]+$/, '').replace(/[^\w.-]+/g, '_')}-${what}.${ext}`;
+  const name = (what, ext) =>
+    `${(session.label || 'mesh').replace(/\.[^.]+$/, '').replace(/[^\w.-]+/g, '_')}-${what}.${ext}`;
 
   function save(text, what, ext) {
     download(new Blob([text], { type: ext === 'csv' ? 'text/csv' : 'application/json' }), name(what, ext));
@@ -55,7 +65,11 @@ export function createDataDownloads({ session, paths, source, compareRows, exact
     try {
       const reply = await session.request('distances', { source: source() });
       const table = distancesTable(reply.distances, base());
-      save(ext === 'csv' ? toCsv(table) : tableJson(table, { mesh: session.label, method: 'heat', indexBase: base() }), 'distances', ext);
+      save(
+        ext === 'csv' ? toCsv(table) : tableJson(table, { mesh: session.label, method: 'heat', indexBase: base() }),
+        'distances',
+        ext,
+      );
     } catch (err) {
       if (!isCancelled(err)) $('data-status').textContent = `Could not compute the distances: ${err.message}`;
     }

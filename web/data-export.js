@@ -29,7 +29,8 @@ export function indexBaseOf(label, isFile) {
 
 function csvCell(value) {
   if (value === null || value === undefined) return '';
-  if (typeof value === 'number') return Number.isFinite(value) ? String(value) : (Number.isNaN(value) ? 'NaN' : String(value));
+  if (typeof value === 'number')
+    return Number.isFinite(value) ? String(value) : Number.isNaN(value) ? 'NaN' : String(value);
   const text = String(value);
   return /[",\n\r]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
 }
@@ -55,8 +56,14 @@ export function pathsTable(reply, base = 0) {
   const columns = ['path', 'target', 'status', 'status_code', 'length', 'faces_crossed', 'point', 'x', 'y', 'z'];
   const rows = [];
   for (let i = 0; i < reply.count; i++) {
-    const head = [i + 1, pointText(reply.targets[i], base), statusWords(reply.statuses[i]), reply.statuses[i],
-      reply.lengths[i], reply.facesCrossed[i]];
+    const head = [
+      i + 1,
+      pointText(reply.targets[i], base),
+      statusWords(reply.statuses[i]),
+      reply.statuses[i],
+      reply.lengths[i],
+      reply.facesCrossed[i],
+    ];
     const [from, to] = [reply.offsets[i] ?? 0, reply.offsets[i + 1] ?? 0];
     if (to <= from) rows.push([...head, '', '', '', '']);
     for (let k = from; k < to; k++) {
@@ -74,9 +81,15 @@ export function pathsJson(reply, base = 0) {
     paths: Array.from({ length: reply.count }, (_, i) => {
       const [from, to] = [reply.offsets[i] ?? 0, reply.offsets[i + 1] ?? 0];
       return {
-        path: i + 1, target: pointText(reply.targets[i], base), status: statusWords(reply.statuses[i]),
-        statusCode: reply.statuses[i], length: reply.lengths[i], facesCrossed: reply.facesCrossed[i],
-        points: Array.from({ length: to - from }, (__, k) => Array.from(reply.points.subarray(3 * (from + k), 3 * (from + k) + 3))),
+        path: i + 1,
+        target: pointText(reply.targets[i], base),
+        status: statusWords(reply.statuses[i]),
+        statusCode: reply.statuses[i],
+        length: reply.lengths[i],
+        facesCrossed: reply.facesCrossed[i],
+        points: Array.from({ length: to - from }, (__, k) =>
+          Array.from(reply.points.subarray(3 * (from + k), 3 * (from + k) + 3)),
+        ),
       };
     }),
   };
@@ -89,13 +102,38 @@ export function distancesTable(distances, base = 0) {
 
 /** The Compare rows (compareParameterizations') as a table. */
 export function compareTable(rows) {
-  const columns = ['boundary', 'weights', 'l2', 'linf', 'flipped', 'degenerate', 'overlaps', 'bijective',
-    'refined_from', 'iterations', 'converged', 'time_ms', 'error'];
+  const columns = [
+    'boundary',
+    'weights',
+    'l2',
+    'linf',
+    'flipped',
+    'degenerate',
+    'overlaps',
+    'bijective',
+    'refined_from',
+    'iterations',
+    'converged',
+    'time_ms',
+    'error',
+  ];
   return {
     columns,
-    rows: rows.map((r) => [r.boundary, r.weights, r.l2, r.linf, r.flipped, r.degenerate, r.overlaps,
-      r.error ? '' : r.flipped + r.degenerate + r.overlaps === 0, r.init ?? '', r.iterations ?? '', r.converged ?? '',
-      r.timeMs, r.error ?? '']),
+    rows: rows.map((r) => [
+      r.boundary,
+      r.weights,
+      r.l2,
+      r.linf,
+      r.flipped,
+      r.degenerate,
+      r.overlaps,
+      r.error ? '' : r.flipped + r.degenerate + r.overlaps === 0,
+      r.init ?? '',
+      r.iterations ?? '',
+      r.converged ?? '',
+      r.timeMs,
+      r.error ?? '',
+    ]),
   };
 }
 
@@ -103,7 +141,15 @@ export function compareTable(rows) {
 export function exactRatioTable(rows, base = 0) {
   return {
     columns: ['index', 'vertex', 'straightest', 'exact', 'ratio', 'status', 'status_code'],
-    rows: rows.map((r) => [r.index + 1, r.vertex + base, r.straightest, r.exact, r.ratio, statusWords(r.status), r.status]),
+    rows: rows.map((r) => [
+      r.index + 1,
+      r.vertex + base,
+      r.straightest,
+      r.exact,
+      r.ratio,
+      statusWords(r.status),
+      r.status,
+    ]),
   };
 }
 

@@ -46,8 +46,15 @@ function drawPlot(svg, rows, { min, max }) {
     svgElement('line', { x1: pad.left, y1: y(low), x2: width - pad.right, y2: y(low) }),
     svgElement('line', { x1: pad.left, y1: pad.top, x2: pad.left, y2: y(low) }),
   );
-  for (const [value, anchor] of [[low, 'low'], [high, 'high']]) {
-    const label = svgElement('text', { x: pad.left - 4, y: y(value) + (anchor === 'low' ? 0 : 8), 'text-anchor': 'end' });
+  for (const [value, anchor] of [
+    [low, 'low'],
+    [high, 'high'],
+  ]) {
+    const label = svgElement('text', {
+      x: pad.left - 4,
+      y: y(value) + (anchor === 'low' ? 0 : 8),
+      'text-anchor': 'end',
+    });
     label.textContent = format(value, 5);
     axis.append(label);
   }
@@ -90,32 +97,42 @@ export function createExactRatio({ session, source }) {
   function showTable() {
     const table = $('exact-ratio-table');
     const head = table.tHead.rows[0];
-    head.replaceChildren(...COLUMNS.map(({ key, label, title }) => {
-      const th = document.createElement('th');
-      th.scope = 'col';
-      th.tabIndex = 0;
-      th.dataset.key = key;
-      th.textContent = label + (sort.key === key ? (sort.descending ? ' ▾' : ' ▴') : '');
-      th.setAttribute('aria-sort', sort.key === key ? (sort.descending ? 'descending' : 'ascending') : 'none');
-      if (title) th.title = title;
-      return th;
-    }));
+    head.replaceChildren(
+      ...COLUMNS.map(({ key, label, title }) => {
+        const th = document.createElement('th');
+        th.scope = 'col';
+        th.tabIndex = 0;
+        th.dataset.key = key;
+        th.textContent = label + (sort.key === key ? (sort.descending ? ' ▾' : ' ▴') : '');
+        th.setAttribute('aria-sort', sort.key === key ? (sort.descending ? 'descending' : 'ascending') : 'none');
+        if (title) th.title = title;
+        return th;
+      }),
+    );
     const order = (value) => (typeof value === 'number' && !Number.isFinite(value) ? Infinity : value);
     const sorted = [...rows].sort((a, b) => {
       const [p, q] = [order(a[sort.key]), order(b[sort.key])];
       const c = typeof p === 'string' ? p.localeCompare(q) : p - q;
       return (sort.descending ? -c : c) || a.index - b.index;
     });
-    table.tBodies[0].replaceChildren(...sorted.map((row) => {
-      const tr = document.createElement('tr');
-      if (row.status !== 'reached') tr.className = 'failed';
-      for (const text of [row.index + 1, row.vertex + getIndexBase(), format(row.straightest), format(row.exact), format(row.ratio, 7),
-        statusWords(row.status)]) {
-        tr.insertCell().textContent = String(text);
-      }
-      tr.cells[5].title = row.status; // the core's code
-      return tr;
-    }));
+    table.tBodies[0].replaceChildren(
+      ...sorted.map((row) => {
+        const tr = document.createElement('tr');
+        if (row.status !== 'reached') tr.className = 'failed';
+        for (const text of [
+          row.index + 1,
+          row.vertex + getIndexBase(),
+          format(row.straightest),
+          format(row.exact),
+          format(row.ratio, 7),
+          statusWords(row.status),
+        ]) {
+          tr.insertCell().textContent = String(text);
+        }
+        tr.cells[5].title = row.status; // the core's code
+        return tr;
+      }),
+    );
   }
 
   function sortBy(key) {
@@ -151,18 +168,27 @@ export function createExactRatio({ session, source }) {
       const reply = await session.request('exactRatio', { source: source() });
       if (request.stale()) return;
       rows = Array.from(reply.targets, (vertex, index) => ({
-        index, vertex, straightest: reply.lengths[index], exact: reply.distances[index],
-        ratio: reply.ratios[index], status: reply.statuses[index],
+        index,
+        vertex,
+        straightest: reply.lengths[index],
+        exact: reply.distances[index],
+        ratio: reply.ratios[index],
+        status: reply.statuses[index],
       }));
       const stats = summarize(Array.from(reply.ratios));
       const failed = rows.filter((row) => row.status !== 'reached').length;
       shownSource = JSON.stringify(reply.source);
-      $('exact-ratio-summary').textContent = `${rows.length} boundary targets · ratio min ${format(stats.min, 7)}, ` +
+      $('exact-ratio-summary').textContent =
+        `${rows.length} boundary targets · ratio min ${format(stats.min, 7)}, ` +
         `median ${format(stats.median, 7)}, max ${format(stats.max, 7)} · ${failed} failed trace${failed === 1 ? '' : 's'}`;
       drawPlot($('exact-ratio-plot'), rows, stats);
       showTable();
       hooks.exactRatio = {
-        count: rows.length, failed, ...stats, ratios: Array.from(reply.ratios), statuses: [...reply.statuses],
+        count: rows.length,
+        failed,
+        ...stats,
+        ratios: Array.from(reply.ratios),
+        statuses: [...reply.statuses],
         source: reply.source,
       };
     } catch (err) {

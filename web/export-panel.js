@@ -29,7 +29,12 @@ export function createExportPanel({ session, view, surface, paths, param }) {
   }
 
   const figure = createFigureMode({
-    session, view, surface, options: param.options, checkerCells: () => param.checkerCells, onChange: () => setButtons(),
+    session,
+    view,
+    surface,
+    options: param.options,
+    checkerCells: () => param.checkerCells,
+    onChange: () => setButtons(),
   });
 
   /** Notes what was saved (the tests read hooks.exports) and says so in the panel. */
@@ -60,7 +65,12 @@ export function createExportPanel({ session, view, surface, paths, param }) {
       await working('3D view');
       const { clientWidth: width, clientHeight: height } = view.canvas;
       const { usable, note } = usableScale(width, height);
-      const canvas = renderToCanvas(view.scene, view.camera, { width, height, scale: usable, background: BACKGROUNDS[theme()] });
+      const canvas = renderToCanvas(view.scene, view.camera, {
+        width,
+        height,
+        scale: usable,
+        background: BACKGROUNDS[theme()],
+      });
       const name = `${(session.label || 'mesh').replace(/\.[^.]+$/, '').replace(/[^\w.-]+/g, '_')}-view-${scale()}x.png`;
       download(await pngBlob(canvas), name);
       saved('view', name, { width: canvas.width, height: canvas.height, cssWidth: width, cssHeight: height, note });
@@ -121,11 +131,12 @@ export function createExportPanel({ session, view, surface, paths, param }) {
     param.setCheckerCells(Number(event.target.value));
     figure.redraw();
   });
-  const pathStyle = () => paths.setStyle({
-    visible: $('paths-toggle').checked,
-    width: Number($('path-width').value),
-    color: $('path-color').value,
-  });
+  const pathStyle = () =>
+    paths.setStyle({
+      visible: $('paths-toggle').checked,
+      width: Number($('path-width').value),
+      color: $('path-color').value,
+    });
   for (const id of ['paths-toggle', 'path-width', 'path-color']) $(id).addEventListener('input', pathStyle);
   session.addEventListener('meshchange', () => setButtons());
   session.addEventListener('meshready', () => setButtons());

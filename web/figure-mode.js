@@ -20,7 +20,11 @@ import { LAYOUT_THEMES, checkerboardCanvas, drawLayout, layoutExportSize } from 
 /** The panels' order, as the paper lays them out: fixed boundaries first, then the measured one. */
 const FIGURE_ORDER = ['square', 'circle', 'measured', 'free'];
 const EXPORT_PANEL_WIDTH = 360; // CSS pixels per panel of the exported grid
-const TEXT_COLORS = { dark: ['#e4e7ec', '#a3abb8'], light: ['#11151b', '#3d4552'], transparent: ['#11151b', '#3d4552'] };
+const TEXT_COLORS = {
+  dark: ['#e4e7ec', '#a3abb8'],
+  light: ['#11151b', '#3d4552'],
+  transparent: ['#11151b', '#3d4552'],
+};
 
 /**
  * session: session.js; view: scene.js (its camera gives the viewpoint, its viewport holds the grid);
@@ -62,11 +66,14 @@ export function createFigureMode({ session, view, surface, options, checkerCells
   function panelGeometry(reply) {
     const shared = surface.mesh.geometry;
     if (reply.cut !== 'disk') {
-      return toSeamSplitGeometry({
-        positions: () => shared.getAttribute('position').array,
-        vertexNormals: () => shared.getAttribute('normal').array,
-        indices: () => shared.index.array,
-      }, reply);
+      return toSeamSplitGeometry(
+        {
+          positions: () => shared.getAttribute('position').array,
+          vertexNormals: () => shared.getAttribute('normal').array,
+          indices: () => shared.index.array,
+        },
+        reply,
+      );
     }
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', shared.getAttribute('position'));
@@ -149,9 +156,11 @@ export function createFigureMode({ session, view, surface, options, checkerCells
     const figure = document.createElement('figure');
     figure.className = 'figure-panel';
     figure.dataset.boundary = panel.boundary;
-    figure.innerHTML = '<canvas class="figure-3d"></canvas><figcaption><strong></strong> ' +
+    figure.innerHTML =
+      '<canvas class="figure-3d"></canvas><figcaption><strong></strong> ' +
       '<span class="figure-stretch"></span></figcaption><canvas class="figure-uv"></canvas>';
-    figure.querySelector('strong').textContent = `${panel.boundary}${panel.reply.init ? ` (from ${panel.reply.init})` : ''}`;
+    figure.querySelector('strong').textContent =
+      `${panel.boundary}${panel.reply.init ? ` (from ${panel.reply.init})` : ''}`;
     figure.querySelector('.figure-stretch').textContent = stretchText(panel.reply);
     figure.querySelector('.figure-stretch').dataset.l2 = String(panel.reply.stretch.l2);
     return figure;
@@ -221,7 +230,11 @@ export function createFigureMode({ session, view, surface, options, checkerCells
         $('figure-grid').append(panelElement(panel));
         drawPanel($('figure-grid').lastElementChild, panel);
         hooks.figure.panels.push({
-          boundary, l2: reply.stretch.l2, linf: reply.stretch.linf, bijective: reply.bijective, init: reply.init,
+          boundary,
+          l2: reply.stretch.l2,
+          linf: reply.stretch.linf,
+          bijective: reply.bijective,
+          init: reply.init,
         });
       }
       hooks.figure.state = 'done';
@@ -290,7 +303,11 @@ export function createFigureMode({ session, view, surface, options, checkerCells
     ctx.textBaseline = 'middle';
     ctx.fillStyle = strong;
     ctx.font = '600 14px system-ui, sans-serif';
-    ctx.fillText(`${shownFor?.label ?? ''} · ${WEIGHT_LABELS[shownFor?.weights] ?? ''} weights`, gap, titleHeight / 2 + 4);
+    ctx.fillText(
+      `${shownFor?.label ?? ''} · ${WEIGHT_LABELS[shownFor?.weights] ?? ''} weights`,
+      gap,
+      titleHeight / 2 + 4,
+    );
     panels.forEach((panel, i) => {
       const x = gap + i * (width + gap);
       const image = render3d(panel, width, width, scale, BACKGROUNDS[theme] ?? null);

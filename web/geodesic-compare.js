@@ -75,14 +75,17 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
     // an input, not a result — shown muted, the miss distance beside it is the result.
     $('geo-shot-length').textContent = formatNumber(shot.length);
     $('geo-shot-length').className = 'muted';
-    $('geo-shot-length').title = plane.status === 'reached'
-      ? 'the length the shot was given: the cutting-plane path’s (equal by construction)'
-      : 'the length the shot was given: the exact distance';
+    $('geo-shot-length').title =
+      plane.status === 'reached'
+        ? 'the length the shot was given: the cutting-plane path’s (equal by construction)'
+        : 'the length the shot was given: the exact distance';
     $('geo-shot-note').textContent = `misses by ${formatNumber(shot.missDistance)} (${statusWords(shot.status)})`;
     $('geo-shot-note').title = shot.status;
     $('geo-exact-length').textContent = formatNumber(exact.distance);
-    $('geo-exact-note').textContent = Number.isFinite(exact.distance) && exact.distance > 0
-      ? `plane ÷ exact ${(plane.length / exact.distance).toFixed(4)}` : '';
+    $('geo-exact-note').textContent =
+      Number.isFinite(exact.distance) && exact.distance > 0
+        ? `plane ÷ exact ${(plane.length / exact.distance).toFixed(4)}`
+        : '';
     $('geodesic-compare').hidden = false;
   }
 
@@ -98,8 +101,11 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
       if (run.stale()) return;
       materials.shot.dashSize = 0.012 * view.scale;
       materials.shot.gapSize = 0.006 * view.scale;
-      const drawn = [line(reply.plane.points, materials.plane), line(reply.shot.points, materials.shot),
-        line(reply.exact.points, materials.exact)];
+      const drawn = [
+        line(reply.plane.points, materials.plane),
+        line(reply.shot.points, materials.shot),
+        line(reply.exact.points, materials.exact),
+      ];
       group.add(...drawn.filter(Boolean));
       showTable(reply, vertex);
       hooks.geodesics = {

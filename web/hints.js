@@ -21,23 +21,34 @@ export const L2_MARGIN = 0.01;
  * Returns { reasons: string[], advice: string[], text } (text: the reasons, then the advice).
  */
 export function poorResultHint({
-  failedTraces = 0, traces = 0, measuredL2 = NaN, circleL2 = NaN, boundary = undefined, freeAvailable = false,
+  failedTraces = 0,
+  traces = 0,
+  measuredL2 = NaN,
+  circleL2 = NaN,
+  boundary = undefined,
+  freeAvailable = false,
 } = {}) {
   const reasons = [];
   if (traces > 0 && failedTraces > 0) {
     reasons.push(`${failedTraces} of ${traces} straightest paths from the centre do not reach the boundary.`);
   }
-  const worseThanCircle = Number.isFinite(measuredL2) && Number.isFinite(circleL2) &&
-    measuredL2 > circleL2 * (1 + L2_MARGIN);
+  const worseThanCircle =
+    Number.isFinite(measuredL2) && Number.isFinite(circleL2) && measuredL2 > circleL2 * (1 + L2_MARGIN);
   if (worseThanCircle) {
-    reasons.push(`The measured boundary stretches more than the circle (L2 ${measuredL2.toPrecision(4)} > ` +
-      `${circleL2.toPrecision(4)}).`);
+    reasons.push(
+      `The measured boundary stretches more than the circle (L2 ${measuredL2.toPrecision(4)} > ` +
+        `${circleL2.toPrecision(4)}).`,
+    );
   }
   if (reasons.length === 0) return null;
-  const advice = ['Move the centre: click a point nearer the middle of the surface' +
-    (boundary === undefined ? '' : ' and tick "Center at the path source"') + '.'];
+  const advice = [
+    'Move the centre: click a point nearer the middle of the surface' +
+      (boundary === undefined ? '' : ' and tick "Center at the path source"') +
+      '.',
+  ];
   if (boundary !== 'auto') advice.push('Use the auto boundary: it keeps the map of least stretch.');
-  if (freeAvailable && boundary !== 'free') advice.push('Use the free boundary: it refines the map with the boundary free to move.');
+  if (freeAvailable && boundary !== 'free')
+    advice.push('Use the free boundary: it refines the map with the boundary free to move.');
   return { reasons, advice, text: [...reasons, ...advice].join(' ') };
 }
 
@@ -58,7 +69,7 @@ export function parameterizationHint(reply, requested, boundaryKinds) {
   const l2 = (boundary) => reply.candidates?.find((c) => c.boundary === boundary)?.l2 ?? NaN;
   return poorResultHint({
     failedTraces: traced ? reply.fallbacks : 0,
-    traces: traced ? reply.boundaryLoop?.length ?? 0 : 0,
+    traces: traced ? (reply.boundaryLoop?.length ?? 0) : 0,
     measuredL2: l2('measured'),
     circleL2: l2('circle'),
     boundary: requested,

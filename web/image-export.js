@@ -50,7 +50,10 @@ export function renderToCanvas(scene, camera, { width, height, scale = 1, backgr
 /** The canvas as a PNG blob. */
 export function pngBlob(canvas) {
   return new Promise((resolve, reject) => {
-    canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the browser could not encode the PNG'))), 'image/png');
+    canvas.toBlob(
+      (blob) => (blob ? resolve(blob) : reject(new Error('the browser could not encode the PNG'))),
+      'image/png',
+    );
   });
 }
 

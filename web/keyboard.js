@@ -10,14 +10,25 @@ const ZOOM_STEP = 0.8;
 function actionFor(key, view) {
   const controls = view.controls;
   switch (key) {
-    case 'ArrowLeft': return () => controls.rotateLeft(ORBIT_STEP);
-    case 'ArrowRight': return () => controls.rotateLeft(-ORBIT_STEP);
-    case 'ArrowUp': return () => controls.rotateUp(ORBIT_STEP);
-    case 'ArrowDown': return () => controls.rotateUp(-ORBIT_STEP);
-    case '+': case '=': return () => controls.dollyIn(ZOOM_STEP);
-    case '-': case '_': return () => controls.dollyOut(ZOOM_STEP);
-    case '0': case 'Home': return () => view.resetView();
-    default: return null;
+    case 'ArrowLeft':
+      return () => controls.rotateLeft(ORBIT_STEP);
+    case 'ArrowRight':
+      return () => controls.rotateLeft(-ORBIT_STEP);
+    case 'ArrowUp':
+      return () => controls.rotateUp(ORBIT_STEP);
+    case 'ArrowDown':
+      return () => controls.rotateUp(-ORBIT_STEP);
+    case '+':
+    case '=':
+      return () => controls.dollyIn(ZOOM_STEP);
+    case '-':
+    case '_':
+      return () => controls.dollyOut(ZOOM_STEP);
+    case '0':
+    case 'Home':
+      return () => view.resetView();
+    default:
+      return null;
   }
 }
 

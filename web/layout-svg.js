@@ -5,7 +5,15 @@
 
 import { BOUNDARY_COLORS, STRETCH_INFINITE, stretchRgb } from './colormap.js';
 import {
-  FONT, LAYOUT_THEMES, LINE_HEIGHT, MARGIN, RASTER_FACES, SEAM_COLOR, layoutExportSize, legendText, rasterLayer,
+  FONT,
+  LAYOUT_THEMES,
+  LINE_HEIGHT,
+  MARGIN,
+  RASTER_FACES,
+  SEAM_COLOR,
+  layoutExportSize,
+  legendText,
+  rasterLayer,
 } from './uv-layout.js';
 
 const escapeXml = (text) => String(text).replace(/[<>&'"]/g, (c) => `&#${c.charCodeAt(0)};`);
@@ -35,8 +43,10 @@ export function layoutSvg(layout, { width = 720, theme = 'light' } = {}) {
     grid.push(`M${px(k / 4)} ${py(0)}V${py(1)}`, `M${px(0)} ${py(k / 4)}H${px(1)}`);
   }
   out.push(`<path d="${grid.join('')}" stroke="${colors.grid}" fill="none"/>`);
-  out.push(`<rect x="${px(0)}" y="${py(1)}" width="${num(side)}" height="${num(side)}" fill="none" ` +
-    `stroke="${colors.frame}" stroke-dasharray="3 3"/>`);
+  out.push(
+    `<rect x="${px(0)}" y="${py(1)}" width="${num(side)}" height="${num(side)}" fill="none" ` +
+      `stroke="${colors.frame}" stroke-dasharray="3 3"/>`,
+  );
 
   const triangle = (f) => {
     const corners = [0, 1, 2].map((k) => `${px(cornerUv[6 * f + 2 * k])} ${py(cornerUv[6 * f + 2 * k + 1])}`);
@@ -58,8 +68,10 @@ export function layoutSvg(layout, { width = 720, theme = 'light' } = {}) {
     }
     const edges = [];
     for (let f = 0; f < faces; f++) if (inLayout(f)) edges.push(triangle(f));
-    out.push(`<path d="${edges.join('')}" fill="none" stroke="${heat ? colors.heatEdges : colors.edges}" ` +
-      'stroke-width="0.5" stroke-linejoin="round"/>');
+    out.push(
+      `<path d="${edges.join('')}" fill="none" stroke="${heat ? colors.heatEdges : colors.edges}" ` +
+        'stroke-width="0.5" stroke-linejoin="round"/>',
+    );
   }
 
   const polygonPath = (polygon) => {
@@ -69,15 +81,19 @@ export function layoutSvg(layout, { width = 720, theme = 'light' } = {}) {
   };
   for (const { boundary: kind, polygon } of overlays) {
     if (!polygon || kind === boundary) continue;
-    out.push(`<path d="${polygonPath(polygon)}" fill="none" stroke="${BOUNDARY_COLORS[kind]}" stroke-width="1.4" ` +
-      'stroke-dasharray="5 3" stroke-linejoin="round"/>');
+    out.push(
+      `<path d="${polygonPath(polygon)}" fill="none" stroke="${BOUNDARY_COLORS[kind]}" stroke-width="1.4" ` +
+        'stroke-dasharray="5 3" stroke-linejoin="round"/>',
+    );
   }
   const chosen = overlays.find((o) => o.boundary === boundary && o.polygon);
   if (chosen) {
     const d = polygonPath(chosen.polygon);
     out.push(`<path d="${d}" fill="none" stroke="${colors.halo}" stroke-width="5" stroke-linejoin="round"/>`);
-    out.push(`<path d="${d}" fill="none" stroke="${seam ? SEAM_COLOR : BOUNDARY_COLORS[boundary]}" ` +
-      'stroke-width="3" stroke-linejoin="round"/>');
+    out.push(
+      `<path d="${d}" fill="none" stroke="${seam ? SEAM_COLOR : BOUNDARY_COLORS[boundary]}" ` +
+        'stroke-width="3" stroke-linejoin="round"/>',
+    );
   }
 
   // The legend: swatches, then the wrapped title, caption and key (measured as the canvas draws them).
@@ -89,19 +105,23 @@ export function layoutSvg(layout, { width = 720, theme = 'light' } = {}) {
     const isChosen = kind === boundary;
     const label = polygon ? `${kind}${isChosen && seam ? ' = seam' : ''}` : `${kind} (failed)`;
     const stroke = isChosen && seam ? SEAM_COLOR : BOUNDARY_COLORS[kind];
-    out.push(`<g opacity="${polygon ? 1 : 0.4}"><path d="M${num(cx)} ${y + 6}h18" stroke="${stroke}" ` +
-      `stroke-width="${isChosen ? 3 : 1.4}"${isChosen ? '' : ' stroke-dasharray="5 3"'}/>` +
-      `<text x="${num(cx + 23)}" y="${y + 6}" dominant-baseline="middle" font-size="11.5" ` +
-      `font-weight="${isChosen ? 600 : 400}" fill="${isChosen ? colors.strong : colors.label}">` +
-      `${escapeXml(label)}</text></g>`);
+    out.push(
+      `<g opacity="${polygon ? 1 : 0.4}"><path d="M${num(cx)} ${y + 6}h18" stroke="${stroke}" ` +
+        `stroke-width="${isChosen ? 3 : 1.4}"${isChosen ? '' : ' stroke-dasharray="5 3"'}/>` +
+        `<text x="${num(cx + 23)}" y="${y + 6}" dominant-baseline="middle" font-size="11.5" ` +
+        `font-weight="${isChosen ? 600 : 400}" fill="${isChosen ? colors.strong : colors.label}">` +
+        `${escapeXml(label)}</text></g>`,
+    );
     measure.font = `${isChosen ? 600 : 400} 11.5px ${FONT}`;
     cx += 23 + measure.measureText(label).width + 14;
   }
   y += 22;
   const lines = (list, size, weight, color) => {
     for (const line of list) {
-      out.push(`<text x="${x0}" y="${num(y)}" dominant-baseline="middle" font-size="${size}" font-weight="${weight}" ` +
-        `fill="${color}">${escapeXml(line)}</text>`);
+      out.push(
+        `<text x="${x0}" y="${num(y)}" dominant-baseline="middle" font-size="${size}" font-weight="${weight}" ` +
+          `fill="${color}">${escapeXml(line)}</text>`,
+      );
       y += LINE_HEIGHT;
     }
   };
@@ -110,21 +130,31 @@ export function layoutSvg(layout, { width = 720, theme = 'light' } = {}) {
   if (!heat) {
     lines(text.key, 11, 400, colors.muted);
   } else {
-    const stops = Array.from({ length: 9 }, (_, i) =>
-      `<stop offset="${i / 8}" stop-color="rgb(${stretchRgb(1 + i / 8).join(',')})"/>`).join('');
+    const stops = Array.from(
+      { length: 9 },
+      (_, i) => `<stop offset="${i / 8}" stop-color="rgb(${stretchRgb(1 + i / 8).join(',')})"/>`,
+    ).join('');
     out.push(`<defs><linearGradient id="stretch-ramp">${stops}</linearGradient></defs>`);
-    out.push(`<text x="${x0}" y="${num(y)}" dominant-baseline="middle" font-size="11" fill="${colors.muted}">` +
-      'L2 stretch: 1</text>');
+    out.push(
+      `<text x="${x0}" y="${num(y)}" dominant-baseline="middle" font-size="11" fill="${colors.muted}">` +
+        'L2 stretch: 1</text>',
+    );
     measure.font = `11px ${FONT}`;
     const rampX = x0 + measure.measureText('L2 stretch: 1').width + 5;
     out.push(`<rect x="${num(rampX)}" y="${num(y - 4)}" width="60" height="8" fill="url(#stretch-ramp)"/>`);
-    out.push(`<text x="${num(rampX + 65)}" y="${num(y)}" dominant-baseline="middle" font-size="11" ` +
-      `fill="${colors.muted}">≥ 2</text>`);
+    out.push(
+      `<text x="${num(rampX + 65)}" y="${num(y)}" dominant-baseline="middle" font-size="11" ` +
+        `fill="${colors.muted}">≥ 2</text>`,
+    );
     const flippedX = rampX + 65 + measure.measureText('≥ 2').width + 8;
-    out.push(`<rect x="${num(flippedX)}" y="${num(y - 4)}" width="8" height="8" ` +
-      `fill="rgb(${STRETCH_INFINITE.join(',')})"/>`);
-    out.push(`<text x="${num(flippedX + 13)}" y="${num(y)}" dominant-baseline="middle" font-size="11" ` +
-      `fill="${colors.muted}">flipped</text>`);
+    out.push(
+      `<rect x="${num(flippedX)}" y="${num(y - 4)}" width="8" height="8" ` +
+        `fill="rgb(${STRETCH_INFINITE.join(',')})"/>`,
+    );
+    out.push(
+      `<text x="${num(flippedX + 13)}" y="${num(y)}" dominant-baseline="middle" font-size="11" ` +
+        `fill="${colors.muted}">flipped</text>`,
+    );
   }
   out.push('</svg>');
   return `${out.join('\n')}\n`;

@@ -61,9 +61,17 @@ const view = createView({ canvas: $('view-canvas'), viewport: $('viewport') });
 const surface = createSurfaceView(view);
 let picking = null; // created below: hovering needs the path view, the path view tells it when paths go
 let geodesics = null; // created below (it needs the session); cleared with the paths
-const paths = createPathView(view, { onClear: () => { picking?.hide(); geodesics?.clear(); } });
+const paths = createPathView(view, {
+  onClear: () => {
+    picking?.hide();
+    geodesics?.clear();
+  },
+});
 picking = createPicking({
-  view, surface, paths, tooltip: $('path-tooltip'),
+  view,
+  surface,
+  paths,
+  tooltip: $('path-tooltip'),
   onPick: (picked, add) => {
     // As the panel says, on every mesh: a click moves the source, shift+click adds a destination (a
     // closed surface, which has no boundary destinations, says so in its note). The "Clicks add
@@ -113,8 +121,10 @@ geodesics = createGeodesicCompare({ session, view, surface, wanted: () => $('geo
 const exactRatio = createExactRatio({ session, source: () => pathRequest.source });
 createKeyboard(view);
 createPointEntry({
-  counts: () => (surface.mesh && session.info
-    ? { vertices: session.info.vertices, faces: session.info.faces, base: getIndexBase() } : null),
+  counts: () =>
+    surface.mesh && session.info
+      ? { vertices: session.info.vertices, faces: session.info.faces, base: getIndexBase() }
+      : null,
   apply({ source, destinations }) {
     if (source) pathRequest.source = source;
     for (const point of destinations) pathRequest.added.push({ point, position: surfacePosition(surface.mesh, point) });
@@ -123,16 +133,25 @@ createPointEntry({
 });
 const heat = createHeatDistance({ session, surface, paths, wanted: () => $('heat-toggle').checked });
 const param = createParamView({
-  session, view, surface, pathSource: () => pathRequest.source, onShown: () => urlSync.save(),
+  session,
+  view,
+  surface,
+  pathSource: () => pathRequest.source,
+  onShown: () => urlSync.save(),
 });
 createExportPanel({ session, view, surface, paths, param });
 createAtlasMode({ session, view, surface });
 createDataDownloads({
-  session, paths: () => shownPaths, source: () => pathRequest.source,
-  compareRows: () => param.compareRows(), exactRows: () => exactRatio.rows,
+  session,
+  paths: () => shownPaths,
+  source: () => pathRequest.source,
+  compareRows: () => param.compareRows(),
+  exactRows: () => exactRatio.rows,
 });
 const urlSync = createUrlSync({
-  session, param, points: () => ({ source: pathRequest.source, destinations: pathRequest.added.map(({ point }) => point) }),
+  session,
+  param,
+  points: () => ({ source: pathRequest.source, destinations: pathRequest.added.map(({ point }) => point) }),
 });
 
 // ------------------------------------------------------------------ straightest paths
@@ -182,15 +201,22 @@ async function tracePaths() {
     const reply = await session.request('paths', { source: pathRequest.source, targets: currentTargets() });
     if (current.stale()) return;
     hooks.traces += 1;
-    paths.show(reply, pathRequest.added.map(({ position }) => position));
+    paths.show(
+      reply,
+      pathRequest.added.map(({ position }) => position),
+    );
     shownPaths = reply;
     const { plain, stride } = paths.shown;
-    showPathStats(reply, {
-      isDefault: pathRequest.source === 'auto',
-      boundary: $('boundary-toggle').checked,
-      added: pathRequest.added.length,
-      closed: closedMesh(),
-    }, { plain, stride });
+    showPathStats(
+      reply,
+      {
+        isDefault: pathRequest.source === 'auto',
+        boundary: $('boundary-toggle').checked,
+        added: pathRequest.added.length,
+        closed: closedMesh(),
+      },
+      { plain, stride },
+    );
     summarizePaths(reply);
     hooks.paths = {
       count: reply.count,
@@ -199,9 +225,15 @@ async function tracePaths() {
       traceMs: reply.timings.trace,
       plain,
       otherArcs: paths.shown.otherArcs,
-      arcs: reply.count <= 16 ? Array.from(reply.lengths, (length, i) => ({
-        status: reply.statuses[i], length, other: reply.otherArcLengths[i], backward: reply.backward[i] === 1,
-      })) : null,
+      arcs:
+        reply.count <= 16
+          ? Array.from(reply.lengths, (length, i) => ({
+              status: reply.statuses[i],
+              length,
+              other: reply.otherArcLengths[i],
+              backward: reply.backward[i] === 1,
+            }))
+          : null,
     };
     geodesics.update(reply.source, pathRequest.added.at(-1) ?? null); // reports its own failure
     exactRatio.sourceChanged(reply.source);
@@ -212,9 +244,9 @@ async function tracePaths() {
     if (current.stale()) return;
     clearError();
     view.render();
-    setStatus(reply.count
-      ? `${session.status} · ${reply.count} paths in ${reply.timeMs.toFixed(0)} ms`
-      : session.status);
+    setStatus(
+      reply.count ? `${session.status} · ${reply.count} paths in ${reply.timeMs.toFixed(0)} ms` : session.status,
+    );
     setState('ready');
   } catch (err) {
     if (current.stale() || isCancelled(err)) return;
@@ -227,7 +259,9 @@ function showPathsHint(reply) {
   const boundaryTargets = $('boundary-toggle').checked && !closedMesh() ? reply.count - pathRequest.added.length : 0;
   const failed = reply.statuses.slice(0, boundaryTargets).filter((status) => status !== 'reached').length;
   const hint = poorResultHint({
-    failedTraces: failed, traces: boundaryTargets, freeAvailable: session.boundaryKinds.includes('free'),
+    failedTraces: failed,
+    traces: boundaryTargets,
+    freeAvailable: session.boundaryKinds.includes('free'),
   });
   renderHint($('paths-hint'), hint);
   hooks.pathsHint = hint?.text ?? null;

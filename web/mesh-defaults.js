@@ -26,10 +26,12 @@ export function isDisk(info) {
  * kinds: the menu's values (the core's boundary kinds and 'auto').
  */
 export function defaultBoundary(info, kinds) {
-  if (!info || isDisk(info) || !kinds.includes('auto')) return { boundary: kinds.includes('measured') ? 'measured' : kinds[0], reason: '' };
+  if (!info || isDisk(info) || !kinds.includes('auto'))
+    return { boundary: kinds.includes('measured') ? 'measured' : kinds[0], reason: '' };
   return {
     boundary: 'auto',
-    reason: `Boundary auto: this mesh is not a disk (${topologyWords(info)}), so the core cuts or fills it ` +
+    reason:
+      `Boundary auto: this mesh is not a disk (${topologyWords(info)}), so the core cuts or fills it ` +
       'into one, and the measured boundary alone maps that disk poorly. Auto runs every boundary and keeps ' +
       'the least stretch; pick another boundary to see it.',
   };

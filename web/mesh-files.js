@@ -48,22 +48,33 @@ function gltfGeometry(name, bytes) {
     const failed = (err) => {
       const text = String(err?.message ?? err);
       if (/DRACOLoader|KTX2Loader|MeshoptDecoder/.test(text)) {
-        reject(fileError(`“${name}” uses compression the page does not decode (${text.replace(/^THREE\.GLTFLoader: /, '')}); ` +
-          'export it uncompressed'));
+        reject(
+          fileError(
+            `“${name}” uses compression the page does not decode (${text.replace(/^THREE\.GLTFLoader: /, '')}); ` +
+              'export it uncompressed',
+          ),
+        );
       } else if (/fetch|load buffer|Failed to load/i.test(text)) {
-        reject(fileError(`“${name}” refers to other files (a .gltf with a separate .bin?): drop a single .glb instead`));
+        reject(
+          fileError(`“${name}” refers to other files (a .gltf with a separate .bin?): drop a single .glb instead`),
+        );
       } else {
         reject(fileError(`Could not read “${name}” as glTF: ${text}`));
       }
     };
     try {
-      new GLTFLoader().parse(bytes, '', (gltf) => {
-        try {
-          resolve(mergeScene(name, gltf.scene));
-        } catch (err) {
-          reject(err);
-        }
-      }, failed);
+      new GLTFLoader().parse(
+        bytes,
+        '',
+        (gltf) => {
+          try {
+            resolve(mergeScene(name, gltf.scene));
+          } catch (err) {
+            reject(err);
+          }
+        },
+        failed,
+      );
     } catch (err) {
       failed(err);
     }
@@ -123,9 +134,14 @@ export function glbFromGeometry(geometry, name = 'straightest') {
   const mesh = new THREE.Mesh(exported, new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.8 }));
   mesh.name = name;
   return new Promise((resolve, reject) => {
-    new GLTFExporter().parse(mesh, (result) => {
-      exported.dispose();
-      resolve(result);
-    }, (err) => reject(err instanceof Error ? err : new Error(String(err))), { binary: true });
+    new GLTFExporter().parse(
+      mesh,
+      (result) => {
+        exported.dispose();
+        resolve(result);
+      },
+      (err) => reject(err instanceof Error ? err : new Error(String(err))),
+      { binary: true },
+    );
   });
 }

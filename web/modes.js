@@ -49,5 +49,11 @@ function createModes() {
   }
 
   register({ id: 'surface', label: '3D surface' });
-  return { register, select, get current() { return current; } };
+  return {
+    register,
+    select,
+    get current() {
+      return current;
+    },
+  };
 }

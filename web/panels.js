@@ -10,7 +10,8 @@ const $ = (id) => document.getElementById(id);
 
 // What to do about an error, per category, below the core's own message.
 const ERROR_HINTS = {
-  too_large: 'The browser could not give this mesh enough memory: WebAssembly memory is limited to ' +
+  too_large:
+    'The browser could not give this mesh enough memory: WebAssembly memory is limited to ' +
     '4 GB, and a mesh takes about 1.3 GB per million vertices once parameterized. Try a smaller or ' +
     'decimated mesh.',
   worker: 'Reload the page to start a new geometry worker.',
@@ -66,8 +67,7 @@ export function showInfo(info, label) {
   $('info-faces').textContent = formatNumber(info.faces);
   $('info-edges').textContent = formatNumber(info.edges);
   const loops = info.boundaryLoops ?? [];
-  $('info-boundary').textContent =
-    loops.length === 0 ? '0 (closed)' : `${loops.length} (${loops.join(', ')} edges)`;
+  $('info-boundary').textContent = loops.length === 0 ? '0 (closed)' : `${loops.length} (${loops.join(', ')} edges)`;
   $('info-euler').textContent = formatNumber(info.eulerCharacteristic);
   $('info-components').textContent = formatNumber(info.components);
   $('info-degenerate').textContent = formatNumber(info.degenerateFaces);
@@ -108,40 +108,52 @@ export function showPathStats(reply, request, drawn) {
 
   const list = $('stats-failures');
   const failures = Object.entries(summary.failures);
-  list.replaceChildren(...failures.map(([status, n]) => {
-    const item = document.createElement('li');
-    item.innerHTML = `<code></code> <span></span>`;
-    item.firstChild.textContent = statusWords(status);
-    item.firstChild.title = status; // the core's code
-    item.lastChild.textContent = formatCount(n);
-    return item;
-  }));
+  list.replaceChildren(
+    ...failures.map(([status, n]) => {
+      const item = document.createElement('li');
+      item.innerHTML = `<code></code> <span></span>`;
+      item.firstChild.textContent = statusWords(status);
+      item.firstChild.title = status; // the core's code
+      item.lastChild.textContent = formatCount(n);
+      return item;
+    }),
+  );
   list.hidden = failures.length === 0;
 
   $('stats-length').textContent = reached
     ? `${formatNumber(summary.meanLength)} / ${formatNumber(summary.maxLength)}`
     : '–';
-  $('stats-faces').textContent = count ? `${formatCount(summary.facesCrossed)} / ${formatCount(summary.maxFacesCrossed)}` : '–';
+  $('stats-faces').textContent = count
+    ? `${formatCount(summary.facesCrossed)} / ${formatCount(summary.maxFacesCrossed)}`
+    : '–';
   const { timings } = reply;
   const time = $('stats-time');
   time.textContent = formatMs(timings.trace);
-  time.title = `tracing ${formatMs(timings.trace)}, setup ${formatMs(timings.prepare)} ` +
+  time.title =
+    `tracing ${formatMs(timings.trace)}, setup ${formatMs(timings.prepare)} ` +
     `(${formatMs(reply.timeMs)} in the worker in all)`;
   $('stats-traces').textContent = formatCount(hooks.traces);
 
   const notes = [];
   if (request.closed && count === 0) {
-    notes.push('Closed surface: no boundary to trace to. Shift+click (or tick “Clicks add destinations” ' +
-      'and click) to add a destination; a plain click moves the source.');
+    notes.push(
+      'Closed surface: no boundary to trace to. Shift+click (or tick “Clicks add destinations” ' +
+        'and click) to add a destination; a plain click moves the source.',
+    );
   } else if (request.closed) {
     // Each section through the source is a closed curve: the shorter arc is the path, the other dimmed.
-    notes.push('Closed surface: each path is the shorter way round its section through the source; ' +
-      'the other way is dimmed. Click to move the source, shift+click to add destinations.');
+    notes.push(
+      'Closed surface: each path is the shorter way round its section through the source; ' +
+        'the other way is dimmed. Click to move the source, shift+click to add destinations.',
+    );
     for (let i = 0; i < Math.min(count, 3); i++) {
       const other = reply.otherArcLengths[i];
-      notes.push(reply.statuses[i] !== 'reached' ? `Path ${i + 1}: ${statusWords(reply.statuses[i])} (${reply.statuses[i]}).`
-        : `Path ${i + 1}: ${formatNumber(reply.lengths[i])} ${reply.backward[i] ? 'backward' : 'forward'}` +
-          (Number.isFinite(other) ? `, the other way round ${formatNumber(other)}.` : '.'));
+      notes.push(
+        reply.statuses[i] !== 'reached'
+          ? `Path ${i + 1}: ${statusWords(reply.statuses[i])} (${reply.statuses[i]}).`
+          : `Path ${i + 1}: ${formatNumber(reply.lengths[i])} ${reply.backward[i] ? 'backward' : 'forward'}` +
+              (Number.isFinite(other) ? `, the other way round ${formatNumber(other)}.` : '.'),
+      );
     }
   } else if (count === 0) {
     notes.push('No destinations: tick “Boundary destinations” or shift+click the mesh to add some.');
@@ -149,8 +161,10 @@ export function showPathStats(reply, request, drawn) {
   if (reply.baseNote) notes.push(`Base plane: ${reply.baseNote}.`);
   if (drawn?.plain) {
     const every = drawn.stride > 1 ? ` through 1 point in ${drawn.stride}` : '';
-    notes.push(`${formatCount(reply.points.length / 3)} path points: drawn as thin plain ` +
-      `lines${every} (failed ones solid red), and hovering a path is off.`);
+    notes.push(
+      `${formatCount(reply.points.length / 3)} path points: drawn as thin plain ` +
+        `lines${every} (failed ones solid red), and hovering a path is off.`,
+    );
   }
   $('stats-note').textContent = notes.join(' ');
   $('stats-note').hidden = notes.length === 0;

@@ -43,8 +43,11 @@ const BOUNDARY_CHOICES = {
   measured: ['measured', 'straightest distances and angles from the center, made convex (the paper)'],
   circle: ['circle', 'the unit circle by boundary arc length'],
   square: ['square', 'the unit square by boundary arc length'],
-  free: ['free (refined)', 'the measured map (the circle\'s when that folds) refined with the boundary free to ' +
-    'move: less distortion, never folds'],
+  free: [
+    'free (refined)',
+    "the measured map (the circle's when that folds) refined with the boundary free to " +
+      'move: less distortion, never folds',
+  ],
   auto: ['auto (best)', 'every boundary, keeping the least L2 stretch'],
 };
 
@@ -126,11 +129,14 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
    */
   function splitGeometry(reply) {
     const geometry = surface.mesh.geometry;
-    return toSeamSplitGeometry({
-      positions: () => geometry.getAttribute('position').array,
-      vertexNormals: () => geometry.getAttribute('normal').array,
-      indices: () => geometry.index.array,
-    }, reply);
+    return toSeamSplitGeometry(
+      {
+        positions: () => geometry.getAttribute('position').array,
+        vertexNormals: () => geometry.getAttribute('normal').array,
+        indices: () => geometry.index.array,
+      },
+      reply,
+    );
   }
 
   /** What the core did to make the mesh a disk, in words (empty for a disk). */
@@ -138,18 +144,24 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     const loops = session.info?.boundaryLoops ?? [];
     const parts = [];
     if (reply.components > 1) {
-      parts.push(`Component ${reply.component} of ${reply.components} (the largest) is parameterized; ` +
-        'the others have no uv.');
+      parts.push(
+        `Component ${reply.component} of ${reply.components} (the largest) is parameterized; ` +
+          'the others have no uv.',
+      );
     }
     if (reply.cut === 'fill' || reply.filledLoops.length > 0) {
       const outer = loops.findIndex((_, i) => !reply.filledLoops.includes(i));
       const n = reply.filledLoops.length;
-      parts.push(`${n} hole${n === 1 ? '' : 's'} filled virtually` +
-        `${reply.cut === 'fill' ? `; outer boundary = loop ${outer}` : ''}.`);
+      parts.push(
+        `${n} hole${n === 1 ? '' : 's'} filled virtually` +
+          `${reply.cut === 'fill' ? `; outer boundary = loop ${outer}` : ''}.`,
+      );
     }
     if (reply.cut === 'path' || reply.cut === 'cut-graph') {
-      parts.push(`${reply.cut === 'path' ? 'Closed surface' : `Genus ${reply.genus}`}: cut to a disk along a seam ` +
-        `of ${reply.seamEdges} edges (length ${formatMetric(reply.seamLength)}), drawn in magenta.`);
+      parts.push(
+        `${reply.cut === 'path' ? 'Closed surface' : `Genus ${reply.genus}`}: cut to a disk along a seam ` +
+          `of ${reply.seamEdges} edges (length ${formatMetric(reply.seamLength)}), drawn in magenta.`,
+      );
     }
     return parts.join(' ');
   }
@@ -175,7 +187,9 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   }
 
   const stretch = createStretchView({
-    view, surface, onError: (err) => showNote(`Could not build the stretch heat map: ${err.message}`, 'error'),
+    view,
+    surface,
+    onError: (err) => showNote(`Could not build the stretch heat map: ${err.message}`, 'error'),
   });
   const showStretch = () => stretch.show($('stretch-toggle').checked);
 
@@ -189,12 +203,14 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     const kinds = session.boundaryKinds;
     if (!kinds.length || select.options.length === kinds.length + 1) return;
     const chosen = select.value;
-    select.replaceChildren(...[...kinds, 'auto'].map((kind) => {
-      const [label, title] = BOUNDARY_CHOICES[kind] ?? [kind, ''];
-      const option = new Option(label, kind);
-      option.title = title;
-      return option;
-    }));
+    select.replaceChildren(
+      ...[...kinds, 'auto'].map((kind) => {
+        const [label, title] = BOUNDARY_CHOICES[kind] ?? [kind, ''];
+        const option = new Option(label, kind);
+        option.title = title;
+        return option;
+      }),
+    );
     select.value = [...kinds, 'auto'].includes(chosen) ? chosen : kinds[0];
   }
 
@@ -239,44 +255,63 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
       const dd = $(`param-${field}`);
       dd.textContent = text;
       dd.className = className;
-      if (title) dd.title = title; else dd.removeAttribute('title');
+      if (title) dd.title = title;
+      else dd.removeAttribute('title');
     };
     const method = $('param-method');
     const weights = document.createElement('span'); // breaks before, never inside 'shape-preserving weights'
     weights.className = 'nowrap';
     weights.textContent = `${WEIGHT_LABELS[reply.weights]} weights`;
-    method.replaceChildren(`${requested === 'auto' ? 'auto → ' : ''}${reply.boundary} boundary` +
-      `${reply.init ? ` (from ${reply.init})` : ''} · `, weights);
-    method.title = reply.candidates.length > 1
-      ? `least L2 stretch of ${reply.candidates.map((c) => `${c.boundary} ${formatMetric(c.l2)}`).join(', ')}`
-      : '';
+    method.replaceChildren(
+      `${requested === 'auto' ? 'auto → ' : ''}${reply.boundary} boundary` +
+        `${reply.init ? ` (from ${reply.init})` : ''} · `,
+      weights,
+    );
+    method.title =
+      reply.candidates.length > 1
+        ? `least L2 stretch of ${reply.candidates.map((c) => `${c.boundary} ${formatMetric(c.l2)}`).join(', ')}`
+        : '';
     set('l2', formatMetric(reply.stretch.l2), 'strong');
     set('linf', formatMetric(reply.stretch.linf));
     set('bijective', reply.bijective ? 'yes' : 'no', reply.bijective ? 'good' : 'bad');
-    set('flips', `${reply.flipped} / ${reply.degenerate} / ${reply.overlaps}`,
+    set(
+      'flips',
+      `${reply.flipped} / ${reply.degenerate} / ${reply.overlaps}`,
       reply.flipped + reply.degenerate + reply.overlaps ? 'bad' : '',
-      'flipped triangles / degenerate triangles / pairs of boundary edges crossing in the plane');
-    set('fallbacks', `${reply.fallbacks} / ${reply.weightFallbacks}`, '',
-      'traces of the measured boundary that used the edge-graph distance / faces whose weights fell back');
+      'flipped triangles / degenerate triangles / pairs of boundary edges crossing in the plane',
+    );
+    set(
+      'fallbacks',
+      `${reply.fallbacks} / ${reply.weightFallbacks}`,
+      '',
+      'traces of the measured boundary that used the edge-graph distance / faces whose weights fell back',
+    );
     set('angle', `${formatMetric(reply.angleDistortion.mean)} / ${formatMetric(reply.angleDistortion.max)}`);
     set('area', `${formatMetric(reply.areaDistortion.mean)} / ${formatMetric(reply.areaDistortion.max)}`);
     if (reply.init) {
-      set('refine', `from ${reply.init} · ${reply.iterations} it. · ${formatMetric(reply.energyInitial)} → ` +
-        `${formatMetric(reply.energyFinal)}${reply.untangled ? ' · untangled' : ''}`,
-      reply.converged ? '' : 'warn',
-      'the start of the refinement, its iterations and its symmetric Dirichlet energy per unit area (4 for an ' +
-        `isometry); ${reply.converged ? 'converged' : 'stopped by the iteration cap or the time budget'}` +
-        (reply.untangled ? '; the start had folded triangles and was untangled first' : ''));
+      set(
+        'refine',
+        `from ${reply.init} · ${reply.iterations} it. · ${formatMetric(reply.energyInitial)} → ` +
+          `${formatMetric(reply.energyFinal)}${reply.untangled ? ' · untangled' : ''}`,
+        reply.converged ? '' : 'warn',
+        'the start of the refinement, its iterations and its symmetric Dirichlet energy per unit area (4 for an ' +
+          `isometry); ${reply.converged ? 'converged' : 'stopped by the iteration cap or the time budget'}` +
+          (reply.untangled ? '; the start had folded triangles and was untangled first' : ''),
+      );
     } else {
       set('refine', '–', '', 'only the free boundary is refined');
     }
     const t = reply.timings;
-    set('time', `${formatMs(t.solve, '')}${t.refine > 0 ? ` + ${formatMs(t.refine, '')}` : ''} / ${formatMs(t.total)}`, '',
+    set(
+      'time',
+      `${formatMs(t.solve, '')}${t.refine > 0 ? ` + ${formatMs(t.refine, '')}` : ''} / ${formatMs(t.total)}`,
+      '',
       `source ${formatMs(t.source)}, trace ${formatMs(t.trace)}, boundary ${formatMs(t.boundary)}, ` +
-      `weights ${formatMs(t.weights)}, solve ${formatMs(t.solve)}, refine ${formatMs(t.refine)}, ` +
-      `metrics ${formatMs(t.metrics)}; ` +
-      `relative residual ${reply.residual.toExponential(1)}; ${formatMs(reply.timeMs)} in the worker ` +
-      '(plus the other boundaries\' polygons)');
+        `weights ${formatMs(t.weights)}, solve ${formatMs(t.solve)}, refine ${formatMs(t.refine)}, ` +
+        `metrics ${formatMs(t.metrics)}; ` +
+        `relative residual ${reply.residual.toExponential(1)}; ${formatMs(reply.timeMs)} in the worker ` +
+        "(plus the other boundaries' polygons)",
+    );
   }
 
   // ---------------------------------------------------------------- the 2D layout
@@ -296,7 +331,8 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
       boundary: reply.boundary,
       heat: $('stretch-toggle').checked,
       title: `${session.label || 'mesh'} — ${reply.boundary} boundary`,
-      caption: `${reply.init ? `free from ${reply.init} · ` : ''}${WEIGHT_LABELS[reply.weights]} · ` +
+      caption:
+        `${reply.init ? `free from ${reply.init} · ` : ''}${WEIGHT_LABELS[reply.weights]} · ` +
         `L2 ${formatMetric(reply.stretch.l2)} · ` +
         `L∞ ${formatMetric(reply.stretch.linf)}${reply.bijective ? '' : ' · not bijective'}`,
     };
@@ -390,8 +426,9 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     showStats(reply, requested);
     summarizeParameterization(reply, requested);
     const failed = reply.overlays.filter((o) => o.error);
-    showNote([cutNote(reply), ...failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`)]
-      .filter(Boolean).join(' '));
+    showNote(
+      [cutNote(reply), ...failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`)].filter(Boolean).join(' '),
+    );
     showHint(parameterizationHint(reply, requested, session.boundaryKinds));
     $('param-panel').dataset.state = 'done';
     updateTexture();
@@ -410,9 +447,10 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     $('param-method').hidden = true;
     showNote(`Cannot parameterize: ${err.message}`, 'error');
     $('param-panel').dataset.state = 'error';
-    layoutMessage = err.category === 'topology'
-      ? 'This mesh could not be made a disk (see above).'
-      : 'The parameterization failed (see above).';
+    layoutMessage =
+      err.category === 'topology'
+        ? 'This mesh could not be made a disk (see above).'
+        : 'The parameterization failed (see above).';
     updateTexture();
     showStretch();
     redrawLayout();
@@ -523,10 +561,13 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
       return;
     }
     const vertices = session.info?.vertices ?? 0;
-    showNote(`Large mesh (${formatCount(vertices)} vertices, more than ` +
-      `${formatCount(LARGE_MESH_VERTICES)}): it is not parameterized automatically. ` +
-      'Press Parameterize to run it — it takes a while, the progress shows over the view and ' +
-      'Cancel stops it.', 'note');
+    showNote(
+      `Large mesh (${formatCount(vertices)} vertices, more than ` +
+        `${formatCount(LARGE_MESH_VERTICES)}): it is not parameterized automatically. ` +
+        'Press Parameterize to run it — it takes a while, the progress shows over the view and ' +
+        'Cancel stops it.',
+      'note',
+    );
     layoutMessage = 'Press Parameterize to flatten this large mesh.';
     redrawLayout();
   });

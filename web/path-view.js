@@ -30,30 +30,55 @@ const PLAIN_LINE_POINTS = 250_000;
 
 // Thin, slightly transparent lines: up to a few hundred paths meet at the source.
 const reachedMaterial = new LineMaterial({
-  color: PATH_COLOR, linewidth: 1, transparent: true, opacity: 0.75,
+  color: PATH_COLOR,
+  linewidth: 1,
+  transparent: true,
+  opacity: 0.75,
 });
 const failedMaterial = new LineMaterial({ color: FAILED_COLOR, linewidth: 1.8, dashed: true });
 const otherArcMaterial = new LineMaterial({
-  color: OTHER_ARC_COLOR, linewidth: 1.5, transparent: true, opacity: 0.55, dashed: true,
+  color: OTHER_ARC_COLOR,
+  linewidth: 1.5,
+  transparent: true,
+  opacity: 0.55,
+  dashed: true,
 });
 const highlightMaterial = new LineMaterial({ color: HIGHLIGHT_COLOR, linewidth: 4.5 });
 const sourceMaterial = new THREE.MeshStandardMaterial({
-  color: SOURCE_COLOR, emissive: 0x555555, roughness: 0.4,
+  color: SOURCE_COLOR,
+  emissive: 0x555555,
+  roughness: 0.4,
 });
 const addedMaterial = new THREE.MeshStandardMaterial({
-  color: ADDED_COLOR, emissive: 0x3a1050, roughness: 0.4,
+  color: ADDED_COLOR,
+  emissive: 0x3a1050,
+  roughness: 0.4,
 });
 const basePlaneMaterial = new THREE.MeshBasicMaterial({
-  color: BASE_PLANE_COLOR, transparent: true, opacity: 0.1, side: THREE.DoubleSide, depthWrite: false,
+  color: BASE_PLANE_COLOR,
+  transparent: true,
+  opacity: 0.1,
+  side: THREE.DoubleSide,
+  depthWrite: false,
 });
 const basePlaneRimMaterial = new THREE.LineBasicMaterial({
-  color: BASE_PLANE_COLOR, transparent: true, opacity: 0.45, depthWrite: false,
+  color: BASE_PLANE_COLOR,
+  transparent: true,
+  opacity: 0.45,
+  depthWrite: false,
 });
 const cutPlaneMaterial = new THREE.MeshBasicMaterial({
-  color: HIGHLIGHT_COLOR, transparent: true, opacity: 0.16, side: THREE.DoubleSide, depthWrite: false,
+  color: HIGHLIGHT_COLOR,
+  transparent: true,
+  opacity: 0.16,
+  side: THREE.DoubleSide,
+  depthWrite: false,
 });
 const cutPlaneRimMaterial = new THREE.LineBasicMaterial({
-  color: HIGHLIGHT_COLOR, transparent: true, opacity: 0.6, depthWrite: false,
+  color: HIGHLIGHT_COLOR,
+  transparent: true,
+  opacity: 0.6,
+  depthWrite: false,
 });
 const markerGeometry = new THREE.SphereGeometry(1, 24, 16); // scaled per marker
 // The plain-line fallback for many paths (see FAT_LINE_SEGMENTS): 1 pixel, failed paths solid red;
@@ -163,8 +188,12 @@ function pathLines(reply, paths, material) {
 
 /** A translucent quad at `origin` with edges along unit vectors u, v over [u0,u1]×[v0,v1], plus its rim. */
 function planeQuad(origin, u, v, [u0, u1], [v0, v1], fill, rim) {
-  const corners = [[u0, v0], [u1, v0], [u1, v1], [u0, v1]].map(([a, b]) =>
-    origin.clone().addScaledVector(u, a).addScaledVector(v, b));
+  const corners = [
+    [u0, v0],
+    [u1, v0],
+    [u1, v1],
+    [u0, v1],
+  ].map(([a, b]) => origin.clone().addScaledVector(u, a).addScaledVector(v, b));
   const geometry = new THREE.BufferGeometry().setFromPoints(corners);
   geometry.setIndex([0, 1, 2, 0, 2, 3]);
   const group = new THREE.Group();
@@ -179,7 +208,8 @@ function planeQuad(origin, u, v, [u0, u1], [v0, v1], fill, rim) {
 function basePlaneDisc(origin, normal, radius) {
   const group = new THREE.Group();
   const disc = new THREE.Mesh(new THREE.CircleGeometry(radius, 96), basePlaneMaterial);
-  const rimPoints = new THREE.EllipseCurve(0, 0, radius, radius).getPoints(96)
+  const rimPoints = new THREE.EllipseCurve(0, 0, radius, radius)
+    .getPoints(96)
     .map((p) => new THREE.Vector3(p.x, p.y, 0));
   const rim = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(rimPoints), basePlaneRimMaterial);
   disc.renderOrder = rim.renderOrder = 3;
@@ -222,7 +252,10 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(6), 3));
     geometry.setIndex([0, 1]);
     const warm = new THREE.Scene();
-    warm.add(new THREE.LineSegments(geometry, plainReachedMaterial), new THREE.LineSegments(geometry, plainFailedMaterial));
+    warm.add(
+      new THREE.LineSegments(geometry, plainReachedMaterial),
+      new THREE.LineSegments(geometry, plainFailedMaterial),
+    );
     view.renderer.render(warm, view.camera);
     geometry.dispose();
     view.requestRender(); // the real scene replaces the warm-up frame
@@ -251,17 +284,21 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     let stride = 1;
     const plain = segmentCount(reply, reply.statuses.keys()) > FAT_LINE_SEGMENTS;
     if (plain) {
-      ({ lines, stride } = plainPathLines(reply, [[reached, plainReachedMaterial], [failed, plainFailedMaterial]]));
+      ({ lines, stride } = plainPathLines(reply, [
+        [reached, plainReachedMaterial],
+        [failed, plainFailedMaterial],
+      ]));
     } else {
-      lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)]
-        .filter(Boolean);
+      lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)].filter(Boolean);
     }
     // Closed surfaces: the other arc of every section that closes through its destination (not with
     // plain lines: so many paths come only from boundaries, which a closed surface has none of).
     const withOtherArc = [];
     reply.otherArcLengths?.forEach((length, i) => Number.isFinite(length) && withOtherArc.push(i));
-    const otherArcs = plain || !withOtherArc.length ? null
-      : pathLines({ points: reply.otherPoints, offsets: reply.otherOffsets }, withOtherArc, otherArcMaterial);
+    const otherArcs =
+      plain || !withOtherArc.length
+        ? null
+        : pathLines({ points: reply.otherPoints, offsets: reply.otherOffsets }, withOtherArc, otherArcMaterial);
     if (otherArcs) group.add(otherArcs);
     const basePlane = basePlaneDisc(source, normal, 0.42 * scale);
     basePlane.visible = baseVisible;
@@ -275,8 +312,18 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     // ray cast on every pointer move.
     const pickable = plain ? [] : lines;
     shown = {
-      drawnLines: [...lines, otherArcs].filter(Boolean), pickableLines: pickable,
-      reply, source, normal, lines: pickable, plain, stride, basePlane, highlight, cutPlane, hovered: -1,
+      drawnLines: [...lines, otherArcs].filter(Boolean),
+      pickableLines: pickable,
+      reply,
+      source,
+      normal,
+      lines: pickable,
+      plain,
+      stride,
+      basePlane,
+      highlight,
+      cutPlane,
+      hovered: -1,
       otherArcs: otherArcs ? withOtherArc.length : 0,
     };
     applyStyle();
@@ -311,20 +358,25 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     const extend = (p) => {
       const d = p.clone().sub(source);
       const [a, b] = [d.dot(along), d.dot(normal)];
-      uRange[0] = Math.min(uRange[0], a); uRange[1] = Math.max(uRange[1], a);
-      vRange[0] = Math.min(vRange[0], b); vRange[1] = Math.max(vRange[1], b);
+      uRange[0] = Math.min(uRange[0], a);
+      uRange[1] = Math.max(uRange[1], a);
+      vRange[0] = Math.min(vRange[0], b);
+      vRange[1] = Math.max(vRange[1], b);
     };
     const target = reply.targetPositions.subarray(3 * i, 3 * i + 3);
     if (Number.isFinite(target[0])) extend(new THREE.Vector3(...target));
     const p = new THREE.Vector3();
     for (let j = 0; j < path.length; j += 3) extend(p.set(path[j], path[j + 1], path[j + 2]));
-    if (reply.otherOffsets) { // the quad covers the whole section on a closed surface
+    if (reply.otherOffsets) {
+      // the quad covers the whole section on a closed surface
       const other = reply.otherPoints.subarray(3 * reply.otherOffsets[i], 3 * reply.otherOffsets[i + 1]);
       for (let j = 0; j < other.length; j += 3) extend(p.set(other[j], other[j + 1], other[j + 2]));
     }
     const margin = 0.04 * view.scale;
-    uRange[0] -= margin; uRange[1] += margin;
-    vRange[0] -= margin; vRange[1] += margin;
+    uRange[0] -= margin;
+    uRange[1] += margin;
+    vRange[0] -= margin;
+    vRange[1] += margin;
     cutPlane.add(planeQuad(source, along, normal, uRange, vRange, cutPlaneMaterial, cutPlaneRimMaterial));
   }
 

@@ -54,7 +54,8 @@ export function createPicking({ view, surface, paths, tooltip, onPick }) {
     const [hit] = raycaster.intersectObject(mesh, false);
     if (!hit || hit.faceIndex == null) return null;
     const { index, attributes } = mesh.geometry;
-    const corner = (k) => new THREE.Vector3().fromBufferAttribute(attributes.position, index.getX(3 * hit.faceIndex + k));
+    const corner = (k) =>
+      new THREE.Vector3().fromBufferAttribute(attributes.position, index.getX(3 * hit.faceIndex + k));
     const bary = THREE.Triangle.getBarycoord(hit.point, corner(0), corner(1), corner(2), new THREE.Vector3());
     if (!bary) return null; // a degenerate triangle
     // Clamp the rounding noise so the point is inside the face, then renormalize.

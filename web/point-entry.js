@@ -17,7 +17,8 @@ export function parsePoints(text, { vertices, faces, base = 0 }) {
   let rest = String(text).trim();
   while (rest.length) {
     const match = ENTRY.exec(rest);
-    if (!match) throw new Error(`cannot read "${rest.split(/[,;]/)[0].trim()}": write a vertex number or "face F b0 b1 b2"`);
+    if (!match)
+      throw new Error(`cannot read "${rest.split(/[,;]/)[0].trim()}": write a vertex number or "face F b0 b1 b2"`);
     const [whole, face, b0, b1, b2, vertex] = match;
     if (vertex !== undefined) {
       const v = Number(vertex);
@@ -27,7 +28,8 @@ export function parsePoints(text, { vertices, faces, base = 0 }) {
       points.push({ vertex: v - base });
     } else {
       const f = Number(face);
-      if (f < base || f >= faces + base) throw new Error(`face ${f} does not exist: the mesh has faces ${base} to ${faces - 1 + base}`);
+      if (f < base || f >= faces + base)
+        throw new Error(`face ${f} does not exist: the mesh has faces ${base} to ${faces - 1 + base}`);
       const bary = [b0, b1, b2].map(Number);
       const total = bary[0] + bary[1] + bary[2];
       if (bary.some((b) => !Number.isFinite(b) || b < 0) || !(total > 0)) {

@@ -44,14 +44,22 @@ function requestTitle(type, payload) {
       const name = payload.name ?? '';
       return payload.restore ? `Reloading “${name}” in a new worker` : `Loading “${name}”`;
     }
-    case 'paths': return 'Straightest paths';
-    case 'distances': return 'Heat distances';
-    case 'parameterize': return `Parameterization (${payload.boundary ?? 'measured'} boundary)`;
-    case 'compare': return 'Comparison (every boundary × weights)';
-    case 'exportObj': return 'OBJ export';
-    case 'atlas': return `Texture atlas (${payload.resolution ?? 1024} texels, padding ${payload.padding ?? 2})`;
-    case 'geodesics': return 'Geodesics to the destination';
-    default: return null; // 'init' and the like: no group
+    case 'paths':
+      return 'Straightest paths';
+    case 'distances':
+      return 'Heat distances';
+    case 'parameterize':
+      return `Parameterization (${payload.boundary ?? 'measured'} boundary)`;
+    case 'compare':
+      return 'Comparison (every boundary × weights)';
+    case 'exportObj':
+      return 'OBJ export';
+    case 'atlas':
+      return `Texture atlas (${payload.resolution ?? 1024} texels, padding ${payload.padding ?? 2})`;
+    case 'geodesics':
+      return 'Geodesics to the destination';
+    default:
+      return null; // 'init' and the like: no group
   }
 }
 
@@ -145,7 +153,8 @@ export function createProgressView({ onCancel }) {
         const running = !found && entry.started && entry.fraction < 1;
         if (running) found = true;
         entry.item.className = `stage ${entry.fraction >= 1 ? 'done' : running ? 'active' : entry.started ? 'started' : 'pending'}`;
-        if (running && entry.fraction === 0) entry.bar.removeAttribute('value'); // indeterminate
+        if (running && entry.fraction === 0)
+          entry.bar.removeAttribute('value'); // indeterminate
         else entry.bar.value = entry.fraction;
       }
     }

@@ -118,7 +118,9 @@ class StageProgress {
     this.fractions = stages.map(() => -1); // -1: not reported yet
     this.current = -1; // index of the running stage
     this.lastReport = 0;
-    this.callback = (stage, fraction) => { this.update(stage, fraction); };
+    this.callback = (stage, fraction) => {
+      this.update(stage, fraction);
+    };
     if (stages.length) this.update(stages[0], 0);
   }
 
@@ -191,16 +193,26 @@ export function createRequests({ observer = null } = {}) {
   function plannedStages(type, payload) {
     switch (type) {
       case 'sample':
-      case 'file': return payload.restore ? ['load'] : ['load', 'upload'];
-      case 'paths': return ['trace', 'upload'];
-      case 'distances': return ['heat', 'upload'];
-      case 'parameterize': return [...(disk() ? [] : ['cut']), ...parameterizeStages(payload.boundary), 'overlays', 'upload'];
-      case 'compare': return ['compare'];
-      case 'exportObj': return ['export'];
-      case 'atlas': return ['segment', 'flatten', 'pack', 'measure'];
-      case 'geodesics': return ['distances', 'trace', 'shoot'];
-      case 'exactRatio': return ['distances', 'trace'];
-      default: return [];
+      case 'file':
+        return payload.restore ? ['load'] : ['load', 'upload'];
+      case 'paths':
+        return ['trace', 'upload'];
+      case 'distances':
+        return ['heat', 'upload'];
+      case 'parameterize':
+        return [...(disk() ? [] : ['cut']), ...parameterizeStages(payload.boundary), 'overlays', 'upload'];
+      case 'compare':
+        return ['compare'];
+      case 'exportObj':
+        return ['export'];
+      case 'atlas':
+        return ['segment', 'flatten', 'pack', 'measure'];
+      case 'geodesics':
+        return ['distances', 'trace', 'shoot'];
+      case 'exactRatio':
+        return ['distances', 'trace'];
+      default:
+        return [];
     }
   }
 
@@ -208,10 +220,17 @@ export function createRequests({ observer = null } = {}) {
   async function meshReply(made, label, start, progress, step) {
     progress.update('upload', 0);
     try {
-      const [meshInfo, positions, indices, normals] = await step(() => Promise.all([
-        made.info(), made.positions(), made.indices(), made.vertexNormals()]));
+      const [meshInfo, positions, indices, normals] = await step(() =>
+        Promise.all([made.info(), made.positions(), made.indices(), made.vertexNormals()]),
+      );
       return {
-        type: 'mesh', mesh: made, label, positions: new Float32Array(positions), indices, normals, info: meshInfo,
+        type: 'mesh',
+        mesh: made,
+        label,
+        positions: new Float32Array(positions),
+        indices,
+        normals,
+        info: meshInfo,
         timeMs: performance.now() - start,
       };
     } catch (err) {
@@ -248,7 +267,10 @@ export function createRequests({ observer = null } = {}) {
       const result = await step(() => requireMesh().straightestPaths(options));
       progress.update('upload', 0);
       return {
-        ...result, type: 'paths', targetPositions: new Float32Array(result.targetPositions), timeMs: performance.now() - start,
+        ...result,
+        type: 'paths',
+        targetPositions: new Float32Array(result.targetPositions),
+        timeMs: performance.now() - start,
       };
     },
 
@@ -265,12 +287,21 @@ export function createRequests({ observer = null } = {}) {
     async parameterize({ source = 'auto', boundary = 'measured', weights = 'shape-preserving' }, progress, step) {
       const target = requireMesh();
       const start = performance.now();
-      const result = await step(() => target.parameterize({ source, boundary, weights, onProgress: progress.callback }));
+      const result = await step(() =>
+        target.parameterize({ source, boundary, weights, onProgress: progress.callback }),
+      );
       const timeMs = performance.now() - start;
       const kinds = worker.polygonBoundaryKinds.filter((kind) => kind !== result.boundary);
-      const others = kinds.length === 0 ? [] : await step(() => target.boundaryPolygons({
-        source: result.source, kinds, onProgress: (stage, fraction) => progress.update('overlays', fraction),
-      }));
+      const others =
+        kinds.length === 0
+          ? []
+          : await step(() =>
+              target.boundaryPolygons({
+                source: result.source,
+                kinds,
+                onProgress: (stage, fraction) => progress.update('overlays', fraction),
+              }),
+            );
       progress.update('upload', 0);
       const overlays = worker.boundaryKinds.flatMap((kind) => {
         if (kind === result.boundary) return [{ boundary: kind, polygon: result.boundaryPolygon.slice(), error: null }];
@@ -282,10 +313,13 @@ export function createRequests({ observer = null } = {}) {
 
     async compare({ source = 'auto' }, progress, step) {
       const total = worker.boundaryKinds.length * worker.weightKinds.length; // the core's default cells
-      const { rows, best } = await step(() => requireMesh().compareParameterizations({
-        source,
-        onProgress: (stage, fraction) => progress.update('compare', fraction, { done: Math.round(fraction * total), total }),
-      }));
+      const { rows, best } = await step(() =>
+        requireMesh().compareParameterizations({
+          source,
+          onProgress: (stage, fraction) =>
+            progress.update('compare', fraction, { done: Math.round(fraction * total), total }),
+        }),
+      );
       return { type: 'comparison', source, rows, best };
     },
 
@@ -298,9 +332,14 @@ export function createRequests({ observer = null } = {}) {
       const length = reached ? {} : { length: exact.distances[0] };
       const shot = await step(() => onDisplay.shootGeodesic({ source, toward: target, ...length, onProgress }));
       return {
-        type: 'geodesics', target,
+        type: 'geodesics',
+        target,
         exact: { distance: exact.distances[0], points: exact.points.slice(3 * exact.offsets[0], 3 * exact.offsets[1]) },
-        plane: { length: plane.lengths[0], status: plane.statuses[0], points: plane.points.slice(3 * plane.offsets[0], 3 * plane.offsets[1]) },
+        plane: {
+          length: plane.lengths[0],
+          status: plane.statuses[0],
+          points: plane.points.slice(3 * plane.offsets[0], 3 * plane.offsets[1]),
+        },
         shot,
       };
     },
@@ -309,14 +348,24 @@ export function createRequests({ observer = null } = {}) {
       if (closed()) throw categorizedError('a closed mesh has no boundary to compare against', 'topology');
       const onDisplay = requireMesh();
       const onProgress = progress.callback;
-      const exact = await step(() => onDisplay.exactShortestPaths({ source, targets: 'boundary', points: false, onProgress }));
-      const plane = await step(() => onDisplay.straightestPaths({ source, targets: 'boundary', points: false, onProgress }));
+      const exact = await step(() =>
+        onDisplay.exactShortestPaths({ source, targets: 'boundary', points: false, onProgress }),
+      );
+      const plane = await step(() =>
+        onDisplay.straightestPaths({ source, targets: 'boundary', points: false, onProgress }),
+      );
       // Both expand 'boundary' into the same loop in the same order.
       const ratios = Float64Array.from(plane.lengths, (length, i) =>
-        (plane.statuses[i] === 'reached' ? length / exact.distances[i] : NaN));
+        plane.statuses[i] === 'reached' ? length / exact.distances[i] : NaN,
+      );
       return {
-        type: 'exactRatio', source: plane.source, targets: exact.targets, distances: exact.distances,
-        lengths: plane.lengths, statuses: plane.statuses, ratios,
+        type: 'exactRatio',
+        source: plane.source,
+        targets: exact.targets,
+        distances: exact.distances,
+        lengths: plane.lengths,
+        statuses: plane.statuses,
+        ratios,
       };
     },
 

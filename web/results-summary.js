@@ -14,7 +14,8 @@ function set(id, text, title = '', className = '') {
   const dd = $(id);
   dd.textContent = text;
   dd.className = className;
-  if (title) dd.title = title; else dd.removeAttribute('title');
+  if (title) dd.title = title;
+  else dd.removeAttribute('title');
 }
 
 function showTime() {
@@ -48,8 +49,11 @@ export function summarizePaths(reply) {
     return;
   }
   const { count, reached } = reply;
-  set('summary-paths', count ? `${formatCount(reached)} / ${formatCount(count)} reached` : 'none',
-    count ? `${count - reached} failed` : 'no destinations');
+  set(
+    'summary-paths',
+    count ? `${formatCount(reached)} / ${formatCount(count)} reached` : 'none',
+    count ? `${count - reached} failed` : 'no destinations',
+  );
   pathsTime = count ? `trace ${formatMs(reply.timings.trace)}` : '';
   showTime();
 }
@@ -62,7 +66,13 @@ export function summarizeStatus(text) {
 
 /** The atlas on display (an 'atlas' reply), or null: the Atlas mode's items of the bar. */
 export function summarizeAtlas(reply) {
-  const ids = ['summary-atlas-charts', 'summary-atlas-l2', 'summary-atlas-linf', 'summary-atlas-utilization', 'summary-atlas-time'];
+  const ids = [
+    'summary-atlas-charts',
+    'summary-atlas-l2',
+    'summary-atlas-linf',
+    'summary-atlas-utilization',
+    'summary-atlas-time',
+  ];
   if (!reply) {
     for (const id of ids) set(id, '–');
     return;

@@ -66,7 +66,8 @@ export function createSession({ observer, display }) {
       clearError();
       hooks.lastError = null;
       displayed = origin;
-      status = `${reply.label}${reply.note ? ` (${reply.note})` : ''}: ${reply.info.vertices} vertices, ` +
+      status =
+        `${reply.label}${reply.note ? ` (${reply.note})` : ''}: ${reply.info.vertices} vertices, ` +
         `${reply.info.faces} faces ` +
         `(${reply.timeMs.toFixed(0)} ms in the worker)`;
       setStatus(status);
@@ -91,11 +92,15 @@ export function createSession({ observer, display }) {
       select.options[0].disabled = true;
     }
     select.value = '';
-    return load(`“${file.name}”`, async (current) => {
-      const bytes = await file.arrayBuffer();
-      if (current.stale()) throw categorizedError('cancelled', 'cancelled'); // do not send it to a new worker
-      return request('file', { name: file.name, bytes });
-    }, { file });
+    return load(
+      `“${file.name}”`,
+      async (current) => {
+        const bytes = await file.arrayBuffer();
+        if (current.stale()) throw categorizedError('cancelled', 'cancelled'); // do not send it to a new worker
+        return request('file', { name: file.name, bytes });
+      },
+      { file },
+    );
   }
 
   /** Nothing on display (after cancelling the reload of the mesh into a restarted worker). */

@@ -21,7 +21,6 @@ export function createUrlSync({ session, param, points }) {
   let pending = wanted.sample || wanted.file ? wanted : null;
   let opening = true; // the page's own first mesh (a link to a file shows the default sample meanwhile)
 
-
   function save() {
     if (pending?.file) return; // the link's file is not open yet: keep the link as it came
     const origin = session.origin;
@@ -52,7 +51,8 @@ export function createUrlSync({ session, param, points }) {
         if (DISPATCHED.includes(name)) control.dispatchEvent(new Event('change'));
       }
       if (wanted.file) {
-        $('file-wanted').textContent = `This link shows “${wanted.file}”: open that file (Open file, or drop it ` +
+        $('file-wanted').textContent =
+          `This link shows “${wanted.file}”: open that file (Open file, or drop it ` +
           'on the view) to see it with the link’s source, destinations and options.';
         $('file-wanted').hidden = false;
       }

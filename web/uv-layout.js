@@ -37,8 +37,10 @@ export function checkerboardCanvas(size = 1024, cells = 16) {
   ctx.beginPath();
   for (let k = 0; k <= cells; k += 4) {
     const x = Math.min(Math.max(k * cell, 1), size - 1);
-    ctx.moveTo(x, 0); ctx.lineTo(x, size);
-    ctx.moveTo(0, x); ctx.lineTo(size, x);
+    ctx.moveTo(x, 0);
+    ctx.lineTo(x, size);
+    ctx.moveTo(0, x);
+    ctx.lineTo(size, x);
   }
   ctx.stroke();
   return canvas;
@@ -61,14 +63,30 @@ export const RASTER_FACES = 50_000;
  */
 export const LAYOUT_THEMES = {
   dark: {
-    background: '#101318', grid: 'rgba(141, 150, 165, 0.16)', frame: 'rgba(141, 150, 165, 0.45)',
-    edges: 'rgba(214, 221, 232, 0.42)', heatEdges: 'rgba(16, 19, 24, 0.35)', halo: 'rgba(0, 0, 0, 0.55)',
-    strong: '#e4e7ec', label: '#a3abb8', text: '#c3c9d3', muted: '#8d96a5', rasterFill: [99, 104, 111],
+    background: '#101318',
+    grid: 'rgba(141, 150, 165, 0.16)',
+    frame: 'rgba(141, 150, 165, 0.45)',
+    edges: 'rgba(214, 221, 232, 0.42)',
+    heatEdges: 'rgba(16, 19, 24, 0.35)',
+    halo: 'rgba(0, 0, 0, 0.55)',
+    strong: '#e4e7ec',
+    label: '#a3abb8',
+    text: '#c3c9d3',
+    muted: '#8d96a5',
+    rasterFill: [99, 104, 111],
   },
   light: {
-    background: '#ffffff', grid: 'rgba(60, 70, 85, 0.14)', frame: 'rgba(60, 70, 85, 0.5)',
-    edges: 'rgba(30, 36, 46, 0.42)', heatEdges: 'rgba(16, 19, 24, 0.3)', halo: 'rgba(255, 255, 255, 0.8)',
-    strong: '#11151b', label: '#3d4552', text: '#2a303a', muted: '#5b6472', rasterFill: [150, 155, 162],
+    background: '#ffffff',
+    grid: 'rgba(60, 70, 85, 0.14)',
+    frame: 'rgba(60, 70, 85, 0.5)',
+    edges: 'rgba(30, 36, 46, 0.42)',
+    heatEdges: 'rgba(16, 19, 24, 0.3)',
+    halo: 'rgba(255, 255, 255, 0.8)',
+    strong: '#11151b',
+    label: '#3d4552',
+    text: '#2a303a',
+    muted: '#5b6472',
+    rasterFill: [150, 155, 162],
   },
 };
 LAYOUT_THEMES.transparent = { ...LAYOUT_THEMES.light, background: null };
@@ -163,8 +181,10 @@ export function drawLayout(canvas, layout, message = '', { size = null, theme = 
   ctx.lineWidth = 1;
   ctx.beginPath();
   for (let k = 1; k < 4; k++) {
-    ctx.moveTo(px(k / 4), py(0)); ctx.lineTo(px(k / 4), py(1));
-    ctx.moveTo(px(0), py(k / 4)); ctx.lineTo(px(1), py(k / 4));
+    ctx.moveTo(px(k / 4), py(0));
+    ctx.lineTo(px(k / 4), py(1));
+    ctx.moveTo(px(0), py(k / 4));
+    ctx.lineTo(px(1), py(k / 4));
   }
   ctx.stroke();
   ctx.strokeStyle = colors.frame;
@@ -340,7 +360,8 @@ function drawLegend(ctx, { overlays, boundary, heat, seam, text, colors }, x, y)
     ctx.lineWidth = isChosen ? 3 : 1.4;
     ctx.setLineDash(isChosen ? [] : [5, 3]);
     ctx.beginPath();
-    ctx.moveTo(cx, y + 6); ctx.lineTo(cx + 18, y + 6);
+    ctx.moveTo(cx, y + 6);
+    ctx.lineTo(cx + 18, y + 6);
     ctx.stroke();
     ctx.setLineDash([]);
     ctx.font = `${isChosen ? 600 : 400} 11.5px ${FONT}`;

@@ -11,7 +11,10 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import process from 'node:process';
 
 function readOff(path) {
-  const rows = readFileSync(path, 'utf8').split(/\r?\n/).map((l) => l.replace(/#.*/, '').trim()).filter((l) => l.length > 0)
+  const rows = readFileSync(path, 'utf8')
+    .split(/\r?\n/)
+    .map((l) => l.replace(/#.*/, '').trim())
+    .filter((l) => l.length > 0)
     .map((l) => l.split(/\s+/));
   if (/^[A-Z]*OFF$/.test(rows[0][0])) rows[0].shift();
   if (rows[0].length === 0) rows.shift();
@@ -56,7 +59,10 @@ function writeOff(path, { positions, triangles }) {
   const parts = [`OFF\n${positions.length / 3} ${triangles.length / 3} 0\n`];
   const g = (x) => String(Number(x.toPrecision(9)));
   let chunk = [];
-  const flush = () => { parts.push(chunk.join('')); chunk = []; };
+  const flush = () => {
+    parts.push(chunk.join(''));
+    chunk = [];
+  };
   for (let v = 0; v < positions.length; v += 3) {
     chunk.push(`${g(positions[v])} ${g(positions[v + 1])} ${g(positions[v + 2])}\n`);
     if (chunk.length === 65536) flush();

@@ -27,13 +27,19 @@ async function loadXatlasApi() {
   const { default: createXAtlasModule } = await import(join(dist, 'xatlas.js'));
   const XatlasApi = Api(createXAtlasModule);
   return new Promise((resolve) => {
-    const api = new XatlasApi(() => resolve(api), (path, dir) => (path === 'xatlas.wasm' ? join(dist, path) : dir + path));
+    const api = new XatlasApi(
+      () => resolve(api),
+      (path, dir) => (path === 'xatlas.wasm' ? join(dist, path) : dir + path),
+    );
   });
 }
 
 /** The non-comment tokens of a text file's lines ('#' starts a comment in both OFF and OBJ). */
 function lines(text) {
-  return text.split(/\r?\n/).map((line) => line.replace(/#.*/, '').trim()).filter((line) => line.length > 0);
+  return text
+    .split(/\r?\n/)
+    .map((line) => line.replace(/#.*/, '').trim())
+    .filter((line) => line.length > 0);
 }
 
 /** Fan-triangulates one polygon (as core's readers do for convex polygons: CGAL's samples are triangles). */
@@ -54,13 +60,20 @@ function readOff(text) {
 }
 
 function readObj(text) {
-  const vertices = [], indices = [];
+  const vertices = [],
+    indices = [];
   for (const line of lines(text)) {
     const [tag, ...rest] = line.split(/\s+/);
     if (tag === 'v') vertices.push(...rest.slice(0, 3).map(Number));
     if (tag === 'f') {
       const nv = vertices.length / 3;
-      pushPolygon(indices, rest.map((c) => { const i = parseInt(c, 10); return i < 0 ? nv + i : i - 1; }));
+      pushPolygon(
+        indices,
+        rest.map((c) => {
+          const i = parseInt(c, 10);
+          return i < 0 ? nv + i : i - 1;
+        }),
+      );
     }
   }
   return { vertices, indices };
@@ -91,7 +104,8 @@ function readAtlasOutput(module) {
  * order), and each output corner is matched to the input corner whose vertex its xref names.
  */
 function cornerUvOfInput(indices, out) {
-  if (out.index.length !== indices.length) throw new Error(`xatlas returned ${out.index.length / 3} faces for ${indices.length / 3}`);
+  if (out.index.length !== indices.length)
+    throw new Error(`xatlas returned ${out.index.length / 3} faces for ${indices.length / 3}`);
   const cornerUv = new Array(2 * indices.length);
   for (let c = 0; c < indices.length; c += 3) {
     for (let k = 0; k < 3; ++k) {
@@ -135,5 +149,9 @@ try {
   result = { error: String(error?.message ?? error) };
 }
 writeFileSync(outPath, JSON.stringify({ mesh: meshPath, padding: padding ?? 0, ...result }));
-process.stdout.write(result.error ? `${meshPath}: ${result.error}\n` : `${meshPath}: ${result.width}x${result.height}, ${result.seconds.toFixed(2)} s\n`);
+process.stdout.write(
+  result.error
+    ? `${meshPath}: ${result.error}\n`
+    : `${meshPath}: ${result.width}x${result.height}, ${result.seconds.toFixed(2)} s\n`,
+);
 process.exit(result.error ? 1 : 0);

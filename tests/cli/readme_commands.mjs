@@ -82,7 +82,9 @@ if (!npmExample) {
   rmSync(dir, { recursive: true, force: true });
   ran += 1;
   if (run.status !== 0)
-    failures.push(`README.md npm example at line ${npmExample.line}:\n${npmExample.text}\nexit ${run.status}\n${run.stderr}`);
+    failures.push(
+      `README.md npm example at line ${npmExample.line}:\n${npmExample.text}\nexit ${run.status}\n${run.stderr}`,
+    );
 }
 
 for (const failure of failures) console.error(`FAILED: ${failure}\n`);

@@ -54,13 +54,17 @@ function fitDistance(cam, radius) {
 
 async function loadQuarterCylinder(page) {
   await page.setInputFiles('#file-input', {
-    name: 'quarter-cylinder.obj', mimeType: 'text/plain', buffer: Buffer.from(quarterCylinderObj()),
+    name: 'quarter-cylinder.obj',
+    mimeType: 'text/plain',
+    buffer: Buffer.from(quarterCylinderObj()),
   });
   await expectReady(page, 'window.__straightest.lastInfo?.vertices === 81');
 }
 
 describe('camera', () => {
-  pageTest('Up: auto is z for a sample and y for a standing file; the menu sets the camera up vector', {},
+  pageTest(
+    'Up: auto is z for a sample and y for a standing file; the menu sets the camera up vector',
+    {},
     async ({ page }) => {
       let cam = await cameraWhen(page, (c) => c.upAxis === 'z');
       assert.deepEqual(cam.up, [0, 0, 1], 'the mountain sample opens z up');
@@ -75,15 +79,22 @@ describe('camera', () => {
       // Opened from above: the camera sits on the +y side of the centre.
       assert(dot(unit(sub(cam.position, cam.target)), [0, 1, 0]) > 0.3, 'the camera is not above the mesh');
 
-      for (const [axis, up] of [['z', [0, 0, 1]], ['x', [1, 0, 0]], ['y', [0, 1, 0]]]) {
+      for (const [axis, up] of [
+        ['z', [0, 0, 1]],
+        ['x', [1, 0, 0]],
+        ['y', [0, 1, 0]],
+      ]) {
         await page.selectOption('#up-select', axis);
         cam = await cameraWhen(page, (c, a) => c.upAxis === a, axis);
         assert.deepEqual(cam.up, up, `Up ${axis}: camera.up is ${cam.up}`);
         assert(dot(unit(sub(cam.position, cam.target)), up) > 0.3, `Up ${axis}: the camera is not above the mesh`);
       }
-    });
+    },
+  );
 
-  pageTest('Fit keeps the direction and puts the whole bounding sphere in view; Reset view restores the opening view', {},
+  pageTest(
+    'Fit keeps the direction and puts the whole bounding sphere in view; Reset view restores the opening view',
+    {},
     async ({ page }) => {
       await loadQuarterCylinder(page);
       const opening = await cameraWhen(page, (c) => c.upAxis === 'y');
@@ -92,11 +103,19 @@ describe('camera', () => {
       const box = await page.locator('#view-canvas').boundingBox();
       await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
       for (let i = 0; i < 8; i += 1) await page.mouse.wheel(0, -400);
-      const zoomed = await cameraWhen(page, (c, r) => Math.hypot(...c.position.map((v, i) => v - c.target[i])) < r, radius);
+      const zoomed = await cameraWhen(
+        page,
+        (c, r) => Math.hypot(...c.position.map((v, i) => v - c.target[i])) < r,
+        radius,
+      );
       assert(norm(sub(zoomed.position, zoomed.target)) < fitDistance(zoomed, radius), 'the wheel did not zoom in');
 
       await page.click('#fit-button');
-      const fitted = await cameraWhen(page, (c, r) => Math.hypot(...c.position.map((v, i) => v - c.target[i])) > r, radius);
+      const fitted = await cameraWhen(
+        page,
+        (c, r) => Math.hypot(...c.position.map((v, i) => v - c.target[i])) > r,
+        radius,
+      );
       const distance = norm(sub(fitted.position, fitted.target));
       const needed = fitDistance(fitted, radius);
       assert(distance >= needed * (1 - 1e-9), `at ${distance} the bounding sphere (radius ${radius}) needs ${needed}`);
@@ -106,12 +125,21 @@ describe('camera', () => {
       assert(dot(unit(sub(fitted.position, fitted.target)), before) > 0.999, 'Fit changed the viewing direction');
 
       await page.click('#view-reset-button');
-      const reset = await cameraWhen(page, (c, d) => Math.abs(Math.hypot(...c.position.map((v, i) => v - c.target[i])) - d) < 1e-6 * d,
-        norm(sub(opening.position, opening.target)));
-      assert(norm(sub(reset.position, opening.position)) < 1e-6 * radius, `Reset view put the camera at ${reset.position}, opened at ${opening.position}`);
-    });
+      const reset = await cameraWhen(
+        page,
+        (c, d) => Math.abs(Math.hypot(...c.position.map((v, i) => v - c.target[i])) - d) < 1e-6 * d,
+        norm(sub(opening.position, opening.target)),
+      );
+      assert(
+        norm(sub(reset.position, opening.position)) < 1e-6 * radius,
+        `Reset view put the camera at ${reset.position}, opened at ${opening.position}`,
+      );
+    },
+  );
 
-  pageTest('Top, Front and Side look from the up axis, the front and the right of the current up axis', {},
+  pageTest(
+    'Top, Front and Side look from the up axis, the front and the right of the current up axis',
+    {},
     async ({ page }) => {
       // z up (the mountain): right x, front = x × z = -y. y up (the quarter cylinder): front = x × y = +z.
       const expected = {
@@ -124,13 +152,21 @@ describe('camera', () => {
         const { radius } = await boundingSphere(page);
         for (const [preset, direction] of Object.entries(expected[axis])) {
           await page.click(`#view-${preset}-button`);
-          const cam = await cameraWhen(page, (c, d) => {
-            const v = c.position.map((x, i) => x - c.target[i]);
-            return v.reduce((s, x, i) => s + x * d[i], 0) / Math.hypot(...v) > 0.999;
-          }, direction);
+          const cam = await cameraWhen(
+            page,
+            (c, d) => {
+              const v = c.position.map((x, i) => x - c.target[i]);
+              return v.reduce((s, x, i) => s + x * d[i], 0) / Math.hypot(...v) > 0.999;
+            },
+            direction,
+          );
           const distance = norm(sub(cam.position, cam.target));
-          assert(Math.abs(distance - fitDistance(cam, radius)) < 1e-6 * distance, `${axis} up, ${preset}: the sphere is not fitted`);
+          assert(
+            Math.abs(distance - fitDistance(cam, radius)) < 1e-6 * distance,
+            `${axis} up, ${preset}: the sphere is not fitted`,
+          );
         }
       }
-    });
+    },
+  );
 });

@@ -32,47 +32,61 @@ async function ratioPlot(page) {
 
 describe('straightest ÷ exact, and the poor-result hint', () => {
   // One page for both (every page load counts against the run's time): the mountain, a plane, holes.
-  pageTest('ratios ≥ 1 on the mountain, some above, exactly 1 on a plane; a hint only where traces fail', {
-    ready: 'window.__straightest.param && !window.__straightest.progress.busy',
-  }, async ({ page }) => {
-    const opened = await hooks(page);
-    assert.equal(opened.pathsHint, null, `a hint on the default sample: ${opened.pathsHint}`);
-    assert.equal(opened.paramHint, null, `a hint on the default sample: ${opened.paramHint}`);
-    assert(await page.isHidden('#paths-hint') && await page.isHidden('#param-hint'));
+  pageTest(
+    'ratios ≥ 1 on the mountain, some above, exactly 1 on a plane; a hint only where traces fail',
+    {
+      ready: 'window.__straightest.param && !window.__straightest.progress.busy',
+    },
+    async ({ page }) => {
+      const opened = await hooks(page);
+      assert.equal(opened.pathsHint, null, `a hint on the default sample: ${opened.pathsHint}`);
+      assert.equal(opened.paramHint, null, `a hint on the default sample: ${opened.paramHint}`);
+      assert((await page.isHidden('#paths-hint')) && (await page.isHidden('#param-hint')));
 
-    let plot = await ratioPlot(page);
-    assert.equal(plot.count, opened.paths.count, 'one ratio per boundary vertex');
-    assert.equal(plot.failed, 0, 'every trace on the mountain reaches the boundary');
-    // Exact paths are the shortest: no straightest path is shorter.
-    for (const r of plot.ratios) assert(r >= 1 - 1e-9, `a ratio of ${r} < 1: the exact distance is not the least`);
-    assert(plot.max > 1 + 1e-4, `the mountain bends paths, yet the largest ratio is ${plot.max}`);
-    assert(plot.min <= plot.median && plot.median <= plot.max);
-    assert.equal(await page.locator('#exact-ratio-plot circle').count(), plot.count, 'one dot per ratio');
-    assert.equal(await page.locator('#exact-ratio-table tbody tr').count(), plot.count, 'one row per target');
-    assert.match(await page.textContent('#exact-ratio-summary'), /196 boundary targets .* 0 failed traces/);
+      let plot = await ratioPlot(page);
+      assert.equal(plot.count, opened.paths.count, 'one ratio per boundary vertex');
+      assert.equal(plot.failed, 0, 'every trace on the mountain reaches the boundary');
+      // Exact paths are the shortest: no straightest path is shorter.
+      for (const r of plot.ratios) assert(r >= 1 - 1e-9, `a ratio of ${r} < 1: the exact distance is not the least`);
+      assert(plot.max > 1 + 1e-4, `the mountain bends paths, yet the largest ratio is ${plot.max}`);
+      assert(plot.min <= plot.median && plot.median <= plot.max);
+      assert.equal(await page.locator('#exact-ratio-plot circle').count(), plot.count, 'one dot per ratio');
+      assert.equal(await page.locator('#exact-ratio-table tbody tr').count(), plot.count, 'one row per target');
+      assert.match(await page.textContent('#exact-ratio-summary'), /196 boundary targets .* 0 failed traces/);
 
-    // Sorting by ratio, twice: descending, the largest first.
-    await page.click('#exact-ratio-table th[data-key="ratio"]');
-    await page.click('#exact-ratio-table th[data-key="ratio"]');
-    const first = Number(await page.textContent('#exact-ratio-table tbody tr:first-child td:nth-child(5)'));
-    assert(Math.abs(first - plot.max) < 1e-6 * plot.max, `the first row after sorting shows ${first}, the max is ${plot.max}`);
+      // Sorting by ratio, twice: descending, the largest first.
+      await page.click('#exact-ratio-table th[data-key="ratio"]');
+      await page.click('#exact-ratio-table th[data-key="ratio"]');
+      const first = Number(await page.textContent('#exact-ratio-table tbody tr:first-child td:nth-child(5)'));
+      assert(
+        Math.abs(first - plot.max) < 1e-6 * plot.max,
+        `the first row after sorting shows ${first}, the max is ${plot.max}`,
+      );
 
-    await page.setInputFiles('#file-input', { name: 'flat.obj', mimeType: 'text/plain', buffer: Buffer.from(flatGridObj()) });
-    await expectReady(page, 'window.__straightest.lastInfo?.vertices === 121');
-    assert.equal((await hooks(page)).exactRatio, null, 'the plot of the previous mesh is gone');
-    assert(await page.isHidden('#exact-ratio'));
-    plot = await ratioPlot(page);
-    assert.equal(plot.count, 40, 'the grid has 40 boundary vertices');
-    for (const r of plot.ratios) assert(Math.abs(r - 1) < 1e-9, `on a plane every ratio is 1, got ${r}`);
+      await page.setInputFiles('#file-input', {
+        name: 'flat.obj',
+        mimeType: 'text/plain',
+        buffer: Buffer.from(flatGridObj()),
+      });
+      await expectReady(page, 'window.__straightest.lastInfo?.vertices === 121');
+      assert.equal((await hooks(page)).exactRatio, null, 'the plot of the previous mesh is gone');
+      assert(await page.isHidden('#exact-ratio'));
+      plot = await ratioPlot(page);
+      assert.equal(plot.count, 40, 'the grid has 40 boundary vertices');
+      for (const r of plot.ratios) assert(Math.abs(r - 1) < 1e-9, `on a plane every ratio is 1, got ${r}`);
 
-    // The holes sample: paths from the centre to the outer loop run into the inner loops.
-    await page.selectOption('#sample-select', 'holes');
-    await expectReady(page, 'window.__straightest.lastInfo?.boundaryLoops?.length === 4 && window.__straightest.pathsHint !== null');
-    const now = await hooks(page);
-    const failed = now.paths.count - now.paths.reached;
-    assert(failed > 0, 'no trace failed on the holes sample');
-    assert(now.pathsHint.startsWith(`${failed} of ${now.paths.count} `), now.pathsHint);
-    assert(await page.isVisible('#paths-hint'));
-    assert.match(await page.textContent('#paths-hint'), /Move the centre/);
-  });
+      // The holes sample: paths from the centre to the outer loop run into the inner loops.
+      await page.selectOption('#sample-select', 'holes');
+      await expectReady(
+        page,
+        'window.__straightest.lastInfo?.boundaryLoops?.length === 4 && window.__straightest.pathsHint !== null',
+      );
+      const now = await hooks(page);
+      const failed = now.paths.count - now.paths.reached;
+      assert(failed > 0, 'no trace failed on the holes sample');
+      assert(now.pathsHint.startsWith(`${failed} of ${now.paths.count} `), now.pathsHint);
+      assert(await page.isVisible('#paths-hint'));
+      assert.match(await page.textContent('#paths-hint'), /Move the centre/);
+    },
+  );
 });

@@ -21,7 +21,8 @@ fs.writeFileSync(file, heightFieldObj(n));
 
 const server = await startServer({ port: 0 });
 const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium', headless: true,
+  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+  headless: true,
   args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
 });
 try {
@@ -30,12 +31,17 @@ try {
   await page.addInitScript(() => {
     window.__longTasks = [];
     new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) window.__longTasks.push({ start: entry.startTime, duration: entry.duration });
+      for (const entry of list.getEntries())
+        window.__longTasks.push({ start: entry.startTime, duration: entry.duration });
     }).observe({ type: 'longtask', buffered: true });
   });
   await page.goto(`http://127.0.0.1:${server.address().port}/web/index.html`);
-  const idle = (predicate, timeout = 600_000) => page.waitForFunction(
-    `document.body.dataset.state === 'ready' && !window.__straightest.progress.busy && (${predicate})`, null, { timeout, polling: 200 });
+  const idle = (predicate, timeout = 600_000) =>
+    page.waitForFunction(
+      `document.body.dataset.state === 'ready' && !window.__straightest.progress.busy && (${predicate})`,
+      null,
+      { timeout, polling: 200 },
+    );
   await idle('window.__straightest.param');
   const phases = [];
   const phase = async (name, run) => {
@@ -60,8 +66,15 @@ try {
   for (const { name, seconds, tasks } of phases) {
     const durations = tasks.map((t) => t.duration).sort((a, b) => b - a);
     const total = durations.reduce((a, b) => a + b, 0);
-    console.log(`${name}: ${seconds.toFixed(1)} s; ${durations.length} long tasks, longest ${(durations[0] ?? 0).toFixed(0)} ms, ` +
-      `total ${total.toFixed(0)} ms; longest five: ${durations.slice(0, 5).map((d) => d.toFixed(0)).join(', ') || '–'} ms`);
+    console.log(
+      `${name}: ${seconds.toFixed(1)} s; ${durations.length} long tasks, longest ${(durations[0] ?? 0).toFixed(0)} ms, ` +
+        `total ${total.toFixed(0)} ms; longest five: ${
+          durations
+            .slice(0, 5)
+            .map((d) => d.toFixed(0))
+            .join(', ') || '–'
+        } ms`,
+    );
   }
 } finally {
   await browser.close();

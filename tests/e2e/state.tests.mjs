@@ -14,72 +14,101 @@ const hooks = (page) => page.evaluate(() => window.__straightest);
 const idle = 'window.__straightest.param && !window.__straightest.progress.busy';
 
 describe('default per mesh and state in the URL', () => {
-  pageTest('a closed mesh opens with the auto boundary and says why; a click moves its source', { ready: idle }, async ({ page }) => {
-    assert((await page.inputValue('#boundary-select')) === 'measured', 'the mountain (a disk) opens measured');
-    assert(await page.isHidden('#param-why'), 'a disk gets a note about its boundary');
-    await page.setInputFiles('#file-input', { name: 'icosphere.obj', mimeType: 'text/plain', buffer: await readFile(ICOSPHERE) });
-    await expectReady(page, `window.__straightest.lastInfo.vertices === 42 && ${idle}`);
-    const { param, defaultBoundary } = await hooks(page);
-    assert(defaultBoundary.boundary === 'auto' && defaultBoundary.applied, JSON.stringify(defaultBoundary));
-    assert((await page.inputValue('#boundary-select')) === 'auto', 'the menu does not say auto');
-    assert(param.bijective && param.cut === 'path', `the closed mesh's map: ${JSON.stringify(param)}`);
-    const why = await page.textContent('#param-why');
-    assert(await page.isVisible('#param-why') && /auto/i.test(why) && /closed/.test(why), `the note says '${why}'`);
-    assert((await page.textContent('#param-method')).startsWith('auto →'), 'the method line does not say auto');
-    assert((await page.textContent('#summary-boundary')).startsWith('auto →'), 'the results bar does not say auto');
+  pageTest(
+    'a closed mesh opens with the auto boundary and says why; a click moves its source',
+    { ready: idle },
+    async ({ page }) => {
+      assert((await page.inputValue('#boundary-select')) === 'measured', 'the mountain (a disk) opens measured');
+      assert(await page.isHidden('#param-why'), 'a disk gets a note about its boundary');
+      await page.setInputFiles('#file-input', {
+        name: 'icosphere.obj',
+        mimeType: 'text/plain',
+        buffer: await readFile(ICOSPHERE),
+      });
+      await expectReady(page, `window.__straightest.lastInfo.vertices === 42 && ${idle}`);
+      const { param, defaultBoundary } = await hooks(page);
+      assert(defaultBoundary.boundary === 'auto' && defaultBoundary.applied, JSON.stringify(defaultBoundary));
+      assert((await page.inputValue('#boundary-select')) === 'auto', 'the menu does not say auto');
+      assert(param.bijective && param.cut === 'path', `the closed mesh's map: ${JSON.stringify(param)}`);
+      const why = await page.textContent('#param-why');
+      assert((await page.isVisible('#param-why')) && /auto/i.test(why) && /closed/.test(why), `the note says '${why}'`);
+      assert((await page.textContent('#param-method')).startsWith('auto →'), 'the method line does not say auto');
+      assert((await page.textContent('#summary-boundary')).startsWith('auto →'), 'the results bar does not say auto');
 
-    // A plain click moves the source (no destination yet: nothing traced), as the panel says.
-    const box = await page.locator('#view-canvas').boundingBox();
-    const traces = (await hooks(page)).traces;
-    await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
-    await expectReady(page, `window.__straightest.traces > ${traces}`);
-    const { paths } = await hooks(page);
-    assert(paths.count === 0 && typeof paths.source?.face === 'number', `after a click: ${JSON.stringify(paths)}`);
-  });
+      // A plain click moves the source (no destination yet: nothing traced), as the panel says.
+      const box = await page.locator('#view-canvas').boundingBox();
+      const traces = (await hooks(page)).traces;
+      await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+      await expectReady(page, `window.__straightest.traces > ${traces}`);
+      const { paths } = await hooks(page);
+      assert(paths.count === 0 && typeof paths.source?.face === 'number', `after a click: ${JSON.stringify(paths)}`);
+    },
+  );
 
-  pageTest('a link restores the sample, source, destinations, boundary, weights and view options; changes go back into the URL', {
-    ready: idle,
-  }, async ({ page }) => {
-    const query = '?sample=cap&source=v40&dest=v300-f20_0.2_0.3_0.5&boundary=circle&weights=uniform&targets=0&wire=1';
-    await page.goto(`${page.url().split('?')[0]}${query}`);
-    await expectReady(page, `(${idle}) && window.__straightest.param.boundary === 'circle'`);
-    const { paths, param, lastInfo } = await hooks(page);
-    assert((await page.inputValue('#sample-select')) === 'cap', 'not the cap sample');
-    assert(lastInfo.vertices > 0 && paths.source?.vertex === 40, `source ${JSON.stringify(paths.source)}`);
-    assert(paths.count === 2, `${paths.count} paths (targets off: the two added destinations)`);
-    assert(param.boundary === 'circle' && param.weights === 'uniform', `${param.boundary} / ${param.weights}`);
-    assert(await page.isChecked('#wireframe-toggle') && !(await page.isChecked('#boundary-toggle')), 'view options');
-    assert(new URL(page.url()).search === query, `the URL became ${new URL(page.url()).search}`);
+  pageTest(
+    'a link restores the sample, source, destinations, boundary, weights and view options; changes go back into the URL',
+    {
+      ready: idle,
+    },
+    async ({ page }) => {
+      const query = '?sample=cap&source=v40&dest=v300-f20_0.2_0.3_0.5&boundary=circle&weights=uniform&targets=0&wire=1';
+      await page.goto(`${page.url().split('?')[0]}${query}`);
+      await expectReady(page, `(${idle}) && window.__straightest.param.boundary === 'circle'`);
+      const { paths, param, lastInfo } = await hooks(page);
+      assert((await page.inputValue('#sample-select')) === 'cap', 'not the cap sample');
+      assert(lastInfo.vertices > 0 && paths.source?.vertex === 40, `source ${JSON.stringify(paths.source)}`);
+      assert(paths.count === 2, `${paths.count} paths (targets off: the two added destinations)`);
+      assert(param.boundary === 'circle' && param.weights === 'uniform', `${param.boundary} / ${param.weights}`);
+      assert(
+        (await page.isChecked('#wireframe-toggle')) && !(await page.isChecked('#boundary-toggle')),
+        'view options',
+      );
+      assert(new URL(page.url()).search === query, `the URL became ${new URL(page.url()).search}`);
 
-    // A click moves the source: the URL follows, and a reload shows the same.
-    const box = await page.locator('#view-canvas').boundingBox();
-    const traces = (await hooks(page)).traces;
-    await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
-    await expectReady(page, `window.__straightest.traces > ${traces}`);
-    const moved = (await hooks(page)).paths.source;
-    assert(typeof moved.face === 'number', `clicked source ${JSON.stringify(moved)}`);
-    const saved = new URL(page.url()).searchParams;
-    assert(saved.get('source').startsWith(`f${moved.face}_`) && saved.get('boundary') === 'circle', `URL ${saved}`);
-    await page.reload();
-    await expectReady(page, `${idle} && window.__straightest.paths?.source?.face === ${moved.face}`);
-    const again = await hooks(page);
-    assert(again.paths.source.bary.every((b, k) => Math.abs(b - moved.bary[k]) < 1e-5), 'the barycentric coordinates changed');
-    assert(again.paths.count === 2 && again.param.boundary === 'circle', JSON.stringify(again.paths));
-  });
+      // A click moves the source: the URL follows, and a reload shows the same.
+      const box = await page.locator('#view-canvas').boundingBox();
+      const traces = (await hooks(page)).traces;
+      await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+      await expectReady(page, `window.__straightest.traces > ${traces}`);
+      const moved = (await hooks(page)).paths.source;
+      assert(typeof moved.face === 'number', `clicked source ${JSON.stringify(moved)}`);
+      const saved = new URL(page.url()).searchParams;
+      assert(saved.get('source').startsWith(`f${moved.face}_`) && saved.get('boundary') === 'circle', `URL ${saved}`);
+      await page.reload();
+      await expectReady(page, `${idle} && window.__straightest.paths?.source?.face === ${moved.face}`);
+      const again = await hooks(page);
+      assert(
+        again.paths.source.bary.every((b, k) => Math.abs(b - moved.bary[k]) < 1e-5),
+        'the barycentric coordinates changed',
+      );
+      assert(again.paths.count === 2 && again.param.boundary === 'circle', JSON.stringify(again.paths));
+    },
+  );
 
-  pageTest('a link to a file asks for it by name and restores its points once it is opened', { ready: idle }, async ({ page }) => {
-    const query = '?file=icosphere.obj&source=v3&dest=v20&flat=1';
-    await page.goto(`${page.url().split('?')[0]}${query}`);
-    await expectReady(page, idle);
-    const wanted = await page.textContent('#file-wanted');
-    assert(await page.isVisible('#file-wanted') && wanted.includes('icosphere.obj'), `asks '${wanted}'`);
-    assert(new URL(page.url()).search === query, 'the link was overwritten before its file came');
-    assert(await page.isChecked('#flat-toggle'), 'the view option was not applied');
-    await page.setInputFiles('#file-input', { name: 'icosphere.obj', mimeType: 'text/plain', buffer: await readFile(ICOSPHERE) });
-    await expectReady(page, `window.__straightest.lastInfo.vertices === 42 && window.__straightest.paths?.count === 1`);
-    const { paths } = await hooks(page);
-    assert(paths.source?.vertex === 3, `source ${JSON.stringify(paths.source)}`);
-    assert(await page.isHidden('#file-wanted'), 'still asking for the file');
-    await page.waitForFunction(() => new URL(location.href).searchParams.get('file') === 'icosphere.obj');
-  });
+  pageTest(
+    'a link to a file asks for it by name and restores its points once it is opened',
+    { ready: idle },
+    async ({ page }) => {
+      const query = '?file=icosphere.obj&source=v3&dest=v20&flat=1';
+      await page.goto(`${page.url().split('?')[0]}${query}`);
+      await expectReady(page, idle);
+      const wanted = await page.textContent('#file-wanted');
+      assert((await page.isVisible('#file-wanted')) && wanted.includes('icosphere.obj'), `asks '${wanted}'`);
+      assert(new URL(page.url()).search === query, 'the link was overwritten before its file came');
+      assert(await page.isChecked('#flat-toggle'), 'the view option was not applied');
+      await page.setInputFiles('#file-input', {
+        name: 'icosphere.obj',
+        mimeType: 'text/plain',
+        buffer: await readFile(ICOSPHERE),
+      });
+      await expectReady(
+        page,
+        `window.__straightest.lastInfo.vertices === 42 && window.__straightest.paths?.count === 1`,
+      );
+      const { paths } = await hooks(page);
+      assert(paths.source?.vertex === 3, `source ${JSON.stringify(paths.source)}`);
+      assert(await page.isHidden('#file-wanted'), 'still asking for the file');
+      await page.waitForFunction(() => new URL(location.href).searchParams.get('file') === 'icosphere.obj');
+    },
+  );
 });

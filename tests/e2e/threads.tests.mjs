@@ -20,17 +20,22 @@ function threadFacts(page) {
 
 /** Serves the page's HTML without the isolation headers (everything else as the server sends it). */
 function withoutIsolation(context) {
-  return context.route((url) => url.pathname === '/web/index.html', async (route) => {
-    const response = await route.fetch();
-    const headers = { ...response.headers() };
-    delete headers['cross-origin-opener-policy'];
-    delete headers['cross-origin-embedder-policy'];
-    await route.fulfill({ response, headers });
-  });
+  return context.route(
+    (url) => url.pathname === '/web/index.html',
+    async (route) => {
+      const response = await route.fetch();
+      const headers = { ...response.headers() };
+      delete headers['cross-origin-opener-policy'];
+      delete headers['cross-origin-embedder-policy'];
+      await route.fulfill({ response, headers });
+    },
+  );
 }
 
 describe('threads', () => {
-  pageTest('served with COOP/COEP, the page is cross-origin isolated and its worker runs on every core', {},
+  pageTest(
+    'served with COOP/COEP, the page is cross-origin isolated and its worker runs on every core',
+    {},
     async ({ page }) => {
       const facts = await threadFacts(page);
       assert(facts.isolated, 'the page is not cross-origin isolated');
@@ -38,14 +43,18 @@ describe('threads', () => {
       assert(facts.threads === Math.min(facts.cores, 64), `${facts.threads} threads for ${facts.cores} cores`);
       assert(facts.shown.startsWith(`${facts.threads} `), `info panel: '${facts.shown}'`);
       assert(facts.paths > 0, 'no paths drawn by the threaded module');
-    });
+    },
+  );
 
-  pageTest('without COOP/COEP the page runs the single-threaded module', { setup: withoutIsolation },
+  pageTest(
+    'without COOP/COEP the page runs the single-threaded module',
+    { setup: withoutIsolation },
     async ({ page }) => {
       const facts = await threadFacts(page);
       assert(!facts.isolated, 'the page is cross-origin isolated without COOP/COEP');
       assert(facts.threads === 1, `${facts.threads} threads`);
       assert(facts.shown.startsWith('1 '), `info panel: '${facts.shown}'`);
       assert(facts.paths > 0, 'no paths drawn by the single-threaded module');
-    });
+    },
+  );
 });

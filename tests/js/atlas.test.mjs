@@ -24,11 +24,13 @@ function signedArea(uv, f) {
  */
 function separation(uvA, a, uvB, b) {
   const points = (uv, f) => [0, 1, 2].map((k) => [uv[6 * f + 2 * k], uv[6 * f + 2 * k + 1]]);
-  const p = points(uvA, a), q = points(uvB, b);
+  const p = points(uvA, a),
+    q = points(uvB, b);
   let best = -Infinity;
   for (const tri of [p, q]) {
     for (let k = 0; k < 3; ++k) {
-      const [x0, y0] = tri[k], [x1, y1] = tri[(k + 1) % 3];
+      const [x0, y0] = tri[k],
+        [x1, y1] = tri[(k + 1) % 3];
       const length = Math.hypot(x1 - x0, y1 - y0);
       const n = [(y1 - y0) / length, (x0 - x1) / length];
       const project = (pts) => pts.map(([x, y]) => x * n[0] + y * n[1]);
@@ -45,8 +47,12 @@ function assertAtlas(mesh, a, { maxL2 = 1.05 } = {}) {
   assert.ok(a.cornerUv instanceof Float32Array);
   assert.equal(a.cornerUv.length, 6 * faces);
   assert.equal(a.chartOfFace.length, faces);
-  assert.ok(a.cornerUv.every((x) => x >= 0 && x <= 1), 'every corner uv in [0, 1]');
-  for (let f = 0; f < faces; ++f) assert.ok(signedArea(a.cornerUv, f) > 0, `uv triangle ${f} counter-clockwise like its face`);
+  assert.ok(
+    a.cornerUv.every((x) => x >= 0 && x <= 1),
+    'every corner uv in [0, 1]',
+  );
+  for (let f = 0; f < faces; ++f)
+    assert.ok(signedArea(a.cornerUv, f) > 0, `uv triangle ${f} counter-clockwise like its face`);
   assert.ok(a.chartOfFace.every((c) => c >= 0 && c < a.charts));
   assert.equal(new Set(a.chartOfFace).size, a.charts);
   assert.equal(a.chartStretch.length, a.charts);
@@ -66,7 +72,8 @@ function assertChartsDisjoint(a) {
   const faces = a.chartOfFace.length;
   for (let f = 0; f < faces; ++f) {
     for (let g = f + 1; g < faces; ++g) {
-      if (a.chartOfFace[f] !== a.chartOfFace[g]) assert.ok(separation(a.cornerUv, f, a.cornerUv, g) > 0, `faces ${f}, ${g}`);
+      if (a.chartOfFace[f] !== a.chartOfFace[g])
+        assert.ok(separation(a.cornerUv, f, a.cornerUv, g) > 0, `faces ${f}, ${g}`);
     }
   }
 }
@@ -111,12 +118,21 @@ test('toOBJ writes the atlas cornerUv as vt per corner', () => {
   const a = mesh.atlas();
   const lines = mesh.toOBJ(a.cornerUv).split('\n');
   const vt = lines.filter((l) => l.startsWith('vt ')).map((l) => l.split(' ').slice(1).map(Number));
-  const corners = lines.filter((l) => l.startsWith('f ')).flatMap((l) => l.split(' ').slice(1).map((c) => c.split('/').map(Number)));
+  const corners = lines
+    .filter((l) => l.startsWith('f '))
+    .flatMap((l) =>
+      l
+        .split(' ')
+        .slice(1)
+        .map((c) => c.split('/').map(Number)),
+    );
   const indices = mesh.indices();
   assert.equal(corners.length, indices.length);
   corners.forEach(([v, t], c) => {
     assert.equal(v - 1, indices[c]);
-    assert.ok(Math.abs(vt[t - 1][0] - a.cornerUv[2 * c]) < 1e-6 && Math.abs(vt[t - 1][1] - a.cornerUv[2 * c + 1]) < 1e-6);
+    assert.ok(
+      Math.abs(vt[t - 1][0] - a.cornerUv[2 * c]) < 1e-6 && Math.abs(vt[t - 1][1] - a.cornerUv[2 * c + 1]) < 1e-6,
+    );
   });
   assert.equal(new Set(corners.map(([, t]) => t)).size, vt.length);
   mesh.delete();
@@ -136,7 +152,10 @@ test('several meshes share one atlas, split per mesh, their charts disjoint', ()
   assert.deepEqual(shared.chartOfFace, Int32Array.of(...shared.meshes[0].chartOfFace, ...shared.meshes[1].chartOfFace));
   const chartsOf = (m) => new Set(m.chartOfFace);
   const [ca, cb] = [chartsOf(shared.meshes[0]), chartsOf(shared.meshes[1])];
-  assert.ok([...ca].every((c) => !cb.has(c)), 'no chart spans two meshes');
+  assert.ok(
+    [...ca].every((c) => !cb.has(c)),
+    'no chart spans two meshes',
+  );
   assert.equal(ca.size + cb.size, shared.charts);
   for (let f = 0; f < fa; ++f) {
     for (let g = 0; g < fb; ++g) assert.ok(separation(shared.meshes[0].cornerUv, f, shared.meshes[1].cornerUv, g) > 0);
@@ -144,7 +163,10 @@ test('several meshes share one atlas, split per mesh, their charts disjoint', ()
   // The same as one mesh made of both arrays.
   const positions = Float64Array.of(...cube.positions(), ...ball.positions());
   const offset = cube.info().vertices;
-  const both = st.meshFromArrays(positions, Uint32Array.of(...cube.indices(), ...ball.indices().map((i) => i + offset)));
+  const both = st.meshFromArrays(
+    positions,
+    Uint32Array.of(...cube.indices(), ...ball.indices().map((i) => i + offset)),
+  );
   const single = both.atlas();
   assertAtlas(both, shared);
   assert.deepEqual(single.cornerUv, shared.cornerUv);
@@ -154,7 +176,10 @@ test('several meshes share one atlas, split per mesh, their charts disjoint', ()
 
 test('bad options and bad meshes throw with a category', () => {
   const mesh = st.sample('cap');
-  const category = (c, pattern = /./) => (e) => e.category === c && pattern.test(e.message);
+  const category =
+    (c, pattern = /./) =>
+    (e) =>
+      e.category === c && pattern.test(e.message);
   assert.throws(() => mesh.atlas({ resolutoin: 512 }), category('invalid_argument', /unknown option 'resolutoin'/));
   assert.throws(() => mesh.atlas({ maxStretch: 0.5 }), category('invalid_argument', /maxStretch/));
   assert.throws(() => mesh.atlas({ maxStretch: NaN }), category('invalid_argument', /maxStretch/));
@@ -182,15 +207,26 @@ test('bad options and bad meshes throw with a category', () => {
 test('progress reports the four stages; cancelling in each leaves the mesh usable', () => {
   const mesh = st.sample('torus');
   const seen = [];
-  const first = mesh.atlas({ onProgress: (stage, fraction) => { seen.push([stage, fraction]); } });
+  const first = mesh.atlas({
+    onProgress: (stage, fraction) => {
+      seen.push([stage, fraction]);
+    },
+  });
   assert.deepEqual([...new Set(seen.map(([s]) => s))], ['segment', 'flatten', 'pack', 'measure']);
   assert.ok(seen.every(([, f]) => f >= 0 && f <= 1));
   assert.deepEqual(seen.at(-1), ['measure', 1]);
   st.atlas([mesh]);
   const heap = st.heapUsedBytes;
   for (const stop of ['segment', 'flatten', 'pack', 'measure']) {
-    assert.throws(() => mesh.atlas({ onProgress: (stage) => stage !== stop }), (e) => e.category === 'cancelled', stop);
-    assert.throws(() => st.atlas([mesh], { onProgress: (stage) => stage !== stop }), (e) => e.category === 'cancelled');
+    assert.throws(
+      () => mesh.atlas({ onProgress: (stage) => stage !== stop }),
+      (e) => e.category === 'cancelled',
+      stop,
+    );
+    assert.throws(
+      () => st.atlas([mesh], { onProgress: (stage) => stage !== stop }),
+      (e) => e.category === 'cancelled',
+    );
   }
   assert.equal(st.heapUsedBytes, heap, 'a cancelled atlas frees what it allocated');
   const again = mesh.atlas();
@@ -203,11 +239,14 @@ test('progress reports the four stages; cancelling in each leaves the mesh usabl
 /** A Web-Worker-like wrapper of a Node worker thread running wasm/worker-entry.js (Node has no module Web Worker). */
 function nodeWorker() {
   const entry = new URL('../../wasm/worker-entry.js', import.meta.url).href;
-  const worker = new NodeWorker(`
+  const worker = new NodeWorker(
+    `
     const { parentPort } = require('node:worker_threads');
     globalThis.postMessage = (message, transfer) => parentPort.postMessage(message, transfer);
     globalThis.addEventListener = (type, listener) => parentPort.on(type, (data) => listener({ data }));
-    import(${JSON.stringify(entry)});`, { eval: true });
+    import(${JSON.stringify(entry)});`,
+    { eval: true },
+  );
   return {
     postMessage: (message, transfer) => worker.postMessage(message, transfer),
     addEventListener(type, listener) {
@@ -218,7 +257,7 @@ function nodeWorker() {
   };
 }
 
-test('the worker API gives the direct API\'s atlas, with progress and cancel', async () => {
+test("the worker API gives the direct API's atlas, with progress and cancel", async () => {
   const remote = await createStraightestWorker({ createWorker: nodeWorker });
   try {
     const [local, cube] = [st.sample('torus'), st.loadMesh(fixture('good/cube.obj'), 'obj')];
@@ -251,7 +290,13 @@ test('the worker API gives the direct API\'s atlas, with progress and cancel', a
 function coloredGeometry(mesh) {
   const geometry = toBufferGeometry(mesh);
   const count = geometry.getAttribute('position').count;
-  geometry.setAttribute('color', new BufferAttribute(Float32Array.from({ length: 3 * count }, (_, i) => i), 3));
+  geometry.setAttribute(
+    'color',
+    new BufferAttribute(
+      Float32Array.from({ length: 3 * count }, (_, i) => i),
+      3,
+    ),
+  );
   return geometry;
 }
 
@@ -264,12 +309,16 @@ function assertSplit(source, split, cornerUv, meshIndices, channel = 'uv') {
   const [position, color] = [split.getAttribute('position'), split.getAttribute('color')];
   const [p0, c0] = [source.getAttribute('position'), source.getAttribute('color')];
   for (let c = 0; c < index.length; ++c) {
-    const v = index[c], w = sourceIndex[c];
+    const v = index[c],
+      w = sourceIndex[c];
     // toBufferGeometry's index is the mesh's, so the geometry's corner is the mesh's corner.
     assert.equal(meshIndices[c], w);
     assert.equal(uv.getX(v), cornerUv[2 * c]);
     assert.equal(uv.getY(v), cornerUv[2 * c + 1]);
-    for (const [a, b] of [[position, p0], [color, c0]]) {
+    for (const [a, b] of [
+      [position, p0],
+      [color, c0],
+    ]) {
       assert.deepEqual([a.getX(v), a.getY(v), a.getZ(v)], [b.getX(w), b.getY(w), b.getZ(w)]);
     }
   }
@@ -295,7 +344,10 @@ test('straightest/three unwrap splits the geometry along the seams with the atla
   assert.deepEqual(atlas.cornerUv, fromGeometry.atlas({ padding: 3 }).cornerUv);
   fromGeometry.delete();
   assert.throws(() => unwrap(st, geometry, { channel: 'uv2' }), TypeError);
-  assert.throws(() => unwrap(st, geometry, { padding: -1 }), (e) => e.category === 'invalid_argument');
+  assert.throws(
+    () => unwrap(st, geometry, { padding: -1 }),
+    (e) => e.category === 'invalid_argument',
+  );
   mesh.delete();
 });
 
@@ -318,7 +370,9 @@ test('straightest/three unwrap welds a non-indexed geometry; packAtlas shares on
   assert.equal(packed.geometries.length, 2);
   assert.equal(packed.atlas.width, 512);
   assert.deepEqual(packed.atlas.meshes, direct.meshes);
-  packed.geometries.forEach((g, i) => assertSplit(sources[i], g, direct.meshes[i].cornerUv, fromGeometries[i].indices()));
+  packed.geometries.forEach((g, i) =>
+    assertSplit(sources[i], g, direct.meshes[i].cornerUv, fromGeometries[i].indices()),
+  );
   assert.throws(() => packAtlas(st, sources[0]), TypeError);
   for (const m of [cube, ball, ...fromGeometries]) m.delete();
 });
@@ -327,7 +381,10 @@ test('straightest/three unwrap finds each corner by its vertex where the core re
   // A 2 × 1 grid whose second and fourth triangles are wound the other way (tests/data/good/inconsistent.obj).
   const indices = [0, 1, 4, 0, 3, 4, 1, 2, 5, 1, 4, 5];
   const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(Float32Array.of(0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0), 3));
+  geometry.setAttribute(
+    'position',
+    new BufferAttribute(Float32Array.of(0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0), 3),
+  );
   geometry.setIndex(indices);
   const { geometry: split, atlas } = unwrap(st, geometry);
   const mesh = meshFromBufferGeometry(st, geometry);

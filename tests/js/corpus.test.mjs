@@ -13,12 +13,16 @@ test(`the malformed corpus (${Object.keys(expected).length} files) is rejected w
   for (const [name, category] of Object.entries(expected)) {
     const bytes = await readFile(new URL(name, dir));
     const format = /\.(obj|off|ply|stl)$/.exec(name)?.[1] ?? 'auto';
-    assert.throws(() => st.loadMesh(bytes, format), (e) => {
-      assert.ok(e instanceof Error, `${name}: not an Error`);
-      assert.equal(e.category, category, `${name}: ${e.message}`);
-      assert.ok(e.message.length > 10, `${name}: message too short`);
-      return true;
-    }, name);
+    assert.throws(
+      () => st.loadMesh(bytes, format),
+      (e) => {
+        assert.ok(e instanceof Error, `${name}: not an Error`);
+        assert.equal(e.category, category, `${name}: ${e.message}`);
+        assert.ok(e.message.length > 10, `${name}: message too short`);
+        return true;
+      },
+      name,
+    );
   }
   // The module is still healthy afterwards.
   const mesh = st.sample('cap');

@@ -11,7 +11,10 @@ const st = await createStraightest();
 const cornerKey = (p, c) => `${p.cornerUv[2 * c]},${p.cornerUv[2 * c + 1]}`;
 
 test('a sphere and a torus are cut along a seam: corners agree with uv off the seam and split across it', () => {
-  for (const [name, cut, genus] of [['sphere', 'path', 0], ['torus', 'cut-graph', 1]]) {
+  for (const [name, cut, genus] of [
+    ['sphere', 'path', 0],
+    ['torus', 'cut-graph', 1],
+  ]) {
     const mesh = st.sample(name);
     const { vertices, faces } = mesh.info();
     const p = mesh.parameterize({ boundary: 'circle', weights: 'mean-value' });
@@ -86,7 +89,10 @@ test('toOBJ with cornerUv writes a vt per distinct uv: the seam splits, and the 
   // A vertex's vt is always written: it must be a number (a corner's NaN only drops its vt).
   const perVertex = new Float64Array(2 * mesh.info().vertices).fill(0.5);
   perVertex[7] = NaN;
-  assert.throws(() => mesh.toOBJ(perVertex), (e) => e.category === 'non_finite' && /uv\[7\]/.test(e.message));
+  assert.throws(
+    () => mesh.toOBJ(perVertex),
+    (e) => e.category === 'non_finite' && /uv\[7\]/.test(e.message),
+  );
   mesh.delete();
 });
 
@@ -110,7 +116,11 @@ test('toSeamSplitGeometry gives each side of the seam its own vertices and the c
   torus.delete();
   const disk = st.sample('cap');
   const q = disk.parameterize({ boundary: 'circle' });
-  assert.equal(toSeamSplitGeometry(disk, q).getAttribute('position').count, disk.info().vertices, 'a disk is not split');
+  assert.equal(
+    toSeamSplitGeometry(disk, q).getAttribute('position').count,
+    disk.info().vertices,
+    'a disk is not split',
+  );
   assert.throws(() => toSeamSplitGeometry(disk, { cornerUv: new Float32Array(3) }), RangeError);
   disk.delete();
 });
@@ -118,9 +128,18 @@ test('toSeamSplitGeometry gives each side of the seam its own vertices and the c
 test('cutting is the first stage reported, and cancelling there is an error that leaves the mesh usable', () => {
   const mesh = st.sample('sphere');
   const stages = [];
-  mesh.parameterize({ boundary: 'circle', onProgress: (stage) => { stages.push(stage); return true; } });
+  mesh.parameterize({
+    boundary: 'circle',
+    onProgress: (stage) => {
+      stages.push(stage);
+      return true;
+    },
+  });
   assert.equal(stages[0], 'cut');
-  assert.throws(() => mesh.parameterize({ onProgress: (stage) => stage !== 'cut' }), (e) => e.category === 'cancelled');
+  assert.throws(
+    () => mesh.parameterize({ onProgress: (stage) => stage !== 'cut' }),
+    (e) => e.category === 'cancelled',
+  );
   assert.equal(mesh.parameterize({ boundary: 'square' }).bijective, true);
   mesh.delete();
 });

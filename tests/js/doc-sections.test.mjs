@@ -26,8 +26,11 @@ old CGAL table
 `;
 
 test('a generated section replaces its namesake in place; the head is replaced; hand-written sections stay', () => {
-  const generated = '# Benchmarks\n\nGenerated on day 2.\n\n## Stages (ms)\n\nnew stages\n\n## Loading files\n\nnew loading\n';
-  assert.equal(mergeSections(existing, generated), `# Benchmarks
+  const generated =
+    '# Benchmarks\n\nGenerated on day 2.\n\n## Stages (ms)\n\nnew stages\n\n## Loading files\n\nnew loading\n';
+  assert.equal(
+    mergeSections(existing, generated),
+    `# Benchmarks
 
 Generated on day 2.
 
@@ -50,12 +53,17 @@ old CGAL table
 ## Loading files
 
 new loading
-`);
+`,
+  );
 });
 
 test('a section alone keeps the head, and names can be matched by a rule', () => {
   const cgal = (title) => title.startsWith('Against CGAL');
-  const merged = mergeSections(existing, '## Against CGAL 5.6 (native)\n\nnew CGAL table\n', (a, b) => a === b || (cgal(a) && cgal(b)));
+  const merged = mergeSections(
+    existing,
+    '## Against CGAL 5.6 (native)\n\nnew CGAL table\n',
+    (a, b) => a === b || (cgal(a) && cgal(b)),
+  );
   assert.ok(merged.startsWith('# Benchmarks\n\nGenerated on day 1.\n'));
   assert.ok(merged.includes('## Against CGAL 5.6 (native)\n\nnew CGAL table\n') && !merged.includes('old CGAL table'));
   assert.ok(merged.includes('### Stop 25\n\nkept too\n'));

@@ -65,7 +65,8 @@ test('free starts from the measured map when it is bijective, else from the circ
 test('a fixed boundary has no refinement fields and spends nothing on refine', () => {
   const mesh = st.sample('cap');
   const p = mesh.parameterize({ boundary: 'square' });
-  for (const field of ['init', 'iterations', 'energyInitial', 'energyFinal', 'converged', 'untangled']) assert.equal(p[field], null, field);
+  for (const field of ['init', 'iterations', 'energyInitial', 'energyFinal', 'converged', 'untangled'])
+    assert.equal(p[field], null, field);
   assert.equal(p.overlaps, 0);
   assert.deepEqual(Object.keys(p.timings), stages);
   assert.equal(p.timings.refine, 0);
@@ -75,7 +76,10 @@ test('a fixed boundary has no refinement fields and spends nothing on refine', (
 test('auto adds the free candidate, refined from the map it already solved', () => {
   const mesh = st.sample('mountain');
   const auto = mesh.parameterize({ boundary: 'auto', maxIterations: 10 });
-  assert.deepEqual(auto.candidates.map((c) => c.boundary), st.boundaryKinds);
+  assert.deepEqual(
+    auto.candidates.map((c) => c.boundary),
+    st.boundaryKinds,
+  );
   const free = mesh.parameterize({ boundary: 'free', maxIterations: 10 });
   assert.equal(auto.candidates[3].l2, free.stretch.l2);
   assert.equal(auto.init !== null, auto.boundary === 'free');
@@ -86,7 +90,10 @@ test('the comparison has a free row per weights, with its start and iterations',
   const mesh = st.sample('face');
   const weights = ['mean-value', 'uniform'];
   const c = mesh.compareParameterizations({ boundaries: ['circle', 'free'], weights, maxIterations: 8 });
-  assert.deepEqual(c.rows.map((r) => r.boundary), ['circle', 'circle', 'free', 'free']);
+  assert.deepEqual(
+    c.rows.map((r) => r.boundary),
+    ['circle', 'circle', 'free', 'free'],
+  );
   for (const row of c.rows.slice(2)) {
     assert.equal(row.error, null);
     const p = mesh.parameterize({ boundary: 'free', weights: row.weights, maxIterations: 8 });
@@ -104,11 +111,26 @@ test('cancelling during refine throws cancelled and the mesh and module stay usa
   const mesh = st.sample('mountain');
   const before = st.heapUsedBytes;
   let seen = false;
-  assert.throws(() => mesh.parameterize({ boundary: 'free', onProgress: (stage) => { seen ||= stage === 'refine'; return stage !== 'refine'; } }),
-    (e) => e.category === 'cancelled');
+  assert.throws(
+    () =>
+      mesh.parameterize({
+        boundary: 'free',
+        onProgress: (stage) => {
+          seen ||= stage === 'refine';
+          return stage !== 'refine';
+        },
+      }),
+    (e) => e.category === 'cancelled',
+  );
   assert.ok(seen, 'the refine stage was reported');
-  assert.throws(() => mesh.parameterize({ boundary: 'auto', onProgress: (stage) => stage !== 'refine' }), (e) => e.category === 'cancelled');
-  assert.throws(() => mesh.compareParameterizations({ boundaries: ['free'], onProgress: () => false }), (e) => e.category === 'cancelled');
+  assert.throws(
+    () => mesh.parameterize({ boundary: 'auto', onProgress: (stage) => stage !== 'refine' }),
+    (e) => e.category === 'cancelled',
+  );
+  assert.throws(
+    () => mesh.compareParameterizations({ boundaries: ['free'], onProgress: () => false }),
+    (e) => e.category === 'cancelled',
+  );
   assert.ok(st.heapUsedBytes <= before + 1024, 'a cancelled refinement leaves nothing allocated');
   const p = mesh.parameterize({ boundary: 'free', maxIterations: 5 });
   checkFree(mesh, p, 5);
@@ -121,13 +143,31 @@ test('cancelling during refine throws cancelled and the mesh and module stay usa
 test('the refinement options are checked; a boundary source is refused as for measured; a non-disk is cut', () => {
   const mesh = st.sample('cap');
   for (const maxIterations of [0, -3, 1.5, 'ten', Infinity])
-    assert.throws(() => mesh.parameterize({ boundary: 'free', maxIterations }), (e) => e.category === 'invalid_argument' && /maxIterations/.test(e.message));
+    assert.throws(
+      () => mesh.parameterize({ boundary: 'free', maxIterations }),
+      (e) => e.category === 'invalid_argument' && /maxIterations/.test(e.message),
+    );
   for (const timeBudgetMs of [0, -1, NaN, 'soon'])
-    assert.throws(() => mesh.parameterize({ boundary: 'free', timeBudgetMs }), (e) => e.category === 'invalid_argument' && /timeBudgetMs/.test(e.message));
-  assert.throws(() => mesh.compareParameterizations({ maxIterations: 0 }), (e) => e.category === 'invalid_argument');
+    assert.throws(
+      () => mesh.parameterize({ boundary: 'free', timeBudgetMs }),
+      (e) => e.category === 'invalid_argument' && /timeBudgetMs/.test(e.message),
+    );
+  assert.throws(
+    () => mesh.compareParameterizations({ maxIterations: 0 }),
+    (e) => e.category === 'invalid_argument',
+  );
   const onBoundary = mesh.boundaryLoops()[0][0];
-  const measuredError = (() => { try { mesh.parameterize({ source: onBoundary }); } catch (e) { return e.message; } })();
-  assert.throws(() => mesh.parameterize({ boundary: 'free', source: onBoundary }), (e) => e.category === 'invalid_argument' && e.message === measuredError);
+  const measuredError = (() => {
+    try {
+      mesh.parameterize({ source: onBoundary });
+    } catch (e) {
+      return e.message;
+    }
+  })();
+  assert.throws(
+    () => mesh.parameterize({ boundary: 'free', source: onBoundary }),
+    (e) => e.category === 'invalid_argument' && e.message === measuredError,
+  );
   mesh.delete();
   const closed = st.meshFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1], [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3]);
   const cut = closed.parameterize({ boundary: 'free', maxIterations: 10 });

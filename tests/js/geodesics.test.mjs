@@ -22,7 +22,7 @@ function flatGrid(n) {
   return st.meshFromArrays(positions, indices);
 }
 
-const center = 5 * 11 + 5;  // the middle vertex of flatGrid(10): (0.5, 0.5, 0)
+const center = 5 * 11 + 5; // the middle vertex of flatGrid(10): (0.5, 0.5, 0)
 
 /** Distance from point p to the line through a along the unit vector u. */
 function distanceToLine(p, a, u) {
@@ -34,7 +34,11 @@ function distanceToLine(p, a, u) {
 function polylineLength(points, from, to) {
   let length = 0;
   for (let k = from + 1; k < to; ++k)
-    length += Math.hypot(points[3 * k] - points[3 * k - 3], points[3 * k + 1] - points[3 * k - 2], points[3 * k + 2] - points[3 * k - 1]);
+    length += Math.hypot(
+      points[3 * k] - points[3 * k - 3],
+      points[3 * k + 1] - points[3 * k - 2],
+      points[3 * k + 2] - points[3 * k - 1],
+    );
   return length;
 }
 
@@ -54,7 +58,10 @@ test('on a plane a shot geodesic is a straight segment of the length asked for',
     assert.equal(points.length % 3, 0);
     assert.ok(points.length >= 6 && shot.facesCrossed >= 1);
     for (let k = 0; k < points.length / 3; ++k)
-      assert.ok(distanceToLine(points.subarray(3 * k, 3 * k + 3), shot.sourcePosition, shot.direction) < 1e-12, `point ${k} is off the line`);
+      assert.ok(
+        distanceToLine(points.subarray(3 * k, 3 * k + 3), shot.sourcePosition, shot.direction) < 1e-12,
+        `point ${k} is off the line`,
+      );
     assert.ok(Math.abs(polylineLength(points, 0, points.length / 3) - 0.4) < 1e-12);
     for (let c = 0; c < 3; ++c) {
       assert.ok(Math.abs(shot.endPosition[c] - (shot.sourcePosition[c] + 0.4 * shot.direction[c])) < 1e-12);
@@ -88,7 +95,7 @@ test('a 3D direction is projected onto the tangent plane, and a long shot stops 
 
 test('on a plane exact distances are Euclidean and exact shortest paths are straight', () => {
   const mesh = flatGrid(10);
-  const r = mesh.exactShortestPaths({ source: center });  // targets default: the boundary loop
+  const r = mesh.exactShortestPaths({ source: center }); // targets default: the boundary loop
   const loop = mesh.boundaryLoops()[0];
   assert.deepEqual(Array.from(r.targets), Array.from(loop));
   assert.equal(r.method, 'exact');
@@ -106,8 +113,10 @@ test('on a plane exact distances are Euclidean and exact shortest paths are stra
     const [from, to] = [r.offsets[i], r.offsets[i + 1]];
     assert.ok(to - from >= 2);
     const u = [(positions[3 * v] - 0.5) / euclid, (positions[3 * v + 1] - 0.5) / euclid, 0];
-    for (let k = from; k < to; ++k) assert.ok(distanceToLine(r.points.subarray(3 * k, 3 * k + 3), [0.5, 0.5, 0], u) < 1e-6);
-    for (let c = 0; c < 3; ++c) assert.ok(Math.abs(r.points[3 * (to - 1) + c] - positions[3 * v + c]) < 1e-6, 'ends at its target');
+    for (let k = from; k < to; ++k)
+      assert.ok(distanceToLine(r.points.subarray(3 * k, 3 * k + 3), [0.5, 0.5, 0], u) < 1e-6);
+    for (let c = 0; c < 3; ++c)
+      assert.ok(Math.abs(r.points[3 * (to - 1) + c] - positions[3 * v + c]) < 1e-6, 'ends at its target');
     assert.ok(Math.abs(polylineLength(r.points, from, to) - euclid) < 1e-5);
   }
   mesh.delete();
@@ -126,12 +135,18 @@ test('on the mountain: Euclidean ≤ exact ≤ straightest (reached) and exact �
     const v = exact.targets[i];
     assert.equal(straightest.targets[i].vertex, v);
     const d = exact.distances[i];
-    const euclid = Math.hypot(positions[3 * v] - positions[3 * s], positions[3 * v + 1] - positions[3 * s + 1],
-      positions[3 * v + 2] - positions[3 * s + 2]);
+    const euclid = Math.hypot(
+      positions[3 * v] - positions[3 * s],
+      positions[3 * v + 1] - positions[3 * s + 1],
+      positions[3 * v + 2] - positions[3 * s + 2],
+    );
     assert.ok(euclid <= d + 1e-12, `target ${v}: Euclidean ${euclid} > exact ${d}`);
     assert.ok(d <= dijkstra[v] + 1e-12, `target ${v}: exact ${d} > Dijkstra ${dijkstra[v]}`);
     if (straightest.statuses[i] === 'reached') {
-      assert.ok(d <= straightest.lengths[i] * (1 + 1e-12), `target ${v}: exact ${d} > straightest ${straightest.lengths[i]}`);
+      assert.ok(
+        d <= straightest.lengths[i] * (1 + 1e-12),
+        `target ${v}: exact ${d} > straightest ${straightest.lengths[i]}`,
+      );
       if (d < straightest.lengths[i] * (1 - 1e-6)) ++strictlyShorter;
     }
     const traced = polylineLength(exact.points, exact.offsets[i], exact.offsets[i + 1]);
@@ -145,7 +160,7 @@ test('on the mountain: Euclidean ≤ exact ≤ straightest (reached) and exact �
   mesh.delete();
 });
 
-test('shot toward a boundary vertex, a geodesic reports its miss distance and the cutting plane\'s length', () => {
+test("shot toward a boundary vertex, a geodesic reports its miss distance and the cutting plane's length", () => {
   const mesh = st.sample('mountain');
   const paths = mesh.straightestPaths({ points: false });
   const positions = mesh.positions();
@@ -165,7 +180,11 @@ test('shot toward a boundary vertex, a geodesic reports its miss distance and th
     const dir = paths.directions.subarray(3 * i, 3 * i + 3);
     assert.ok(shot.direction[0] * dir[0] + shot.direction[1] * dir[1] + shot.direction[2] * dir[2] > 0.5);
     // The closest approach is no farther than the end of the path.
-    const endGap = Math.hypot(shot.endPosition[0] - shot.target[0], shot.endPosition[1] - shot.target[1], shot.endPosition[2] - shot.target[2]);
+    const endGap = Math.hypot(
+      shot.endPosition[0] - shot.target[0],
+      shot.endPosition[1] - shot.target[1],
+      shot.endPosition[2] - shot.target[2],
+    );
     assert.ok(shot.missDistance <= endGap + 1e-12);
     if (shot.missDistance > 1e-6) ++missed;
     const given = mesh.shootGeodesic({ toward: v, length: 0.25 });
@@ -177,7 +196,7 @@ test('shot toward a boundary vertex, a geodesic reports its miss distance and th
 
 test('bad aims and lengths are clear invalid_argument errors', () => {
   const mesh = flatGrid(10);
-  const corner = 0;  // (0, 0, 0)
+  const corner = 0; // (0, 0, 0)
   const bad = [
     [{ source: center, direction: [0, 0, 0], length: 1 }, /zero length/],
     [{ source: center, direction: [NaN, 1, 0], length: 1 }, /not finite/],
@@ -198,37 +217,75 @@ test('bad aims and lengths are clear invalid_argument errors', () => {
     [{ source: corner, direction: [-1, -1, 0], length: 1 }, /off the surface/],
   ];
   for (const [options, message] of bad) {
-    assert.throws(() => mesh.shootGeodesic(options), (e) => e.category === 'invalid_argument' && message.test(e.message),
-      JSON.stringify(options));
+    assert.throws(
+      () => mesh.shootGeodesic(options),
+      (e) => e.category === 'invalid_argument' && message.test(e.message),
+      JSON.stringify(options),
+    );
   }
   // Inward from the same corner is fine.
   assert.equal(mesh.shootGeodesic({ source: corner, direction: [1, 1, 0], length: 0.5 }).status, 'reached_length');
-  assert.throws(() => mesh.exactShortestPaths({ source: center, targets: [{ face: 0, bary: [0.2, 0.3, 0.5] }] }),
-    (e) => e.category === 'invalid_argument' && /vertices/.test(e.message));
-  assert.throws(() => mesh.exactShortestPaths({ source: center, targets: [5000] }), (e) => e.category === 'index_out_of_range' || e.category === 'invalid_argument');
+  assert.throws(
+    () => mesh.exactShortestPaths({ source: center, targets: [{ face: 0, bary: [0.2, 0.3, 0.5] }] }),
+    (e) => e.category === 'invalid_argument' && /vertices/.test(e.message),
+  );
+  assert.throws(
+    () => mesh.exactShortestPaths({ source: center, targets: [5000] }),
+    (e) => e.category === 'index_out_of_range' || e.category === 'invalid_argument',
+  );
   mesh.delete();
-  assert.throws(() => mesh.shootGeodesic({ angle: 0, length: 1 }), (e) => e.category === 'invalid_argument' && /deleted/.test(e.message));
-  assert.throws(() => mesh.exactShortestPaths(), (e) => e.category === 'invalid_argument' && /deleted/.test(e.message));
+  assert.throws(
+    () => mesh.shootGeodesic({ angle: 0, length: 1 }),
+    (e) => e.category === 'invalid_argument' && /deleted/.test(e.message),
+  );
+  assert.throws(
+    () => mesh.exactShortestPaths(),
+    (e) => e.category === 'invalid_argument' && /deleted/.test(e.message),
+  );
 });
 
 test('long work reports its stage and cancels, leaving the mesh usable', () => {
   const sphere = st.sample('sphere');
   // Around the sphere many times: more steps than the walk reports progress after.
   const stages = new Set();
-  assert.throws(() => sphere.shootGeodesic({ source: 0, angle: 0.3, length: 3000, points: false, onProgress: (stage) => {
-    stages.add(stage);
-    return false;
-  } }), (e) => e.category === 'cancelled');
+  assert.throws(
+    () =>
+      sphere.shootGeodesic({
+        source: 0,
+        angle: 0.3,
+        length: 3000,
+        points: false,
+        onProgress: (stage) => {
+          stages.add(stage);
+          return false;
+        },
+      }),
+    (e) => e.category === 'cancelled',
+  );
   assert.deepEqual([...stages], ['shoot']);
   assert.equal(sphere.shootGeodesic({ source: 0, angle: 0.3, length: 1 }).status, 'reached_length');
   stages.clear();
-  assert.throws(() => sphere.exactShortestPaths({ source: 0, targets: [100], onProgress: (stage) => {
-    stages.add(stage);
-    return false;
-  } }), (e) => e.category === 'cancelled');
+  assert.throws(
+    () =>
+      sphere.exactShortestPaths({
+        source: 0,
+        targets: [100],
+        onProgress: (stage) => {
+          stages.add(stage);
+          return false;
+        },
+      }),
+    (e) => e.category === 'cancelled',
+  );
   assert.deepEqual([...stages], ['distances']);
   const fractions = [];
-  const r = sphere.exactShortestPaths({ source: 0, targets: [100, 200], onProgress: (stage, fraction) => { fractions.push(fraction); } });
+  const r = sphere.exactShortestPaths({
+    source: 0,
+    targets: [100, 200],
+    onProgress: (stage, fraction) => {
+      fractions.push(fraction);
+    },
+  });
   assert.equal(r.count, 2);
   assert.ok(fractions.length > 0 && fractions.every((f, k) => f >= 0 && f <= 1 && (k === 0 || f >= fractions[k - 1])));
   // A shot on a closed surface never meets a boundary.

@@ -19,7 +19,10 @@ test('Symbol.dispose deletes a mesh, and any later use is a StraightestError', (
   assert.equal(mesh.deleted, true);
   assert.equal(st.heapUsedBytes, before);
   for (const use of [() => mesh.info(), () => mesh.parameterize(), () => mesh.positions()]) {
-    assert.throws(use, (e) => e instanceof StraightestError && e.category === 'invalid_argument' && /deleted/.test(e.message));
+    assert.throws(
+      use,
+      (e) => e instanceof StraightestError && e.category === 'invalid_argument' && /deleted/.test(e.message),
+    );
   }
   mesh.delete(); // idempotent
 });
@@ -40,31 +43,55 @@ test('an exception thrown by onProgress reaches the caller as is and leaks nothi
   ];
   const boom = new RangeError('from the progress callback');
   for (const call of calls) {
-    const throwing = () => { throw boom; };
+    const throwing = () => {
+      throw boom;
+    };
     // Warm-up, not measured: a call that completes starts the threaded module's pool (its threads
     // allocate their thread-local data once, when they first run, at a moment of their choosing), then
     // throwing calls let every one-time allocation happen before the count starts.
     call(() => true);
-    for (let i = 0; i < 20; ++i) assert.throws(() => call(throwing), (e) => e === boom);
+    for (let i = 0; i < 20; ++i)
+      assert.throws(
+        () => call(throwing),
+        (e) => e === boom,
+      );
     const before = st.heapUsedBytes;
-    for (let i = 0; i < 50; ++i) assert.throws(() => call(throwing), (e) => e === boom);
-    assert.equal(st.heapUsedBytes, before, `${call}: WASM heap grew by ${st.heapUsedBytes - before} bytes over 50 calls`);
+    for (let i = 0; i < 50; ++i)
+      assert.throws(
+        () => call(throwing),
+        (e) => e === boom,
+      );
+    assert.equal(
+      st.heapUsedBytes,
+      before,
+      `${call}: WASM heap grew by ${st.heapUsedBytes - before} bytes over 50 calls`,
+    );
   }
   // The mesh still works, and an onProgress that returns false still cancels.
   assert.equal(mesh.parameterize().bijective, true);
-  assert.throws(() => mesh.parameterize({ onProgress: () => false }), (e) => e.category === 'cancelled');
+  assert.throws(
+    () => mesh.parameterize({ onProgress: () => false }),
+    (e) => e.category === 'cancelled',
+  );
   mesh.delete();
 });
 
 test('a module that cannot be loaded is a StraightestError io naming the URL and what came back', async () => {
   const missing = new URL('./no-such-module.wasm', import.meta.url).href;
-  await assert.rejects(createStraightest({ wasmUrl: missing }),
-    (e) => e instanceof StraightestError && e.category === 'io' && e.message.includes(missing));
+  await assert.rejects(
+    createStraightest({ wasmUrl: missing }),
+    (e) => e instanceof StraightestError && e.category === 'io' && e.message.includes(missing),
+  );
   const html = new TextEncoder().encode('<!doctype html><title>index</title>');
-  await assert.rejects(createStraightest({ wasmBinary: html }),
-    (e) => e.category === 'io' && /3c 21 64 6f/.test(e.message) && /HTML page/.test(e.message));
+  await assert.rejects(
+    createStraightest({ wasmBinary: html }),
+    (e) => e.category === 'io' && /3c 21 64 6f/.test(e.message) && /HTML page/.test(e.message),
+  );
   const truncated = new Uint8Array([0x00, 0x61, 0x73, 0x6d, 1, 0, 0, 0, 9]);
-  await assert.rejects(createStraightest({ wasmBinary: truncated }), (e) => e.category === 'io' && /wasmBinary/.test(e.message));
+  await assert.rejects(
+    createStraightest({ wasmBinary: truncated }),
+    (e) => e.category === 'io' && /wasmBinary/.test(e.message),
+  );
 });
 
 test('in Node a file: URL is read from disk even where a window is defined (jsdom)', async () => {
@@ -92,7 +119,10 @@ test('a non-indexed geometry welds into one disk; unwelded, the topology error s
   const soup = new PlaneGeometry(1, 1, 6, 6).toNonIndexed(); // 72 triangles sharing no vertex
   const apart = meshFromBufferGeometry(st, soup);
   assert.equal(apart.info().components, 72);
-  assert.throws(() => apart.parameterize(), (e) => e.category === 'topology' && /weld: true/.test(e.message));
+  assert.throws(
+    () => apart.parameterize(),
+    (e) => e.category === 'topology' && /weld: true/.test(e.message),
+  );
   apart.delete();
   const welded = meshFromBufferGeometry(st, soup, { weld: true });
   const info = welded.info();

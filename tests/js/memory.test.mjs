@@ -24,7 +24,8 @@ test('filling the 4 GB WebAssembly memory gives a too_large Error, and the modul
   const kept = [];
   let failure;
   try {
-    for (let r = 0; r < 64 && !failure; ++r) kept.push(st.meshFromArrays(positions, indices, { maxVertices: 1e8, maxFaces: 1e8 }));
+    for (let r = 0; r < 64 && !failure; ++r)
+      kept.push(st.meshFromArrays(positions, indices, { maxVertices: 1e8, maxFaces: 1e8 }));
   } catch (e) {
     failure = e;
   }

@@ -29,7 +29,10 @@ test('parameterize returns uv in [0, 1]², per-face stretch and finite metrics f
 test('auto reports every candidate and keeps the least stretched', () => {
   const mesh = st.sample('face');
   const p = mesh.parameterize({ boundary: 'auto', weights: 'mean-value' });
-  assert.deepEqual(p.candidates.map((c) => c.boundary), ['measured', 'circle', 'square', 'free']);
+  assert.deepEqual(
+    p.candidates.map((c) => c.boundary),
+    ['measured', 'circle', 'square', 'free'],
+  );
   for (const c of p.candidates) assert.ok(p.stretch.l2 <= c.l2);
   mesh.delete();
 });
@@ -39,8 +42,10 @@ test('refusals are Errors with messages', () => {
   const closed = st.loadMesh('OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n');
   const cut = closed.parameterize({ boundary: 'circle' });
   assert.equal(cut.cut, 'path');
-  assert.throws(() => closed.parameterize({ source: cut.seam[0] }),
-    (e) => e instanceof Error && e.category === 'invalid_argument' && /seam/.test(e.message));
+  assert.throws(
+    () => closed.parameterize({ source: cut.seam[0] }),
+    (e) => e instanceof Error && e.category === 'invalid_argument' && /seam/.test(e.message),
+  );
   closed.delete();
   const mesh = st.sample('cap');
   assert.throws(() => mesh.parameterize({ boundary: 'ellipse' }), /unknown boundary 'ellipse'/);
@@ -76,16 +81,29 @@ test('straightest/three applyUV sets the uv attribute of a geometry', () => {
 test('progress callbacks report the stages and can cancel', () => {
   const mesh = st.sample('mountain');
   const seen = [];
-  mesh.parameterize({ onProgress: (stage, fraction) => { seen.push([stage, fraction]); } });
+  mesh.parameterize({
+    onProgress: (stage, fraction) => {
+      seen.push([stage, fraction]);
+    },
+  });
   const stages = [...new Set(seen.map(([s]) => s))];
-  assert.deepEqual(stages.filter((s) => s !== 'solve'), ['source', 'trace', 'weights', 'metrics']);
+  assert.deepEqual(
+    stages.filter((s) => s !== 'solve'),
+    ['source', 'trace', 'weights', 'metrics'],
+  );
   assert.ok(seen.every(([, f]) => f >= 0 && f <= 1));
   assert.deepEqual(seen.at(-1), ['metrics', 1]);
-  assert.throws(() => mesh.parameterize({ onProgress: (stage) => stage !== 'weights' }), (e) => e.category === 'cancelled');
+  assert.throws(
+    () => mesh.parameterize({ onProgress: (stage) => stage !== 'weights' }),
+    (e) => e.category === 'cancelled',
+  );
   // Stop at the second call: with threads the caller may see only the start and the end of the traces (the
   // workers can run every chunk meanwhile), so a later call is not guaranteed to come.
   let calls = 0;
-  assert.throws(() => mesh.straightestPaths({ onProgress: () => ++calls < 2 }), (e) => e.category === 'cancelled');
+  assert.throws(
+    () => mesh.straightestPaths({ onProgress: () => ++calls < 2 }),
+    (e) => e.category === 'cancelled',
+  );
   const traced = [];
   mesh.straightestPaths({ points: false, onProgress: (s, f) => traced.push(f) });
   assert.equal(traced.at(-1), 1);

@@ -11,7 +11,7 @@ const annulus = await readFile(new URL('../data/good/annulus.off', import.meta.u
 
 test('on a flat grid every boundary path is reached at its Euclidean length', () => {
   const mesh = st.loadMesh(quadGrid, 'obj');
-  const r = mesh.straightestPaths();  // defaults: source 'auto' (the center, vertex 4), targets 'boundary'
+  const r = mesh.straightestPaths(); // defaults: source 'auto' (the center, vertex 4), targets 'boundary'
   assert.deepEqual(r.source, { vertex: 4 });
   assert.deepEqual(r.sourcePosition, [1, 1, 0]);
   assert.equal(r.count, 8);
@@ -21,7 +21,10 @@ test('on a flat grid every boundary path is reached at its Euclidean length', ()
     const v = r.targets[i].vertex;
     const euclid = Math.hypot(positions[3 * v] - 1, positions[3 * v + 1] - 1);
     assert.ok(Math.abs(r.lengths[i] - euclid) < 1e-12, `path ${i}: ${r.lengths[i]} vs ${euclid}`);
-    assert.deepEqual(Array.from(r.targetPositions.subarray(3 * i, 3 * i + 3)), Array.from(positions.subarray(3 * v, 3 * v + 3)));
+    assert.deepEqual(
+      Array.from(r.targetPositions.subarray(3 * i, 3 * i + 3)),
+      Array.from(positions.subarray(3 * v, 3 * v + 3)),
+    );
     const last = 3 * (r.offsets[i + 1] - 1);
     assert.ok(Math.abs(r.points[last] - positions[3 * v]) < 1e-6, 'the path ends at its target');
   }
@@ -61,7 +64,10 @@ test('heat and Dijkstra distances are Float64Arrays with 0 at the source', () =>
   const paths = mesh.straightestPaths({ points: false });
   for (let i = 0; i < paths.count; ++i) {
     if (paths.statuses[i] !== 'reached') continue;
-    assert.ok(heat[paths.targets[i].vertex] <= paths.lengths[i] * 1.05, 'heat distance never exceeds straightest (+5%)');
+    assert.ok(
+      heat[paths.targets[i].vertex] <= paths.lengths[i] * 1.05,
+      'heat distance never exceeds straightest (+5%)',
+    );
   }
   assert.equal(paths.points.length, 0);
   mesh.delete();
@@ -76,13 +82,16 @@ test('bad sources and targets are Errors with messages', () => {
   assert.throws(() => mesh.geodesicDistances(0, 'magic'), /unknown distance method/);
   mesh.delete();
   const closed = st.loadMesh('OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n');
-  assert.throws(() => closed.straightestPaths(), (e) => e.category === 'topology' && /closed/.test(e.message));
+  assert.throws(
+    () => closed.straightestPaths(),
+    (e) => e.category === 'topology' && /closed/.test(e.message),
+  );
   assert.throws(() => closed.straightestPaths({ targets: 'all-boundaries' }), /name the targets/);
   closed.delete();
 });
 
 test('on a closed sphere both arcs come back: the shorter as the path, the other with its length and points', () => {
-  const mesh = st.loadMesh(icosphere, 'obj');  // unit icosphere, 42 vertices; vertex 3 is antipodal to 0
+  const mesh = st.loadMesh(icosphere, 'obj'); // unit icosphere, 42 vertices; vertex 3 is antipodal to 0
   const r = mesh.straightestPaths({ source: 0, targets: [30, 41, 9, 3] });
   assert.equal(r.baseFallback, true);
   assert.match(r.baseNote, /area-weighted normal/);
@@ -96,7 +105,7 @@ test('on a closed sphere both arcs come back: the shorter as the path, the other
     assert.ok(r.lengths[i] <= r.otherArcLengths[i], `path ${i}: ${r.lengths[i]} vs ${r.otherArcLengths[i]}`);
     assert.ok(r.lengths[i] + r.otherArcLengths[i] < 2 * Math.PI);
     assert.ok(r.lengths[i] + r.otherArcLengths[i] > 0.9 * 2 * Math.PI);
-    assert.equal(r.backward[i], 0);  // on a sphere the shorter arc leaves toward the target
+    assert.equal(r.backward[i], 0); // on a sphere the shorter arc leaves toward the target
     let polyline = 0;
     for (let k = r.otherOffsets[i] + 1; k < r.otherOffsets[i + 1]; ++k)
       polyline += Math.hypot(...[0, 1, 2].map((c) => r.otherPoints[3 * k + c] - r.otherPoints[3 * (k - 1) + c]));
@@ -115,7 +124,10 @@ test("'all-boundaries' targets every loop's vertices, longest first; a disk has 
   const loops = mesh.boundaryLoops();
   assert.equal(loops.length, 2);
   const r = mesh.straightestPaths({ source: 0, targets: 'all-boundaries' });
-  assert.deepEqual(r.targets.map((t) => t.vertex), [...loops[0], ...loops[1]]);
+  assert.deepEqual(
+    r.targets.map((t) => t.vertex),
+    [...loops[0], ...loops[1]],
+  );
   assert.ok(r.otherArcLengths.every(Number.isNaN));
   assert.equal(r.otherPoints.length, 0);
   assert.equal(r.summary.otherArcs, 0);

@@ -71,7 +71,10 @@ test('st.threads: every core by default in Node, the count asked for, 1 for the 
   const inline = await createInline();
   assert.equal(inline.threads, 1);
   for (const threads of [-1, 1.5, '2']) {
-    await assert.rejects(createStraightest({ threads }), (e) => e instanceof StraightestError && e.category === 'invalid_argument');
+    await assert.rejects(
+      createStraightest({ threads }),
+      (e) => e instanceof StraightestError && e.category === 'invalid_argument',
+    );
   }
   // The count can be lowered and raised again, up to the count the module was loaded with.
   const st = await createStraightest({ threads: 2 });
@@ -80,9 +83,19 @@ test('st.threads: every core by default in Node, the count asked for, 1 for the 
   st.threads = 2;
   assert.equal(st.threads, 2);
   for (const count of [0, 3, 1.5]) {
-    assert.throws(() => { st.threads = count; }, (e) => e instanceof StraightestError && e.category === 'invalid_argument');
+    assert.throws(
+      () => {
+        st.threads = count;
+      },
+      (e) => e instanceof StraightestError && e.category === 'invalid_argument',
+    );
   }
-  assert.throws(() => { inline.threads = 2; }, (e) => e.category === 'invalid_argument');
+  assert.throws(
+    () => {
+      inline.threads = 2;
+    },
+    (e) => e.category === 'invalid_argument',
+  );
 });
 
 test('all-boundary paths on a height field are bit-identical for 1, 2 and 3 threads and the single-threaded module', async () => {
@@ -126,16 +139,33 @@ test('the threaded module cancels from a progress callback, reports monotone pro
   try {
     // Paths: cancel at the first report of the trace stage.
     let traceReports = 0;
-    assert.throws(() => mesh.straightestPaths({
-      targets: 'all-boundaries',
-      onProgress: (stage) => { if (stage === 'trace') traceReports += 1; return stage !== 'trace'; },
-    }), (e) => e instanceof StraightestError && e.category === 'cancelled');
+    assert.throws(
+      () =>
+        mesh.straightestPaths({
+          targets: 'all-boundaries',
+          onProgress: (stage) => {
+            if (stage === 'trace') traceReports += 1;
+            return stage !== 'trace';
+          },
+        }),
+      (e) => e instanceof StraightestError && e.category === 'cancelled',
+    );
     assert.equal(traceReports, 1, 'no report after the cancelling one');
     // Parameterization: cancel half way through; an exception thrown by the callback comes back as is.
-    assert.throws(() => mesh.parameterize({ onProgress: (stage, fraction) => fraction < 0.5 }),
-      (e) => e instanceof StraightestError && e.category === 'cancelled');
+    assert.throws(
+      () => mesh.parameterize({ onProgress: (stage, fraction) => fraction < 0.5 }),
+      (e) => e instanceof StraightestError && e.category === 'cancelled',
+    );
     const thrown = new Error('stop here');
-    assert.throws(() => mesh.parameterize({ onProgress: () => { throw thrown; } }), (e) => e === thrown);
+    assert.throws(
+      () =>
+        mesh.parameterize({
+          onProgress: () => {
+            throw thrown;
+          },
+        }),
+      (e) => e === thrown,
+    );
     // The same mesh, uncancelled: progress never goes back within a stage, and the results are whole.
     const last = new Map();
     const paths = mesh.straightestPaths({
@@ -157,7 +187,9 @@ test('loads warm up for the first call on a spare thread without changing a resu
   assert.equal((await createStraightest({ threads: 1 })).warmUp, true); // the default (a no-op on one thread)
   const cold = await createStraightest({ threads: 2, warmUp: false });
   assert.equal(cold.warmUp, false);
-  assert.throws(() => { cold.warmUp = 'yes'; }, TypeError);
+  assert.throws(() => {
+    cold.warmUp = 'yes';
+  }, TypeError);
   await assert.rejects(createStraightest({ threads: 2, warmUp: 1 }), TypeError); // before any worker starts
   const reference = measuredMap(cold);
   const st = await createStraightest({ threads: 2 });
@@ -165,7 +197,9 @@ test('loads warm up for the first call on a spare thread without changing a resu
   // An OFF file of 70 000 vertices: the heap the warm-up touches (~17 MB) is above its 16 MB floor.
   const n = 265;
   const lines = [`OFF\n${n * n} ${2 * (n - 1) * (n - 1)} 0`];
-  for (let j = 0; j < n; ++j) for (let i = 0; i < n; ++i) lines.push(`${i / (n - 1)} ${j / (n - 1)} ${0.2 * Math.sin(i / 20) * Math.cos(j / 30)}`);
+  for (let j = 0; j < n; ++j)
+    for (let i = 0; i < n; ++i)
+      lines.push(`${i / (n - 1)} ${j / (n - 1)} ${0.2 * Math.sin(i / 20) * Math.cos(j / 30)}`);
   for (let j = 0; j + 1 < n; ++j) {
     for (let i = 0; i + 1 < n; ++i) {
       const a = j * n + i;

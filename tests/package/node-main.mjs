@@ -21,15 +21,17 @@ try {
 } catch (e) {
   missing = { isStraightestError: e instanceof StraightestError, category: e.category, message: e.message };
 }
-console.log(JSON.stringify({
-  vertices: mesh.info().vertices,
-  bijective: param.bijective,
-  inlineVertices: embedded.sample('cap').info().vertices,
-  sameErrorClass: inline.StraightestError === StraightestError,
-  weldedVertices: welded.info().vertices,
-  weldedComponents: welded.info().components,
-  wasmMagic: readFileSync(wasmPath).subarray(0, 4).toString('hex'),
-  missing,
-}));
+console.log(
+  JSON.stringify({
+    vertices: mesh.info().vertices,
+    bijective: param.bijective,
+    inlineVertices: embedded.sample('cap').info().vertices,
+    sameErrorClass: inline.StraightestError === StraightestError,
+    weldedVertices: welded.info().vertices,
+    weldedComponents: welded.info().components,
+    wasmMagic: readFileSync(wasmPath).subarray(0, 4).toString('hex'),
+    missing,
+  }),
+);
 mesh.delete();
 welded.delete();

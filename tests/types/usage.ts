@@ -25,7 +25,14 @@ import {
   type SurfacePoint,
   type TraceStatus,
 } from 'straightest';
-import { applyUV, meshFromBufferGeometry, packAtlas, toBufferGeometry, toSeamSplitGeometry, unwrap } from 'straightest/three';
+import {
+  applyUV,
+  meshFromBufferGeometry,
+  packAtlas,
+  toBufferGeometry,
+  toSeamSplitGeometry,
+  unwrap,
+} from 'straightest/three';
 import * as inline from 'straightest/inline';
 import { createStraightestWorker, type WorkerMesh } from 'straightest/worker';
 import { BufferGeometry } from 'three';
@@ -37,13 +44,20 @@ function assertType<T extends true>(): T | void {}
 /** A consumer's exhaustive switch: a status added to or removed from TraceStatus breaks it. */
 function describe(status: TraceStatus): string {
   switch (status) {
-    case 'reached': return 'reached';
-    case 'hit_boundary': return 'the section left the surface';
-    case 'other_component': return 'a closed loop through the source';
-    case 'loop': return 'the walk revisited a crossing';
-    case 'step_limit': return 'too many steps';
-    case 'no_exit': return 'no face continues the section';
-    case 'degenerate_plane': return 'no cutting plane';
+    case 'reached':
+      return 'reached';
+    case 'hit_boundary':
+      return 'the section left the surface';
+    case 'other_component':
+      return 'a closed loop through the source';
+    case 'loop':
+      return 'the walk revisited a crossing';
+    case 'step_limit':
+      return 'too many steps';
+    case 'no_exit':
+      return 'no face continues the section';
+    case 'degenerate_plane':
+      return 'no cutting plane';
     default: {
       const unreachable: never = status;
       return unreachable;
@@ -62,9 +76,15 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const inWorker = await createStraightestWorker({ wasmUrl: '/straightest-core.wasm' });
   const remote: WorkerMesh = await inWorker.sample('cap');
   const controller = new AbortController();
-  const remoteUv: Float32Array = (await remote.parameterize({ boundary: 'free', signal: controller.signal, onProgress: () => {} })).uv;
+  const remoteUv: Float32Array = (
+    await remote.parameterize({ boundary: 'free', signal: controller.signal, onProgress: () => {} })
+  ).uv;
   const remoteInfo: MeshInfo = await remote.info();
-  const remoteAtlas: Atlas = await remote.atlas({ padding: 4, signal: controller.signal, onProgress: (stage) => stage !== 'pack' });
+  const remoteAtlas: Atlas = await remote.atlas({
+    padding: 4,
+    signal: controller.signal,
+    onProgress: (stage) => stage !== 'pack',
+  });
   const remoteShared: SharedAtlas = await inWorker.atlas([remote, remote], { resolution: 512 });
   // @ts-expect-error the worker's shared atlas takes the worker's meshes
   await inWorker.atlas([st.sample('cap')]);
@@ -192,7 +212,11 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   // @ts-expect-error 'reached' is a trace status, not a shot's
   const notShot: ShootStatus = 'reached';
   const shootStatuses: ShootStatus[] = st.shootStatuses;
-  const exact: ExactShortestPaths = mesh.exactShortestPaths({ source, targets: [3, { vertex: 4 }, 'boundary'], onProgress });
+  const exact: ExactShortestPaths = mesh.exactShortestPaths({
+    source,
+    targets: [3, { vertex: 4 }, 'boundary'],
+    onProgress,
+  });
   const exactPoints: Float32Array = exact.points;
   const exactOffsets: Uint32Array = exact.offsets;
   const exactTargets: Int32Array = exact.targets;
@@ -279,7 +303,9 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const freeRows = mesh.compareParameterizations({ boundaries: ['free'], maxIterations: 20, timeBudgetMs: 500 }).rows;
   const rowInit: 'measured' | 'circle' | null = freeRows[0].init;
   const rowFacts: [number | null, number | null, boolean | null] = [
-    freeRows[0].iterations, freeRows[0].overlaps, freeRows[0].converged,
+    freeRows[0].iterations,
+    freeRows[0].overlaps,
+    freeRows[0].converged,
   ];
   void [polygonKinds, rowInit, rowFacts];
   const comparison = mesh.compareParameterizations({ boundaries: ['circle'], weights: ['uniform', 'cotan'] });
@@ -338,8 +364,16 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   const atlas: Atlas = mesh.atlas(atlasOptions);
   const atlasUv: Float32Array = atlas.cornerUv;
   const charts: Int32Array = atlas.chartOfFace;
-  const quality: number = atlas.stretch.l2 + atlas.utilization + atlas.flipped + atlas.mirrored + atlas.overlaps
-    + atlas.paddingViolations + atlas.minGapTexels + atlas.texelsPerUnit + atlas.timings.pack;
+  const quality: number =
+    atlas.stretch.l2 +
+    atlas.utilization +
+    atlas.flipped +
+    atlas.mirrored +
+    atlas.overlaps +
+    atlas.paddingViolations +
+    atlas.minGapTexels +
+    atlas.texelsPerUnit +
+    atlas.timings.pack;
   const capped: boolean = atlas.capped;
   mesh.atlas({ width: 1024, height: 512, texelsPerUnit: 100, onProgress: (stage) => stage !== 'flatten' });
   mesh.toOBJ(atlas.cornerUv);
@@ -353,7 +387,11 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   mesh.atlas({ resolution: '1k' });
   // @ts-expect-error the shared atlas's per-mesh parts are on `meshes`, not on a plain atlas
   void atlas.meshes;
-  const unwrapped: { geometry: BufferGeometry; atlas: Atlas } = unwrap(st, geometry, { channel: 'uv1', weld: true, padding: 2 });
+  const unwrapped: { geometry: BufferGeometry; atlas: Atlas } = unwrap(st, geometry, {
+    channel: 'uv1',
+    weld: true,
+    padding: 2,
+  });
   const packedGeometries: BufferGeometry[] = packAtlas(st, [geometry, toThree], { resolution: 1024 }).geometries;
   const packedAtlas: SharedAtlas = packAtlas(st, [geometry]).atlas;
   // @ts-expect-error three's uv channels are 'uv' and 'uv1' (the second set was 'uv2' before r151)

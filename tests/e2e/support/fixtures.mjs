@@ -14,8 +14,14 @@ import { startServer } from '../../../scripts/serve.mjs';
 
 const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const CHROMIUM_ARGS = [
-  '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync',
-  '--no-first-run', '--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--no-sandbox',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+  '--disable-quic',
+  '--use-angle=swiftshader',
+  '--enable-unsafe-swiftshader',
 ];
 const TIME_SCALE = Number(process.env.E2E_TIME_SCALE) > 0 ? Number(process.env.E2E_TIME_SCALE) : 1;
 export const WAIT_TIMEOUT_MS = 8_000 * TIME_SCALE; // any single wait in a page
@@ -74,7 +80,10 @@ export function useBrowser({ onExit = () => {} } = {}) {
       run.port = run.server.address().port;
       run.baseUrl = `http://127.0.0.1:${run.port}`;
       run.browser = await chromium.launch({
-        executablePath: CHROMIUM, headless: true, args: CHROMIUM_ARGS, timeout: 20_000,
+        executablePath: CHROMIUM,
+        headless: true,
+        args: CHROMIUM_ARGS,
+        timeout: 20_000,
       });
     } catch (err) {
       run.failed += 1;
@@ -147,13 +156,13 @@ export function pageTest(name, { ready = 'true', setup = null, timeout = TEST_TI
 /** Waits until the page has finished loading something and returns its state and hooks. */
 export async function settled(page, predicate = 'true') {
   try {
-    await page.waitForFunction(
-      `document.body.dataset.state !== 'loading' && window.__straightest && (${predicate})`,
-    );
+    await page.waitForFunction(`document.body.dataset.state !== 'loading' && window.__straightest && (${predicate})`);
   } catch (err) {
     const state = await page.evaluate(() => document.body.dataset.state).catch(() => 'unknown');
     const status = await page.textContent('#status', { timeout: 1000 }).catch(() => '');
-    throw new Error(`page stayed in state '${state}' (status: ${status.trim()}): ${err.message.split('\n')[0]}`, { cause: err });
+    throw new Error(`page stayed in state '${state}' (status: ${status.trim()}): ${err.message.split('\n')[0]}`, {
+      cause: err,
+    });
   }
   return page.evaluate(() => ({
     state: document.body.dataset.state,
@@ -164,8 +173,10 @@ export async function settled(page, predicate = 'true') {
 
 export async function expectReady(page, predicate) {
   const result = await settled(page, predicate);
-  assert(result.state === 'ready',
-    `page state is '${result.state}'${result.lastError ? `: ${result.lastError.message}` : ''}`);
+  assert(
+    result.state === 'ready',
+    `page state is '${result.state}'${result.lastError ? `: ${result.lastError.message}` : ''}`,
+  );
   return result;
 }
 

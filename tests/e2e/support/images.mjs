@@ -7,9 +7,13 @@ import zlib from 'node:zlib';
 export function decodePng(png) {
   const signature = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
   if (!png.subarray(0, 8).equals(signature)) throw new Error('not a PNG file');
-  let width = 0, height = 0, bitDepth = 0, colorType = 0, interlace = 0;
+  let width = 0,
+    height = 0,
+    bitDepth = 0,
+    colorType = 0,
+    interlace = 0;
   const idat = [];
-  for (let pos = 8; pos < png.length; ) {
+  for (let pos = 8; pos < png.length;) {
     const length = png.readUInt32BE(pos);
     const type = png.toString('latin1', pos + 4, pos + 8);
     const data = png.subarray(pos + 8, pos + 8 + length);
@@ -42,17 +46,26 @@ export function decodePng(png) {
       const upLeft = y > 0 && x >= channels ? data[row - stride + x - channels] : 0;
       let predictor;
       switch (filter) {
-        case 0: predictor = 0; break;
-        case 1: predictor = left; break;
-        case 2: predictor = up; break;
-        case 3: predictor = (left + up) >> 1; break;
+        case 0:
+          predictor = 0;
+          break;
+        case 1:
+          predictor = left;
+          break;
+        case 2:
+          predictor = up;
+          break;
+        case 3:
+          predictor = (left + up) >> 1;
+          break;
         case 4: {
           const p = left + up - upLeft;
           const [pa, pb, pc] = [Math.abs(p - left), Math.abs(p - up), Math.abs(p - upLeft)];
           predictor = pa <= pb && pa <= pc ? left : pb <= pc ? up : upLeft;
           break;
         }
-        default: throw new Error(`bad PNG filter type ${filter} in row ${y}`);
+        default:
+          throw new Error(`bad PNG filter type ${filter} in row ${y}`);
       }
       data[row + x] = (src[x] + predictor) & 0xff;
     }

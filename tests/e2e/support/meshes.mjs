@@ -8,11 +8,19 @@ import path from 'node:path';
 // A 3×3 vertex grid (z = 0) with 4 quads: the OBJ loader triangulates them into 8 faces.
 export const QUAD_GRID_OBJ = [
   '# 3x3 quad grid',
-  'v 0 0 0', 'v 1 0 0', 'v 2 0 0',
-  'v 0 1 0', 'v 1 1 0.2', 'v 2 1 0',
-  'v 0 2 0', 'v 1 2 0', 'v 2 2 0',
-  'f 1 2 5 4', 'f 2 3 6 5',
-  'f 4 5 8 7', 'f 5 6 9 8',
+  'v 0 0 0',
+  'v 1 0 0',
+  'v 2 0 0',
+  'v 0 1 0',
+  'v 1 1 0.2',
+  'v 2 1 0',
+  'v 0 2 0',
+  'v 1 2 0',
+  'v 2 2 0',
+  'f 1 2 5 4',
+  'f 2 3 6 5',
+  'f 4 5 8 7',
+  'f 5 6 9 8',
   '',
 ].join('\n');
 

@@ -9,11 +9,19 @@ async function viaHelper() {
   const st = await createStraightestWorker();
   const mesh = await st.sample('cap');
   const stages = new Set();
-  const p = await mesh.parameterize({ onProgress: (stage) => { stages.add(stage); } });
+  const p = await mesh.parameterize({
+    onProgress: (stage) => {
+      stages.add(stage);
+    },
+  });
   const controller = new AbortController();
   const big = await st.sample('mountain');
-  const cancelled = big.compareParameterizations({ signal: controller.signal, onProgress: () => controller.abort() })
-    .then(() => 'finished', (e) => e.category);
+  const cancelled = big
+    .compareParameterizations({ signal: controller.signal, onProgress: () => controller.abort() })
+    .then(
+      () => 'finished',
+      (e) => e.category,
+    );
   const afterCancel = await cancelled;
   const info = await mesh.info(); // rebuilt in the new worker
   const format = await st.formatFromFileName('Part.OFF');
@@ -23,13 +31,24 @@ async function viaHelper() {
   const exact = await mesh.exactShortestPaths({ targets: [loop[0]] });
   st.terminate();
   return {
-    vertices: info.vertices, uvIsFloat32: p.uv instanceof Float32Array, uvLength: p.uv.length,
-    bijective: p.bijective, stages: [...stages], afterCancel, format,
+    vertices: info.vertices,
+    uvIsFloat32: p.uv instanceof Float32Array,
+    uvLength: p.uv.length,
+    bijective: p.bijective,
+    stages: [...stages],
+    afterCancel,
+    format,
     geodesics: {
-      target: loop[0], shotLength: shot.length, missDistance: shot.missDistance, shotPoints: shot.points instanceof Float64Array,
-      exactDistance: exact.distances[0], exactPoints: exact.points instanceof Float32Array && exact.offsets.length === 2,
+      target: loop[0],
+      shotLength: shot.length,
+      missDistance: shot.missDistance,
+      shotPoints: shot.points instanceof Float64Array,
+      exactDistance: exact.distances[0],
+      exactPoints: exact.points instanceof Float32Array && exact.offsets.length === 2,
     },
-    samples: st.sampleNames(), boundaryKinds: st.boundaryKinds, weightKinds: st.weightKinds,
+    samples: st.sampleNames(),
+    boundaryKinds: st.boundaryKinds,
+    weightKinds: st.weightKinds,
   };
 }
 
@@ -46,4 +65,11 @@ async function run() {
   return { main, worker: fromWorker, helper: await viaHelper() };
 }
 
-run().then((result) => { window.__result = result; }, (error) => { window.__result = { error: String(error?.stack ?? error) }; });
+run().then(
+  (result) => {
+    window.__result = result;
+  },
+  (error) => {
+    window.__result = { error: String(error?.stack ?? error) };
+  },
+);
