@@ -83,7 +83,15 @@ const cutPlaneRimMaterial = new THREE.LineBasicMaterial({
 const markerGeometry = new THREE.SphereGeometry(1, 24, 16); // scaled per marker
 // The plain-line fallback for many paths (see FAT_LINE_SEGMENTS): 1 pixel, failed paths solid red;
 // lighter than the fat lines, as thousands of them cover the surface.
-const plainReachedMaterial = new THREE.LineBasicMaterial({ color: PATH_COLOR, transparent: true, opacity: 0.4 });
+// They write no depth: where thousands of translucent lines meet, a line drawn first would otherwise
+// hide the later ones behind it by a hair (the same surface), and one side of the source would show a
+// single faint line per pixel where the other shows them all.
+const plainReachedMaterial = new THREE.LineBasicMaterial({
+  color: PATH_COLOR,
+  transparent: true,
+  opacity: 0.4,
+  depthWrite: false,
+});
 const plainFailedMaterial = new THREE.LineBasicMaterial({ color: FAILED_COLOR });
 
 /** Removes and frees everything in `group` (shared materials and the marker geometry stay). */
