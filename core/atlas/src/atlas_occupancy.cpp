@@ -33,6 +33,46 @@ AtlasOccupancy::AtlasOccupancy(int32_t width, int32_t height, int32_t border, do
   for (auto& summary : wordSummary_) summary.assign(static_cast<size_t>(summaryWords_) * height, 0);
   for (int32_t y = border; y < height - border; ++y) free_.assignSpan(y, border, width - border - 1, true);
   for (int32_t y = 0; y < height; ++y) updateRow(y);
+  freeInFourRows_ = TexelMask(width, height);
+  for (auto& runs : longestFreeBlockRun_) runs.assign(height, 0);
+  updateBlocks(0, height - 1);
+}
+
+void AtlasOccupancy::updateBlocks(int32_t firstRow, int32_t lastRow) {
+  static_assert(kBlockRows[0] == 4 && kBlockRows[1] == 16, "blocks of 16 rows are four blocks of 4");
+  const int32_t words = free_.wordsPerRow();
+  // Rows whose blocks reach into [firstRow, lastRow]: blocks of 4 first, as the blocks of 16 are made of them.
+  for (int32_t y = std::max(0, firstRow - 3); y <= lastRow; ++y) {
+    uint64_t* four = freeInFourRows_.row(y);
+    if (y + 4 > height()) {
+      std::fill(four, four + words, 0);
+      longestFreeBlockRun_[0][y] = 0;
+      continue;
+    }
+    std::copy(free_.row(y), free_.row(y) + words, four);
+    for (int32_t i = 1; i < 4; ++i)
+      for (int32_t k = 0; k < words; ++k) four[k] &= free_.row(y + i)[k];
+    longestFreeBlockRun_[0][y] = longestRunOfBits(four, width());
+  }
+  std::vector<uint64_t> sixteen(words);
+  for (int32_t y = std::max(0, firstRow - 15); y <= lastRow; ++y) {
+    if (y + 16 > height()) {
+      longestFreeBlockRun_[1][y] = 0;
+      continue;
+    }
+    for (int32_t k = 0; k < words; ++k)
+      sixteen[k] = freeInFourRows_.row(y)[k] & freeInFourRows_.row(y + 4)[k] & freeInFourRows_.row(y + 8)[k] &
+                   freeInFourRows_.row(y + 12)[k];
+    longestFreeBlockRun_[1][y] = longestRunOfBits(sixteen.data(), width());
+  }
+}
+
+bool AtlasOccupancy::blocksFitAtRow(const ChartMask& mask, int32_t y) const {
+  for (int b = 0; b < 2; ++b) {
+    const BlockRun& block = mask.blocks[b];
+    if (block.length > 0 && longestFreeBlockRun_[b][y + block.row] < block.length) return false;
+  }
+  return true;
 }
 
 void AtlasOccupancy::updateRow(int32_t y) {
@@ -139,7 +179,7 @@ std::optional<TexelPosition> AtlasOccupancy::firstFit(const ChartMask& mask, int
   prepareSpanTests(mask);
   lastEmptyingTest_ = 0;
   for (int32_t y = 0; y <= lastY; ++y) {
-    if (!runsFitAtRow(mask, y)) continue;
+    if (!blocksFitAtRow(mask, y) || !runsFitAtRow(mask, y)) continue;
     if (const auto x = leftmostFitInRow(y, lastX)) return TexelPosition{*x, y};
   }
   return std::nullopt;
@@ -157,6 +197,7 @@ void AtlasOccupancy::claim(const ChartMask& mask, TexelPosition position) {
   const int32_t firstRow = std::max(0, position.y - reach);
   const int32_t lastRow = std::min(height() - 1, position.y + mask.texels.height() - 1 + reach);
   for (int32_t y = firstRow; y <= lastRow; ++y) updateRow(y);
+  updateBlocks(firstRow, lastRow);
 }
 
 }  // namespace straightest::atlas_detail
