@@ -63,8 +63,9 @@ void findBlocks(ChartMask& mask) {
       std::copy(texels.row(row), texels.row(row) + texels.wordsPerRow(), common.begin());
       for (int32_t i = 1; i < kBlockRows[b]; ++i)
         for (int32_t k = 0; k < texels.wordsPerRow(); ++k) common[k] &= texels.row(row + i)[k];
-      const int32_t length = longestRunOfBits(common.data(), texels.width());
-      if (length > mask.blocks[b].length) mask.blocks[b] = {row, length};
+      int32_t start = 0;
+      const int32_t length = longestRunOfBits(common.data(), texels.width(), &start);
+      if (length > mask.blocks[b].length) mask.blocks[b] = {row, start, length};
     }
   }
 }

@@ -24,7 +24,7 @@ struct MaskRun {
 
 /// The rows of a block of a mask and the longest run of columns set in all of them.
 struct BlockRun {
-  int32_t row = 0, length = 0;
+  int32_t row = 0, start = 0, length = 0;
 };
 
 /// Heights of the blocks of rows ChartMask::blocks and the occupancy's free blocks describe.

@@ -69,9 +69,14 @@ class TexelMask {
   std::vector<uint64_t> words_;
 };
 
-/// The longest run of set bits among the first `width` bits of `words`.
-inline int32_t longestRunOfBits(const uint64_t* words, int32_t width) {
+/// The longest run of set bits among the first `width` bits of `words` (the first such run's start in `start`).
+inline int32_t longestRunOfBits(const uint64_t* words, int32_t width, int32_t* start = nullptr) {
   int32_t longest = 0, current = 0;
+  auto endRun = [&](int32_t end) {
+    if (current > longest && start) *start = end - current;
+    longest = std::max(longest, current);
+    current = 0;
+  };
   for (int32_t k = 0; 64 * k < width; ++k) {
     const int32_t bits = std::min(64, width - 64 * k);
     const uint64_t word = bits < 64 ? words[k] & ((uint64_t{1} << bits) - 1) : words[k];
@@ -86,14 +91,14 @@ inline int32_t longestRunOfBits(const uint64_t* words, int32_t width) {
         current += ones;
         at += ones;
       } else {
-        longest = std::max(longest, current);
-        current = 0;
+        endRun(64 * k + at);
         if (rest == 0) break;
         at += __builtin_ctzll(rest);
       }
     }
   }
-  return std::max(longest, current);
+  endRun(width);
+  return longest;
 }
 
 }  // namespace straightest::atlas_detail
