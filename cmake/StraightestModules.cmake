@@ -11,7 +11,7 @@
 #
 # straightest_add_core(<suffix> [compile options...]) defines straightest_<module><suffix> for every
 # module and straightest_core<suffix>, an INTERFACE library of them all (what programs link). The
-# suffix lets one build compile the core twice (the threaded WASM module, the fuzzers' instrumented copy).
+# suffix lets one build compile the core twice (the threaded WASM module, the CGAL benchmark's copy).
 set(STRAIGHTEST_MODULES base mesh io solver paths geodesics cut param atlas api)
 set(STRAIGHTEST_DEPS_base "")
 set(STRAIGHTEST_DEPS_mesh base)

@@ -12,19 +12,19 @@
 source "$(dirname "$0")/common.sh"
 target="${1:-all}"
 if [ "$target" = native ] || [ "$target" = all ]; then
-  cmake --preset native -DSTRAIGHTEST_WERROR=ON >/dev/null
+  configure_preset native -DSTRAIGHTEST_WERROR=ON
   cmake --build --preset native
 fi
 if [ "$target" = sanitize ]; then
-  cmake --preset sanitize >/dev/null
+  configure_preset sanitize
   cmake --build --preset sanitize --target core_tests straightest
 fi
 if [ "$target" = tsan ]; then  # ThreadSanitizer: the core and the threaded loops' tests only
-  cmake --preset tsan >/dev/null
+  configure_preset tsan
   cmake --build --preset tsan
 fi
 if [ "$target" = wasm ] || [ "$target" = module ] || [ "$target" = all ]; then
-  cmake --preset wasm >/dev/null
+  configure_preset wasm
   if [ "$target" = module ]; then
     cmake --build --preset wasm --target straightest_wasm straightest_wasm_threads
   elif [ "$target" = wasm ]; then  # npm test: the modules and the tests; the WASM benchmarks are for `all`

@@ -17,3 +17,14 @@ ensure_node_modules() {
 now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
 # seconds since a now_ms timestamp, one decimal
 elapsed() { local d=$(( $(now_ms) - $1 )); printf '%d.%d' $((d / 1000)) $(((d % 1000) / 100)); }
+
+# cmake --preset PRESET [ARGS...], quietly. A build directory an older checkout configured with another
+# generator (the presets use Ninja) is configured afresh instead of failing.
+configure_preset() {
+  local preset=$1; shift
+  local cache="$ROOT/build/$preset/CMakeCache.txt"
+  if [ -f "$cache" ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' "$cache"; then
+    rm -rf "$cache" "$ROOT/build/$preset/CMakeFiles"
+  fi
+  cmake --preset "$preset" "$@" >/dev/null
+}

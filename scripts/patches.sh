@@ -21,7 +21,7 @@ ARCHIVE=/usr/share/doc/libcgal-dev/data.tar.gz
 out=${PATCHES_DIR:-build/data/patches}
 
 bash scripts/setup.sh libcgal-demo >&2
-cmake --preset native >/dev/null
+configure_preset native
 cmake --build --preset native --target cut_patches real_patches >/dev/null
 
 mkdir -p build/data "$out"

@@ -18,8 +18,10 @@ std::vector<uint8_t> boundaryFixed(const TriMesh& mesh) {
   return fixed;
 }
 
+// No deadline: what the untangling achieves must not depend on how fast the machine (or a sanitizer
+// build) runs it; its rounds and iterations are bounded by themselves.
 Expected<UntangleResult> run(const TriMesh& mesh, const std::vector<Vec2>& uv) {
-  return untangle(mesh, uv, boundaryFixed(mesh), std::chrono::steady_clock::now() + std::chrono::seconds(60), {});
+  return untangle(mesh, uv, boundaryFixed(mesh), std::chrono::steady_clock::time_point::max(), {});
 }
 
 TEST(Untangle, AScrambledInteriorBecomesInjectiveAndTheBoundaryStays) {
