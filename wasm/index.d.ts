@@ -602,7 +602,9 @@ export class Straightest {
    * build (the threaded module with 2 or more threads): they touch the memory a parameterization of the
    * mesh will take, estimated from its size (at most maxVertices' worth and half of what the memory can
    * still grow by), and until once it ran to the end a small sample so the engine optimizes the hot
-   * code. Never slows a load by more than a step; changes no result. The module's memory keeps the size
+   * code. Only where that pays: the module's first load, and loads of at least 65,536 vertices (arrays)
+   * or 2.5 MB (files); other loads run as with false. Never slows a load by more than a step; changes
+   * no result. The module's memory keeps the size
    * the warm-up grew it to (WebAssembly memory never shrinks). Default true; a value that is not a
    * boolean throws a TypeError.
    */

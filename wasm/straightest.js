@@ -74,6 +74,16 @@ const ATLAS = [
 ];
 const CREATE = ['threads', 'warmUp', 'wasmUrl', 'locateFile', 'wasmBinary'];
 
+// Where the load's warm-up pays (scripts/bench-warm-up.mjs; docs/BENCHMARKS.md, "The load's warm-up").
+// Its sample gets the hot code optimized while the first load parses: that pays once per module, on its
+// first load of any size; later loads would only interrupt a sample that no longer helps, a cost of
+// several times a small load's own time. Its memory touch pays for a mesh whose parameterization takes
+// fresh memory worth touching, from the heap the core leaves alone below 16 MB: 65,536 vertices at
+// 250 bytes each. A file's vertex count is not known before it is parsed: its size stands in, at the
+// fewest bytes a vertex takes with its two faces (binary PLY: 12 + 2 × 13).
+const WARM_UP_MIN_VERTICES = 65_536;
+const WARM_UP_MIN_BYTES = 38 * WARM_UP_MIN_VERTICES;
+
 /** The warmUp option, or a TypeError (checked before a module is started for it). */
 function checkedWarmUp(on) {
   if (typeof on !== 'boolean') throw new TypeError('warmUp must be true or false');
@@ -416,6 +426,7 @@ export class Straightest {
   #names;
   #loadedThreads; // the threads the module was started for: its workers
   #warmUp = true;
+  #warmedUp = false; // a load has warmed up this module: its hot code is optimized or on the way
   #threadsUnavailable;
 
   constructor(token, module, { warmUp = true, threadsUnavailable = null } = {}) {
@@ -441,8 +452,10 @@ export class Straightest {
    * first call on the mesh run like a repeat: they touch the memory a parameterization of the mesh
    * will take (an estimate from its size, capped by maxVertices and by half of what the memory can
    * still grow by; the module's memory does not shrink) and, until once it ran to the end, run a small
-   * sample so the engine optimizes the hot code. The threaded module only (with at least 2
-   * threads); it never makes a load slower than one step of it, and changes no result. Default true.
+   * sample so the engine optimizes the hot code. Only where that pays: the module's first load, and
+   * loads of at least 65,536 vertices (arrays) or 2.5 MB (files); other loads run as with false. The
+   * threaded module only (with at least 2 threads); it never makes a load slower than one step of it,
+   * and changes no result. Default true.
    */
   get warmUp() {
     return this.#warmUp;
@@ -450,6 +463,13 @@ export class Straightest {
 
   set warmUp(on) {
     this.#warmUp = checkedWarmUp(on);
+  }
+
+  /** Whether a load of this size warms up (warmUp's rule): the module's first load, and large ones. */
+  #warmsUp(large) {
+    const on = this.#warmUp && (large || !this.#warmedUp);
+    if (on) this.#warmedUp = true;
+    return on;
   }
 
   /** The trace statuses, in the core's order: 'reached' is the only success. */
@@ -510,10 +530,9 @@ export class Straightest {
   /** Parses an OBJ, OFF, PLY or STL file (PLY and STL ascii or binary) given as bytes (Uint8Array/ArrayBuffer) or text. */
   loadMesh(data, format = 'auto', limits) {
     const checked = checkedOptions(limits, LIMITS, 'loadMesh');
-    return new Mesh(
-      internal,
-      unwrap(this.#module.loadMeshBytes(toBytes(data), String(format), checked, this.#warmUp)).mesh,
-    );
+    const bytes = toBytes(data);
+    const warmUp = this.#warmsUp(bytes.length >= WARM_UP_MIN_BYTES);
+    return new Mesh(internal, unwrap(this.#module.loadMeshBytes(bytes, String(format), checked, warmUp)).mesh);
   }
 
   /** Builds a mesh from flat arrays: positions (x, y, z per vertex) and indices (3 per triangle). */
@@ -523,7 +542,8 @@ export class Straightest {
       throw new TypeError('meshFromArrays expects positions and indices as arrays (or typed arrays) of numbers');
     const [xyz, triangles] = [numberArray(positions), numberArray(indices)];
     const checked = checkedOptions(limits, LIMITS, 'meshFromArrays');
-    return new Mesh(internal, unwrap(this.#module.meshFromArrays(xyz, triangles, checked, this.#warmUp)).mesh);
+    const warmUp = this.#warmsUp(xyz.length >= 3 * WARM_UP_MIN_VERTICES);
+    return new Mesh(internal, unwrap(this.#module.meshFromArrays(xyz, triangles, checked, warmUp)).mesh);
   }
 
   /**
