@@ -53,20 +53,23 @@ async function leavingNodeGlobalsAlone(start) {
 }
 
 /**
- * Rejects when one of the module's workers reports an error (its script or the loader it imports
- * failed). The listener comes before Emscripten's own, which would rethrow the event where nothing
- * can catch it ("Uncaught [object Event]").
+ * { failed, detach }: failed rejects when one of the module's workers reports an error while it starts
+ * (its script or the loader it imports failed). The listener comes before Emscripten's own, which would
+ * rethrow the event where nothing can catch it ("Uncaught [object Event]"); detach() removes it once
+ * the start is decided, so that later errors reach Emscripten as before.
  */
 function workerFailure(moduleArg) {
-  return new Promise((_, reject) => {
-    for (const worker of moduleArg.PThread?.unusedWorkers ?? []) {
-      worker.addEventListener('error', (event) => {
-        event.preventDefault();
-        event.stopImmediatePropagation();
-        reject(new Error(`a worker failed: ${event.message || 'its script or the loader it imports did not load'}`));
-      });
-    }
+  const workers = [...(moduleArg.PThread?.unusedWorkers ?? [])];
+  let listener;
+  const failed = new Promise((_, reject) => {
+    listener = (event) => {
+      event.preventDefault();
+      event.stopImmediatePropagation();
+      reject(new Error(`a worker failed: ${event.message || 'its script or the loader it imports did not load'}`));
+    };
+    for (const worker of workers) worker.addEventListener('error', listener);
   });
+  return { failed, detach: () => workers.forEach((worker) => worker.removeEventListener('error', listener)) };
 }
 
 /** Rejects after `ms` milliseconds; cancel() clears the timer. */
@@ -113,18 +116,24 @@ async function startInBrowser(loaderUrl, moduleArg) {
   moduleArg.mainScriptUrlOrBlob = loaderUrl; // what each worker imports
   moduleArg.locateFile = (name, directory) => (name.endsWith('.worker.js') ? workerUrl : directory + name);
   const bound = deadline(THREADS_START_BOUND_MS);
+  let abandoned = false; // past the bound: a loader that arrives late must start no workers
+  let failure = null;
   const start = async () => {
     const createThreadedModule = await importLoader(loaderUrl);
+    if (abandoned) throw new Error('abandoned');
     const started = createThreadedModule(moduleArg);
-    return Promise.race([started, workerFailure(moduleArg)]);
+    failure = workerFailure(moduleArg);
+    return Promise.race([started, failure.failed]);
   };
   try {
     return await Promise.race([start(), bound.expired]);
   } catch (error) {
+    abandoned = true;
     terminateWorkers(moduleArg);
     throw error;
   } finally {
     bound.cancel();
+    failure?.detach();
     URL.revokeObjectURL(workerUrl);
   }
 }
