@@ -20,7 +20,7 @@ export interface AtlasOptions {
    * does not fit throws 'too_large'.
    */
   texelsPerUnit?: number;
-  /** Try each chart's minimum-area rotation and its right angles (default true); never a mirror. */
+  /** Turn charts (default true): each chart's minimum-area rotation and its right angles, 16 turns for a chart spanning a quarter of the atlas or more; never a mirror. */
   rotate?: boolean;
   /** Stages 'segment', 'flatten', 'pack', 'measure'; return false to cancel (throws 'cancelled'; the mesh stays usable). */
   onProgress?: ProgressCallback;

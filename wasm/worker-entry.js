@@ -10,7 +10,8 @@
 //   → { id, type: 'module', method, args }                ← { id, type: 'result', value }
 //        a Straightest method that makes no mesh: 'formatFromFileName'
 //   → { id, type: 'create', mesh, method, args }         ← { id, type: 'result', value: MeshInfo }
-//        method: 'loadMesh' | 'meshFromArrays' | 'sample'; mesh: the client's number for it
+//        method: 'loadMesh' | 'meshFromArrays' | 'sample'; mesh: the client's number for it; loadMesh's
+//        data may be a Blob (a File): posting one copies no bytes, the worker reads them here
 //   → { id, type: 'call', mesh, method, args, progress }  ← { id, type: 'result', value }
 //        a Mesh method; with progress true, its last argument's onProgress posts
 //        { id, type: 'progress', stage, fraction }
@@ -84,6 +85,11 @@ function argumentsOf({ id, args, progress }) {
   return [...args.slice(0, -1), { ...args.at(-1), onProgress }];
 }
 
+/** A Blob's bytes (a Uint8Array), or `value` itself when it is not a Blob. */
+async function bytesOfBlob(value) {
+  return typeof Blob !== 'undefined' && value instanceof Blob ? new Uint8Array(await value.arrayBuffer()) : value;
+}
+
 async function handle(request) {
   const { type } = request;
   switch (type) {
@@ -100,7 +106,8 @@ async function handle(request) {
       return straightest[request.method](...request.args);
     case 'create': {
       if (!CREATORS.has(request.method)) throw new TypeError(`unknown mesh source '${request.method}'`);
-      const mesh = straightest[request.method](...request.args);
+      const args = await Promise.all(request.args.map(bytesOfBlob));
+      const mesh = straightest[request.method](...args);
       meshes.set(request.mesh, mesh);
       return mesh.info();
     }

@@ -100,9 +100,12 @@ export interface StraightestWorker {
   readonly errorCategories: Straightest['errorCategories'];
   /** The format a file name asks for: 'obj', 'off', 'ply', 'stl' (by extension, any case) or 'auto'. */
   formatFromFileName(name: string): Promise<MeshFormat>;
-  /** Parses an OBJ, OFF, PLY or STL file (bytes or text) in the worker. */
+  /**
+   * Parses an OBJ, OFF, PLY or STL file (bytes, text, or a Blob such as a File: the worker reads it, so
+   * its bytes are never copied on the calling thread) in the worker.
+   */
   loadMesh(
-    data: Uint8Array | ArrayBuffer | ArrayBufferView | string,
+    data: Uint8Array | ArrayBuffer | ArrayBufferView | string | Blob,
     format?: MeshFormat,
     limits?: BuildLimits,
   ): Promise<WorkerMesh>;

@@ -94,7 +94,7 @@ const session = createSession({
       summarizePaths(null);
       exactRatio.clear();
       renderHint($('paths-hint'), null);
-      surface.show(positions, indices, normals);
+      surface.show(positions, indices, normals, info.bbox);
       document.body.dataset.mesh = label; // hides the loading overlay over the view
       setUpAxis(info.bbox);
       view.frameBox(info.bbox);

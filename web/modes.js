@@ -15,6 +15,7 @@ export function pageModes() {
 
 function createModes() {
   const modes = new Map(); // id → { tab, enter(), leave() }
+  const changed = new Set(); // listeners told the new mode's id after each switch (the URL's sync)
   let current = 'surface';
 
   function select(id) {
@@ -25,6 +26,7 @@ function createModes() {
     for (const [key, { tab }] of modes) tab.setAttribute('aria-selected', String(key === id));
     $('mode-side').hidden = !modes.get(id).side;
     modes.get(id).enter();
+    for (const listener of changed) listener(id);
   }
 
   /**
@@ -52,6 +54,10 @@ function createModes() {
   return {
     register,
     select,
+    /** Calls listener(id) after every switch of mode. */
+    onChange(listener) {
+      changed.add(listener);
+    },
     get current() {
       return current;
     },

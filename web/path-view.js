@@ -83,7 +83,15 @@ const cutPlaneRimMaterial = new THREE.LineBasicMaterial({
 const markerGeometry = new THREE.SphereGeometry(1, 24, 16); // scaled per marker
 // The plain-line fallback for many paths (see FAT_LINE_SEGMENTS): 1 pixel, failed paths solid red;
 // lighter than the fat lines, as thousands of them cover the surface.
-const plainReachedMaterial = new THREE.LineBasicMaterial({ color: PATH_COLOR, transparent: true, opacity: 0.4 });
+// They write no depth: where thousands of translucent lines meet, a line drawn first would otherwise
+// hide the later ones behind it by a hair (the same surface), and one side of the source would show a
+// single faint line per pixel where the other shows them all.
+const plainReachedMaterial = new THREE.LineBasicMaterial({
+  color: PATH_COLOR,
+  transparent: true,
+  opacity: 0.4,
+  depthWrite: false,
+});
 const plainFailedMaterial = new THREE.LineBasicMaterial({ color: FAILED_COLOR });
 
 /** Removes and frees everything in `group` (shared materials and the marker geometry stay). */
@@ -112,11 +120,12 @@ function segmentCount({ offsets }, paths) {
 }
 
 /**
- * Many paths: plain LineSegments, one per [paths, material] group, over one shared position
- * attribute holding every `stride`-th point of each path and its last (see PLAIN_LINE_POINTS), with
- * an index pair per segment. No picking data. Returns { lines, stride }.
+ * Many paths: the geometry of plain LineSegments, one group per [paths, material] entry of `groups`,
+ * over one position attribute holding every `stride`-th point of each path and its last (see
+ * PLAIN_LINE_POINTS), with an index pair per segment. No picking data. Returns { geometry, materials,
+ * stride }.
  */
-function plainPathLines(reply, groups) {
+function plainPathGeometry(reply, groups) {
   const { points, offsets, count } = reply;
   const stride = Math.max(1, Math.ceil(offsets[count] / PLAIN_LINE_POINTS));
   // start[i]: the first kept point of path i; a path of n ≥ 2 points keeps ⌈(n−1)/stride⌉ + 1.
@@ -137,28 +146,28 @@ function plainPathLines(reply, groups) {
     for (let j = first; j < end; j += stride) copy(j, to++);
     if (to < start[i + 1]) copy(end - 1, to); // the last point, when the stride skipped it
   }
-  const positions = new THREE.BufferAttribute(kept, 3);
-  const lines = [];
-  for (const [paths, material] of groups) {
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(kept, 3));
+  const segmentsOf = (paths) => {
     let segments = 0;
     for (const i of paths) segments += Math.max(0, start[i + 1] - start[i] - 1);
-    if (segments === 0) continue;
-    const index = new Uint32Array(2 * segments);
-    let s = 0;
+    return segments;
+  };
+  const index = new Uint32Array(2 * groups.reduce((total, [paths]) => total + segmentsOf(paths), 0));
+  const materials = [];
+  let s = 0;
+  for (const [paths, material] of groups) {
+    const first = s;
     for (const i of paths) {
       for (let j = start[i]; j + 1 < start[i + 1]; j++) {
         index[s++] = j;
         index[s++] = j + 1;
       }
     }
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', positions);
-    geometry.setIndex(new THREE.BufferAttribute(index, 1));
-    const object = new THREE.LineSegments(geometry, material);
-    object.renderOrder = 1;
-    lines.push(object);
+    if (s > first) geometry.addGroup(first, s - first, materials.push(material) - 1);
   }
-  return { lines, stride };
+  geometry.setIndex(new THREE.BufferAttribute(index, 1));
+  return { geometry, materials, stride };
 }
 
 /**
@@ -264,6 +273,7 @@ export function createPathView(view, { onClear = () => {} } = {}) {
 
   function clear() {
     onClear();
+    shown?.upload?.dispose(); // (the plain lines' buffers, drawn or still on their way)
     clearGroup(group);
     shown = null;
   }
@@ -282,12 +292,18 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     failedMaterial.gapSize = otherArcMaterial.gapSize = 0.008 * scale;
     let lines;
     let stride = 1;
+    let upload = null; // the plain lines' buffers, filled a slice per frame (gpu-upload.js)
     const plain = segmentCount(reply, reply.statuses.keys()) > FAT_LINE_SEGMENTS;
     if (plain) {
-      ({ lines, stride } = plainPathLines(reply, [
+      const built = plainPathGeometry(reply, [
         [reached, plainReachedMaterial],
         [failed, plainFailedMaterial],
-      ]));
+      ]);
+      stride = built.stride;
+      upload = view.gpu.upload(built.geometry);
+      const object = new THREE.LineSegments(upload.geometry, built.materials);
+      object.renderOrder = 1;
+      lines = built.materials.length ? [object] : [];
     } else {
       lines = [pathLines(reply, reached, reachedMaterial), pathLines(reply, failed, failedMaterial)].filter(Boolean);
     }
@@ -306,7 +322,8 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     highlight.visible = false;
     highlight.renderOrder = 2;
     const cutPlane = new THREE.Group();
-    group.add(...lines, basePlane, highlight, cutPlane, marker(source, sourceMaterial, 0.011 * scale));
+    const waiting = upload !== null && !upload.ready; // the plain lines join once on the GPU
+    group.add(...(waiting ? [] : lines), basePlane, highlight, cutPlane, marker(source, sourceMaterial, 0.011 * scale));
     for (const position of added) group.add(marker(position, addedMaterial, 0.008 * scale));
     // Plain lines have no picking data; so many paths lie on a large mesh whose surface would be
     // ray cast on every pointer move.
@@ -325,7 +342,16 @@ export function createPathView(view, { onClear = () => {} } = {}) {
       cutPlane,
       hovered: -1,
       otherArcs: otherArcs ? withOtherArc.length : 0,
+      upload,
     };
+    if (waiting) {
+      const current = shown;
+      upload.done.then((uploaded) => {
+        if (!uploaded || shown !== current) return;
+        group.add(...lines);
+        view.requestRender();
+      });
+    }
     applyStyle();
   }
 

@@ -33,6 +33,7 @@ export function createPicking({ view, surface, paths, tooltip, onPick }) {
   const active = () => (document.body.dataset.mode ?? 'surface') === 'surface';
   const { canvas, viewport, camera } = view;
   const raycaster = new THREE.Raycaster();
+  raycaster.layers.enableAll(); // the surface's arrays lie on a layer of their own (surface-view.js)
   raycaster.params.Line2 = { threshold: 6 }; // pixels around a path that count as "on" it
   const pointer = new THREE.Vector2();
 

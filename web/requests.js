@@ -7,8 +7,9 @@
 //
 // Requests (request(type, payload, onProgress) resolves with the reply, rejects with an Error whose
 // `category` is the core's, or 'cancelled' after cancel()):
-//   'sample' { name }, 'file' { name, bytes: ArrayBuffer } (OBJ, OFF by the core; STL, PLY, glTF/GLB by
-//        three's loaders, welded: mesh-files.js)   → { type: 'mesh', mesh (the WorkerMesh,
+//   'sample' { name }, 'file' { name, file: Blob } (OBJ, OFF by the core, the worker reading the file
+//        itself: its bytes never pass through the page's thread; STL, PLY, glTF/GLB by three's loaders
+//        here, welded: mesh-files.js)   → { type: 'mesh', mesh (the WorkerMesh,
 //        for adopt()), label, positions: Float32Array, indices: Uint32Array, normals: Float32Array (the
 //        core's area-weighted unit vertex normals), info, timeMs, note (a file read by three: what was merged or left out, or empty) }
 //   'paths' { source, targets }  → mesh.straightestPaths()'s fields + { type: 'paths', targetPositions:
@@ -245,10 +246,11 @@ export function createRequests({ observer = null } = {}) {
       return meshReply(await step(() => worker.sample(name)), name, start, progress, step);
     },
 
-    async file({ name, bytes }, progress, step) {
+    async file({ name, file }, progress, step) {
       const start = performance.now();
       if (threeFormatOf(name)) {
         // STL, PLY, glTF: three's loaders here, then the positions welded into a mesh in the worker.
+        const bytes = await step(() => file.arrayBuffer());
         const { geometry, note } = await step(() => geometryFromFile(name, bytes));
         const made = await step(() => meshFromBufferGeometry(worker, geometry, { weld: true }));
         geometry.dispose();
@@ -257,7 +259,7 @@ export function createRequests({ observer = null } = {}) {
       }
       const format = await step(() => worker.formatFromFileName(name));
       // One synchronous call in the worker: no progress inside it ('load' is 0 before and 1 after).
-      const made = await step(() => worker.loadMesh(new Uint8Array(bytes), format));
+      const made = await step(() => worker.loadMesh(file, format)); // (a Blob: the worker reads it)
       return meshReply(made, name, start, progress, step);
     },
 

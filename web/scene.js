@@ -6,6 +6,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { hooks } from './test-hooks.js';
+import { createGpuUpload } from './gpu-upload.js';
 
 const BACKGROUND = 0x14171c;
 
@@ -197,6 +198,8 @@ export function createView({ canvas, viewport }) {
     renderer,
     scene,
     camera,
+    /** Uploads large geometry a slice per frame (gpu-upload.js): the views' big meshes and lines. */
+    gpu: createGpuUpload(renderer),
     render,
     requestRender,
     gpuIdle,

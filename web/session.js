@@ -13,7 +13,7 @@
 import { hooks, setState } from './test-hooks.js';
 import { latest } from './latest.js';
 import { clearError, setStatus, showError, showThreads } from './panels.js';
-import { categorizedError, createRequests, isCancelled } from './requests.js';
+import { createRequests, isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -92,15 +92,7 @@ export function createSession({ observer, display }) {
       select.options[0].disabled = true;
     }
     select.value = '';
-    return load(
-      `“${file.name}”`,
-      async (current) => {
-        const bytes = await file.arrayBuffer();
-        if (current.stale()) throw categorizedError('cancelled', 'cancelled'); // do not send it to a new worker
-        return request('file', { name: file.name, bytes });
-      },
-      { file },
-    );
+    return load(`“${file.name}”`, () => request('file', { name: file.name, file }), { file });
   }
 
   /** Nothing on display (after cancelling the reload of the mesh into a restarted worker). */

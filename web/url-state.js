@@ -1,6 +1,6 @@
 // The page's state in its URL (issue 31): the mesh (sample or file name), the path source and the
-// added destinations, the parameterization's options and the view options, so a reload or a shared
-// link shows the same thing. The encoding is pure (encodeState / decodeState, tested in Node); the
+// added destinations, the parameterization's options, the view options, the mode (the tab over the
+// view) and the Atlas mode's options, so a reload or a shared link shows the same thing. The encoding is pure (encodeState / decodeState, tested in Node); the
 // page writes it with history.replaceState after each change (no history entry per click).
 //
 // A file cannot travel in a URL: the link keeps its name, the page asks for it again by that name,
@@ -28,7 +28,16 @@ export const OPTIONS = {
   stretch: { id: 'stretch-toggle', check: false },
   paths: { id: 'paths-toggle', check: true },
   checker: { id: 'checker-cells', fallback: '16' },
+  // The Atlas mode's options and view (atlas-mode.js); its fields are text the mode checks itself.
+  atlasstretch: { id: 'atlas-max-stretch', fallback: '1.02' },
+  atlasres: { id: 'atlas-resolution', fallback: '1024' },
+  atlaspad: { id: 'atlas-padding', fallback: '2' },
+  atlasshow: { id: 'atlas-display', fallback: 'charts' },
+  seams: { id: 'atlas-seams-toggle', check: true },
 };
+
+// The mode the page opens in (modes.js), left out of the URL.
+export const DEFAULT_MODE = 'surface';
 
 const round = (x) => String(Number(x.toFixed(6)));
 
@@ -52,13 +61,22 @@ export function decodePoint(text) {
 }
 
 /**
- * The query string of a state: { sample | file, source ('auto' or a point), destinations (points),
- * options: { name: value } (OPTIONS' names; booleans for checkboxes, strings for menus) }.
+ * The query string of a state: { sample | file, mode (a modes.js id), source ('auto' or a point),
+ * destinations (points), options: { name: value } (OPTIONS' names; booleans for checkboxes, strings for
+ * menus and fields) }.
  */
-export function encodeState({ sample = null, file = null, source = 'auto', destinations = [], options = {} }) {
+export function encodeState({
+  sample = null,
+  file = null,
+  mode = DEFAULT_MODE,
+  source = 'auto',
+  destinations = [],
+  options = {},
+}) {
   const params = new URLSearchParams();
   if (file) params.set('file', file);
   else if (sample) params.set('sample', sample);
+  if (mode !== DEFAULT_MODE) params.set('mode', mode);
   if (source !== 'auto') params.set('source', encodePoint(source));
   if (destinations.length) params.set('dest', destinations.map(encodePoint).join('-'));
   for (const [name, value] of Object.entries(options)) {
@@ -87,6 +105,7 @@ export function decodeState(search) {
   return {
     sample: params.get('file') ? null : params.get('sample'),
     file: params.get('file'),
+    mode: params.get('mode') || DEFAULT_MODE,
     source: source ?? 'auto',
     destinations,
     options,

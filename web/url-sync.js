@@ -1,10 +1,11 @@
 // Keeps the page's URL and the page in step (the encoding: url-state.js): on opening, the URL's view
-// options are set on their controls, its sample is the one loaded and its source and destinations are
-// restored on that mesh; afterwards every change is written back with history.replaceState. A link to
+// options are set on their controls, its mode is selected, its sample is the one loaded and its source
+// and destinations are restored on that mesh; afterwards every change is written back with history.replaceState. A link to
 // a file asks for the file by name (#file-wanted) and restores the rest once a file of that name is
 // opened; until then the URL is left as it came, so the link still works when copied again.
 
 import { OPTIONS, decodeState, encodeState, pointsFit } from './url-state.js';
+import { pageModes } from './modes.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -32,24 +33,32 @@ export function createUrlSync({ session, param, points }) {
       options[name] = 'check' in option ? control.checked : control.value;
     }
     const { source, destinations } = points();
-    const query = encodeState({ sample: origin.sample, file: origin.file?.name, source, destinations, options });
+    const mode = pageModes().current;
+    const query = encodeState({ sample: origin.sample, file: origin.file?.name, mode, source, destinations, options });
     const url = `${location.pathname}${query ? `?${query}` : ''}${location.hash}`;
     if (url !== `${location.pathname}${location.search}${location.hash}`) history.replaceState(null, '', url);
   }
 
   for (const { id } of Object.values(OPTIONS)) $(id).addEventListener('change', () => save());
+  pageModes().onChange(() => save());
 
   return {
-    /** Sets the URL's view options on their controls (once every control has its listeners) and asks for its file. */
+    /**
+     * Sets the URL's view options on their controls and selects its mode (once every control has its
+     * listeners and every mode is registered), and asks for its file.
+     */
     applyOptions() {
       for (const [name, value] of Object.entries(wanted.options)) {
         const option = OPTIONS[name];
         const control = $(option.id);
         if (name === 'boundary' || !control) continue; // the menu is filled by the worker: see meshShown
         if ('check' in option) control.checked = value;
+        else if (control.tagName !== 'SELECT')
+          control.value = value; // a field: its reader names a bad value
         else if ([...control.options].some((o) => o.value === value && !o.disabled)) control.value = value;
         if (DISPATCHED.includes(name)) control.dispatchEvent(new Event('change'));
       }
+      pageModes().select(wanted.mode); // (an unknown mode is ignored)
       if (wanted.file) {
         $('file-wanted').textContent =
           `This link shows “${wanted.file}”: open that file (Open file, or drop it ` +

@@ -192,6 +192,24 @@ TEST(AtlasCharts, MaxChartsStopsSplittingAndSaysSo) {
   EXPECT_GT(set.overStretch, 0);
 }
 
+TEST(AtlasCharts, MaxChartFacesCapsEveryChart) {
+  // One near-flat region of 6962 faces: nothing in its shape asks for a cut, so only the cap divides it.
+  const TriMesh sheet = testing::almostFlatGrid(60, 1e-3);
+  ASSERT_GT(sheet.numFaces(), ChartOptions{}.maxChartFaces);
+  for (const int32_t cap : {ChartOptions{}.maxChartFaces, 900}) {
+    ChartOptions options;
+    options.maxChartFaces = cap;
+    const ChartSet set = chartsOf(sheet, options);
+    expectValidCharts(sheet, set, options.maxStretch);
+    EXPECT_GE(set.charts.size(), static_cast<size_t>((sheet.numFaces() + cap - 1) / cap));
+    for (size_t c = 0; c < set.charts.size(); ++c)
+      EXPECT_LE(set.charts[c].faces.size(), static_cast<size_t>(cap)) << "cap " << cap << ", chart " << c;
+  }
+  ChartOptions uncapped;
+  uncapped.maxChartFaces = 0;
+  EXPECT_EQ(chartsOf(sheet, uncapped).charts.size(), 1u) << "the sheet itself needs no cut";
+}
+
 TEST(AtlasCharts, RefusesBadOptions) {
   const TriMesh sphere = makeIcosphere(1.0, 1);
   ChartOptions options;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geodesic_surfaces.hpp"
@@ -58,6 +59,27 @@ TEST(AtlasPipeline, DevelopableSurfacesFlattenIsometrically) {
     EXPECT_NEAR(atlas.quality.l2, 1, 1e-6);
     for (double l2 : atlas.quality.chartL2) EXPECT_NEAR(l2, 1, 1e-6);
   }
+}
+
+TEST(AtlasPipeline, NonSquareAtlasMeasuresStretchOnSquareTexels) {
+  // Charts are packed at one density in texels, so a developable surface stays isometric on the texels of a
+  // wide or tall atlas, while its [0,1]² uv is squeezed by the aspect: the measure must see the texels.
+  const TriMesh cylinder = testing::prism(24, 12, 1.0, 0.25).mesh;
+  const TriMesh sheet = testing::flatGrid(12, testing::GridPattern::Regular);
+  const std::pair<int32_t, int32_t> sizes[] = {{1024, 256}, {200, 900}, {512, 512}};
+  for (const TriMesh* mesh : {&cylinder, &sheet})
+    for (const auto& [width, height] : sizes) {
+      SCOPED_TRACE(std::to_string(width) + " x " + std::to_string(height));
+      AtlasOptions options;
+      options.pack.width = width;
+      options.pack.height = height;
+      const Atlas atlas = atlasOf(*mesh, options);
+      expectSound(*mesh, atlas, options.pack.padding);
+      EXPECT_NEAR(atlas.quality.l2, 1, 1e-6);
+      EXPECT_NEAR(atlas.quality.linf, 1, 1e-6);
+      for (double l2 : atlas.quality.chartL2) EXPECT_NEAR(l2, 1, 1e-6);
+      EXPECT_NEAR(atlas.quality.utilization, atlas.utilization, 1e-9);
+    }
 }
 
 TEST(AtlasPipeline, AnyGenusHolesAndComponentsGiveSoundCharts) {

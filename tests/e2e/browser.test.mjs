@@ -45,6 +45,7 @@ await import('./layout.tests.mjs');
 await import('./state.tests.mjs');
 await import('./data.tests.mjs');
 await import('./atlas.tests.mjs'); // after layout.tests.mjs, whose helpers it uses
+await import('./plain-lines.tests.mjs');
 
 /**
  * Starts a 50 ms setInterval on the page's main thread that records the longest gap between its

@@ -1,13 +1,13 @@
 // Browser tests of what a mesh opens with and of the page's state in its URL (issue 31): a mesh that
 // is not a disk opens with the auto boundary and says why, and clicks on it do what the panel says;
-// a link restores the sample, the source, the destinations, the boundary, the weights and the view
-// options, and a link to a file asks for the file by name. Imported by browser.test.mjs, which owns
+// a link restores the sample, the source, the destinations, the boundary, the weights, the view
+// options, the mode and the Atlas mode's options, and a link to a file asks for the file by name. Imported by browser.test.mjs, which owns
 // the browser (useBrowser).
 
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { describe } from 'node:test';
-import { expectReady, pageTest } from './support/fixtures.mjs';
+import { BIG_TEST_TIMEOUT_MS, BIG_WAIT_TIMEOUT_MS, expectReady, pageTest } from './support/fixtures.mjs';
 
 const ICOSPHERE = new URL('../data/good/icosphere.obj', import.meta.url);
 const hooks = (page) => page.evaluate(() => window.__straightest);
@@ -109,6 +109,46 @@ describe('default per mesh and state in the URL', () => {
       assert(paths.source?.vertex === 3, `source ${JSON.stringify(paths.source)}`);
       assert(await page.isHidden('#file-wanted'), 'still asking for the file');
       await page.waitForFunction(() => new URL(location.href).searchParams.get('file') === 'icosphere.obj');
+    },
+  );
+
+  pageTest(
+    'a link restores the Atlas mode and its options; changing them and the mode goes back into the URL',
+    { timeout: BIG_TEST_TIMEOUT_MS },
+    async ({ page }) => {
+      const query = '?sample=torus&mode=atlas&atlasstretch=1.1&atlasres=512&atlaspad=4&atlasshow=checker&seams=0';
+      await page.goto(`${page.url().split('?')[0]}${query}`);
+      const atlasShown = (more) =>
+        page.waitForFunction(`window.__straightest.atlas && !window.__straightest.progress.busy && ${more}`, null, {
+          timeout: BIG_WAIT_TIMEOUT_MS,
+        });
+      await atlasShown('true');
+      const { atlas } = await hooks(page);
+      assert.deepEqual(atlas.options, { maxStretch: 1.1, resolution: 512, padding: 4 }, 'the atlas made');
+      assert((await page.getAttribute('#mode-tab-atlas', 'aria-selected')) === 'true', 'the Atlas tab is not selected');
+      assert((await page.evaluate(() => document.body.dataset.mode)) === 'atlas', 'the page is not in the Atlas mode');
+      assert((await page.inputValue('#atlas-max-stretch')) === '1.1', 'max stretch field');
+      assert((await page.inputValue('#atlas-resolution')) === '512', 'resolution menu');
+      assert((await page.inputValue('#atlas-padding')) === '4', 'padding field');
+      assert((await page.inputValue('#atlas-display')) === 'checker', 'show menu');
+      assert(!(await page.isChecked('#atlas-seams-toggle')), 'seams toggle');
+      assert(new URL(page.url()).search === query, `the URL became ${new URL(page.url()).search}`);
+
+      // A changed option makes the atlas again and goes into the URL; a reload keeps it.
+      const atlases = (await hooks(page)).atlases;
+      await page.fill('#atlas-padding', '3');
+      await page.dispatchEvent('#atlas-padding', 'change');
+      await atlasShown(`window.__straightest.atlases > ${atlases} && window.__straightest.atlas.options.padding === 3`);
+      assert(new URL(page.url()).searchParams.get('atlaspad') === '3', `URL ${new URL(page.url()).search}`);
+      await page.reload();
+      await atlasShown('window.__straightest.atlas.options.padding === 3');
+      assert.deepEqual((await hooks(page)).atlas.options, { maxStretch: 1.1, resolution: 512, padding: 3 });
+
+      // Back to the 3D surface: the mode leaves the URL, the atlas options stay.
+      await page.click('#mode-tab-surface');
+      await page.waitForFunction(() => !new URL(location.href).searchParams.has('mode'));
+      const saved = new URL(page.url()).searchParams;
+      assert(saved.get('atlasstretch') === '1.1' && saved.get('atlasres') === '512', `URL ${saved}`);
     },
   );
 });

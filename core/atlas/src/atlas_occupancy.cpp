@@ -33,6 +33,48 @@ AtlasOccupancy::AtlasOccupancy(int32_t width, int32_t height, int32_t border, do
   for (auto& summary : wordSummary_) summary.assign(static_cast<size_t>(summaryWords_) * height, 0);
   for (int32_t y = border; y < height - border; ++y) free_.assignSpan(y, border, width - border - 1, true);
   for (int32_t y = 0; y < height; ++y) updateRow(y);
+  freeInFourRows_ = TexelMask(width, height);
+  freeInSixteenRows_ = TexelMask(width, height);
+  for (auto& runs : longestFreeBlockRun_) runs.assign(height, 0);
+  updateBlocks(0, height - 1);
+}
+
+void AtlasOccupancy::updateBlocks(int32_t firstRow, int32_t lastRow) {
+  static_assert(kBlockRows[0] == 4 && kBlockRows[1] == 16, "blocks of 16 rows are four blocks of 4");
+  const int32_t words = free_.wordsPerRow();
+  // Rows whose blocks reach into [firstRow, lastRow]: blocks of 4 first, as the blocks of 16 are made of them.
+  for (int32_t y = std::max(0, firstRow - 3); y <= lastRow; ++y) {
+    uint64_t* four = freeInFourRows_.row(y);
+    if (y + 4 > height()) {
+      std::fill(four, four + words, 0);
+      longestFreeBlockRun_[0][y] = 0;
+      continue;
+    }
+    std::copy(free_.row(y), free_.row(y) + words, four);
+    for (int32_t i = 1; i < 4; ++i)
+      for (int32_t k = 0; k < words; ++k) four[k] &= free_.row(y + i)[k];
+    longestFreeBlockRun_[0][y] = longestRunOfBits(four, width());
+  }
+  for (int32_t y = std::max(0, firstRow - 15); y <= lastRow; ++y) {
+    uint64_t* sixteen = freeInSixteenRows_.row(y);
+    if (y + 16 > height()) {
+      std::fill(sixteen, sixteen + words, 0);
+      longestFreeBlockRun_[1][y] = 0;
+      continue;
+    }
+    for (int32_t k = 0; k < words; ++k)
+      sixteen[k] = freeInFourRows_.row(y)[k] & freeInFourRows_.row(y + 4)[k] & freeInFourRows_.row(y + 8)[k] &
+                   freeInFourRows_.row(y + 12)[k];
+    longestFreeBlockRun_[1][y] = longestRunOfBits(sixteen, width());
+  }
+}
+
+bool AtlasOccupancy::blocksFitAtRow(const ChartMask& mask, int32_t y) const {
+  for (int b = 0; b < 2; ++b) {
+    const BlockRun& block = mask.blocks[b];
+    if (block.length > 0 && longestFreeBlockRun_[b][y + block.row] < block.length) return false;
+  }
+  return true;
 }
 
 void AtlasOccupancy::updateRow(int32_t y) {
@@ -72,6 +114,13 @@ bool AtlasOccupancy::runsFitAtRow(const ChartMask& mask, int32_t y) const {
 }
 
 void AtlasOccupancy::prepareSpanTests(const ChartMask& mask) const {
+  blockColumns_.clear();
+  const BlockRun& block = mask.blocks[1];
+  // Columns every 16 texels along the block's run, its last one included: far enough apart to rule out
+  // different holes, few enough to cost less than the runs they spare.
+  for (int32_t offset = 0; block.length > 0 && offset < block.length + 15; offset += 16)
+    blockColumns_.push_back(block.start + std::min(offset, block.length - 1));
+  blockRow_ = block.row;
   spanTests_.clear();
   for (const MaskRun& run : mask.runs) {
     int32_t level = 0, span = 1;
@@ -106,6 +155,19 @@ bool AtlasOccupancy::wordsThatMayFit(int32_t y, int32_t lastX) const {
   return true;
 }
 
+uint64_t AtlasOccupancy::blockColumnsFree(int32_t y, int32_t word) const {
+  uint64_t candidates = ~uint64_t{0};
+  const uint64_t* row = freeInSixteenRows_.row(y + blockRow_);
+  for (const int32_t column : blockColumns_) {
+    // Bit i: column 64 · word + i + column is free in all 16 rows (reads stay in the row and its spare word).
+    const uint64_t* words = row + (column >> 6) + word;
+    const int32_t bit = column & 63;
+    candidates &= (words[0] >> bit) | ((words[1] << 1) << (63 - bit));
+    if (candidates == 0) break;
+  }
+  return candidates;
+}
+
 std::optional<int32_t> AtlasOccupancy::leftmostFitInRow(int32_t y, int32_t lastX) const {
   const int32_t lastWord = lastX / 64;
   const size_t testCount = spanTests_.size();
@@ -117,6 +179,8 @@ std::optional<int32_t> AtlasOccupancy::leftmostFitInRow(int32_t y, int32_t lastX
   for (int32_t k = 0; k <= lastWord; ++k) {
     if (!((candidateWords_[k >> 6] >> (k & 63)) & 1)) continue;
     uint64_t candidates = k < lastWord ? ~uint64_t{0} : ~uint64_t{0} >> (63 - (lastX & 63));
+    candidates &= blockColumnsFree(y, k);
+    if (candidates == 0) continue;
     for (size_t done = 0, i = lastEmptyingTest_; done < testCount; ++done, i = i + 1 == testCount ? 0 : i + 1) {
       const SpanTest& test = spanTests_[i];
       const uint64_t* words = spans_[test.level].row(y + test.row) + (test.from >> 6) + k;
@@ -139,7 +203,7 @@ std::optional<TexelPosition> AtlasOccupancy::firstFit(const ChartMask& mask, int
   prepareSpanTests(mask);
   lastEmptyingTest_ = 0;
   for (int32_t y = 0; y <= lastY; ++y) {
-    if (!runsFitAtRow(mask, y)) continue;
+    if (!blocksFitAtRow(mask, y) || !runsFitAtRow(mask, y)) continue;
     if (const auto x = leftmostFitInRow(y, lastX)) return TexelPosition{*x, y};
   }
   return std::nullopt;
@@ -157,6 +221,7 @@ void AtlasOccupancy::claim(const ChartMask& mask, TexelPosition position) {
   const int32_t firstRow = std::max(0, position.y - reach);
   const int32_t lastRow = std::min(height() - 1, position.y + mask.texels.height() - 1 + reach);
   for (int32_t y = firstRow; y <= lastRow; ++y) updateRow(y);
+  updateBlocks(firstRow, lastRow);
 }
 
 }  // namespace straightest::atlas_detail

@@ -41,7 +41,10 @@ class AtlasOccupancy {
   void prepareSpanTests(const ChartMask& mask) const;
   bool wordsThatMayFit(int32_t y, int32_t lastX) const;
   std::optional<int32_t> leftmostFitInRow(int32_t y, int32_t lastX) const;
+  uint64_t blockColumnsFree(int32_t y, int32_t word) const;
   void updateRow(int32_t y);
+  void updateBlocks(int32_t firstRow, int32_t lastRow);
+  bool blocksFitAtRow(const ChartMask& mask, int32_t y) const;
   void updateSpans(int32_t y);
 
   TexelMask& free_ = spans_[0];
@@ -53,7 +56,18 @@ class AtlasOccupancy {
   std::vector<uint64_t> wordSummary_[kLevels];
   int32_t summaryWords_ = 0;
   std::vector<int32_t> longestFreeRun_;  // per atlas row: rows that cannot hold a mask row are skipped
-  std::vector<int32_t> dilationReach_;   // per |dy| in 0..reach: how far the padding reaches along x
+  // Per block height in kBlockRows and atlas row y, the longest run of columns free in rows y … y + height − 1
+  // (0 where the block would pass the top), tested against the mask's blocks; the free texels of every
+  // 4 rows from y kept as a bitmap, so that a block of 16 rows is four of them.
+  std::vector<int32_t> longestFreeBlockRun_[2];
+  TexelMask freeInFourRows_;
+  // The free texels of every 16 rows from y: a place must find the mask's block of 16 rows free there, tested
+  // at a few of the block's columns on 64 columns at once before the mask's own runs (blockColumns_, scratch
+  // of firstFit, mask coordinates).
+  TexelMask freeInSixteenRows_;
+  mutable std::vector<int32_t> blockColumns_;
+  mutable int32_t blockRow_ = 0;
+  std::vector<int32_t> dilationReach_;  // per |dy| in 0..reach: how far the padding reaches along x
   // A mask row's run of L texels is free when the free spans of the largest length s ≤ L (1, 4, 16 or 64)
   // that tile it start free; the mask being placed, as such tests (scratch of firstFit).
   struct SpanTest {

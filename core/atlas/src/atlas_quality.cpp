@@ -82,7 +82,9 @@ AtlasQuality measureAtlas(const TriMesh& mesh, const std::vector<Vec2>& cornerUv
   q.seamLength = charts.seamLength;
   const WeldedCharts welded = weldCharts(mesh, charts);
   q.nonDiskCharts = static_cast<int32_t>(std::count(welded.isDisk.begin(), welded.isDisk.end(), uint8_t{0}));
-  ChartStretch stretch = measureChartStretch(mesh, cornerUv, charts);
+  ChartStretch stretch = measureChartStretch(mesh, cornerUv, charts,
+                                             Vec2{static_cast<double>(options.width),
+                                                  static_cast<double>(options.height)});
   q.l2 = stretch.l2, q.linf = stretch.linf;
   q.chartL2 = std::move(stretch.chartL2), q.chartLinf = std::move(stretch.chartLinf);
   q.flipped = stretch.flipped, q.mirroredCharts = stretch.mirroredCharts, q.degenerate = stretch.degenerate;

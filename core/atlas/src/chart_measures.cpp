@@ -14,6 +14,11 @@ namespace straightest::atlas_detail {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A chart whose longest side would span this fraction of the atlas at the fill scale is "large": its place
+// decides the layout, and a long one may only fit along the diagonal, so it is tried at more rotations
+// (the small ones fill in between at the right angles of their minimum rectangle).
+constexpr double kLargeChartSide = 0.25;
+constexpr int kTurnsOfLargeCharts = 16;
 
 double chartArea(const std::vector<Vec2>& triangles) {
   double area = 0;
@@ -33,12 +38,17 @@ Vec2 rotatedExtent(const std::vector<Vec2>& triangles, double angle) {
   return hi - lo;
 }
 
-/// The largest scale at which a chart of these sides fits the usable rectangle, either way round when rotating.
-double scaleThatFits(Vec2 extent, Vec2 usable, bool rotate) {
+/// The largest scale at which a chart of these sides fits the usable rectangle.
+double scaleThatFits(Vec2 extent, Vec2 usable) {
   auto fit = [](double side, double room) { return side > 0 ? room / side : kInfinity; };
-  const double upright = std::min(fit(extent.x, usable.x), fit(extent.y, usable.y));
-  const double turned = std::min(fit(extent.y, usable.x), fit(extent.x, usable.y));
-  return rotate ? std::max(upright, turned) : upright;
+  return std::min(fit(extent.x, usable.x), fit(extent.y, usable.y));
+}
+
+/// `turns` rotations evenly spread over the full turn from `base` (4: the right angles).
+std::vector<double> turnsOf(double base, int turns) {
+  std::vector<double> angles;
+  for (int k = 0; k < turns; ++k) angles.push_back(base + k * 2 * kPi / turns);
+  return angles;
 }
 
 /// Chart indices by decreasing key (ties in input order).
@@ -55,26 +65,28 @@ ChartMeasures measureCharts(const std::vector<ChartShape>& charts, bool rotate, 
   ChartMeasures measures;
   const Vec2 usable{static_cast<double>(frame.width - 2 * frame.border),
                     static_cast<double>(frame.height - 2 * frame.border)};
-  std::vector<double> rectangleArea(charts.size()), longestSide(charts.size()), chartAreas(charts.size());
-  measures.scaleUpperBound = kInfinity;
-  for (size_t i = 0; i < charts.size(); ++i) {
-    const double base = rotate ? minAreaRectangleAngle(charts[i].triangles) : 0;
-    std::vector<double> angles{0};
-    if (rotate) {
-      angles.clear();
-      for (int k = 0; k < 4; ++k) angles.push_back(base + k * kPi / 2);
-    }
-    measures.angles.push_back(angles);
-    const Vec2 extent = rotatedExtent(charts[i].triangles, base);
+  const size_t count = charts.size();
+  std::vector<double> baseAngle(count, 0), rectangleArea(count), longestSide(count), chartAreas(count);
+  for (size_t i = 0; i < count; ++i) {
+    baseAngle[i] = rotate ? minAreaRectangleAngle(charts[i].triangles) : 0;
+    const Vec2 extent = rotatedExtent(charts[i].triangles, baseAngle[i]);
     rectangleArea[i] = extent.x * extent.y;
     longestSide[i] = std::max(extent.x, extent.y);
-    measures.largestExtent = std::max({measures.largestExtent, extent.x, extent.y});
-    measures.scaleUpperBound = std::min(measures.scaleUpperBound, scaleThatFits(extent, usable, rotate));
+    measures.largestExtent = std::max(measures.largestExtent, longestSide[i]);
     chartAreas[i] = chartArea(charts[i].triangles);
     measures.totalArea += chartAreas[i];
   }
   measures.fillScale = measures.totalArea > 0 ? std::sqrt(usable.x * usable.y / measures.totalArea) : kInfinity;
-  measures.scaleUpperBound = std::min(measures.scaleUpperBound, measures.fillScale);
+  measures.scaleUpperBound = measures.fillScale;
+  for (size_t i = 0; i < count; ++i) {
+    const bool large = longestSide[i] * measures.fillScale > kLargeChartSide * std::min(usable.x, usable.y);
+    measures.angles.push_back(rotate ? turnsOf(baseAngle[i], large ? kTurnsOfLargeCharts : 4) : std::vector<double>{0});
+    measures.beyondRightAngles = measures.beyondRightAngles || measures.angles.back().size() > 4;
+    double fits = 0;
+    for (const double angle : measures.angles.back())
+      fits = std::max(fits, scaleThatFits(rotatedExtent(charts[i].triangles, angle), usable));
+    measures.scaleUpperBound = std::min(measures.scaleUpperBound, fits);
+  }
   measures.orders = {orderedBy(rectangleArea), orderedBy(longestSide), orderedBy(chartAreas)};
   return measures;
 }

@@ -9,7 +9,8 @@
 namespace straightest::atlas_detail {
 
 struct ChartMeasures {
-  ChartAngles angles;  // per chart: the rotations the packer tries
+  ChartAngles angles;              // per chart: the rotations the packer tries
+  bool beyondRightAngles = false;  // some chart has more rotations than the right angles
   // Charts by decreasing minimum-rectangle area, longest side and area: the hardest to place first, each
   // order a different greedy packing (one that fits is enough).
   std::vector<std::vector<int32_t>> orders;

@@ -42,17 +42,26 @@ Progress trialPart(const Search& search, double done, double from, double to) {
   return search.progress.range(at(from), at(to));
 }
 
-/// The charts packed at `scale`: rasterized once, then packed in each order until one fits.
+/// The charts packed at `scale`: rasterized once, then packed in each order, at every rotation and then at
+/// the right angles alone, until one packing fits. Neither rotation set packs better on every chart set: the
+/// extra rotations let long charts lie along the diagonal and odd shapes nest, the right angles alone keep
+/// compact charts in rows.
 PackOutcome tryScale(Search& search, double scale, std::vector<Placement>& placements) {
+  using atlas_detail::Rotations;
   const double done = search.trials++;
   const auto masks = atlas_detail::rasterizeAll(search.charts, search.measures.angles, scale, search.frame,
                                                 trialPart(search, done, 0, 0.5));
   if (!masks) return PackOutcome::Cancelled;
+  std::vector<Rotations> rotationSets{Rotations::All};
+  if (search.measures.beyondRightAngles) rotationSets.push_back(Rotations::RightAngles);
   const auto& orders = search.measures.orders;
-  for (size_t k = 0; k < orders.size(); ++k) {
-    const Progress part = trialPart(search, done, 0.5 + 0.5 * k / orders.size(), 0.5 + 0.5 * (k + 1) / orders.size());
+  const size_t packings = orders.size() * rotationSets.size();
+  for (size_t k = 0; k < packings; ++k) {
+    const Progress part = trialPart(search, done, 0.5 + 0.5 * k / packings, 0.5 + 0.5 * (k + 1) / packings);
     ThrottledProgress throttled(part, kStage);
-    const PackOutcome outcome = atlas_detail::packMasks(*masks, orders[k], search.frame, throttled, placements);
+    const PackOutcome outcome = atlas_detail::packMasks(*masks, orders[k / rotationSets.size()],
+                                                        rotationSets[k % rotationSets.size()], search.frame, throttled,
+                                                        placements);
     if (outcome != PackOutcome::DoesNotFit) return outcome;
   }
   return PackOutcome::DoesNotFit;

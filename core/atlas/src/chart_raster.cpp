@@ -54,15 +54,29 @@ void rasterizeTriangle(const Vec2 (&corner)[3], TexelMask& mask) {
   }
 }
 
-/// The runs of set texels of every row, longest first, and each row's longest.
+/// Per block height, the block of rows with the longest common run (ChartMask::blocks).
+void findBlocks(ChartMask& mask) {
+  const TexelMask& texels = mask.texels;
+  std::vector<uint64_t> common(texels.wordsPerRow());
+  for (int b = 0; b < 2; ++b) {
+    for (int32_t row = 0; row + kBlockRows[b] <= texels.height(); ++row) {
+      std::copy(texels.row(row), texels.row(row) + texels.wordsPerRow(), common.begin());
+      for (int32_t i = 1; i < kBlockRows[b]; ++i)
+        for (int32_t k = 0; k < texels.wordsPerRow(); ++k) common[k] &= texels.row(row + i)[k];
+      int32_t start = 0;
+      const int32_t length = longestRunOfBits(common.data(), texels.width(), &start);
+      if (length > mask.blocks[b].length) mask.blocks[b] = {row, start, length};
+    }
+  }
+}
+
+/// The runs of set texels of every row, longest first.
 void collectRuns(ChartMask& mask) {
   const TexelMask& texels = mask.texels;
-  mask.longestRunOfRow.assign(texels.height(), 0);
   for (int32_t row = 0; row < texels.height(); ++row) {
     for (int32_t start = texels.nextWithBit(row, 0, true); start < texels.width();) {
       const int32_t end = texels.nextWithBit(row, start, false);
       mask.runs.push_back({row, start, end - start});
-      mask.longestRunOfRow[row] = std::max(mask.longestRunOfRow[row], end - start);
       start = texels.nextWithBit(row, end, true);
     }
   }
@@ -94,6 +108,7 @@ std::optional<ChartMask> rasterizeChart(const std::vector<Vec2>& triangles, doub
     rasterizeTriangle(corner, mask.texels);
   }
   collectRuns(mask);
+  findBlocks(mask);
   return mask;
 }
 

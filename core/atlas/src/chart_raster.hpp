@@ -22,12 +22,23 @@ struct MaskRun {
   int32_t row = 0, start = 0, length = 0;
 };
 
+/// The rows of a block of a mask and the longest run of columns set in all of them.
+struct BlockRun {
+  int32_t row = 0, start = 0, length = 0;
+};
+
+/// Heights of the blocks of rows ChartMask::blocks and the occupancy's free blocks describe.
+inline constexpr int32_t kBlockRows[2] = {4, 16};
+
 struct ChartMask {
   TexelMask texels;
   double angle = 0;
-  Vec2 origin{};                         // the texel-space point (rotated and scaled uv) at the mask's corner (0, 0)
-  std::vector<MaskRun> runs;             // longest first: the runs most likely to find no room are tested first
-  std::vector<int32_t> longestRunOfRow;  // per mask row
+  Vec2 origin{};              // the texel-space point (rotated and scaled uv) at the mask's corner (0, 0)
+  std::vector<MaskRun> runs;  // longest first: the runs most likely to find no room are tested first
+  // Per height in kBlockRows, the block of that many consecutive rows with the longest run of columns set in
+  // all of them (length 0 when the mask is lower): a place whose rows have no such common free run is no fit,
+  // which rules out the thin holes between placed charts in one test.
+  BlockRun blocks[2];
 };
 
 /// Every texel whose closed square the closed chart (its triangles, degenerate ones included) touches, after

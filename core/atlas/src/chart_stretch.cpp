@@ -1,5 +1,7 @@
 // chart_stretch.cpp — Sander et al.'s stretch (texture_stretch.hpp's formulas) per corner uv, per chart and
-// for the whole atlas, after deciding each face's winding exactly against its chart's majority.
+// for the whole atlas, after deciding each face's winding exactly against its chart's majority. The uv is
+// measured in texels (u times the width, v times the height): a texel is square whatever the atlas's aspect,
+// so a chart mapped without distortion onto texels has stretch 1 in a 1024 x 256 atlas too.
 #include "chart_stretch.hpp"
 
 #include <algorithm>
@@ -44,6 +46,8 @@ void addFaceStretch(const TriMesh& mesh, int32_t f, const Vec2* q, double double
   s.maxLinf = std::max(s.maxLinf, std::sqrt(((a + c) + std::sqrt((a - c) * (a - c) + 4 * b * b)) / 2));
 }
 
+Vec2 inTexels(Vec2 uv, Vec2 texels) { return {uv.x * texels.x, uv.y * texels.y}; }
+
 /// Exact winding of each finite face's snapped uv: +1, −1 or 0.
 std::vector<int8_t> faceWindings(const UvCharts& charts) {
   std::vector<int8_t> winding(charts.chartOfFace.size(), 0);
@@ -71,15 +75,18 @@ std::vector<int8_t> majorityWindings(const TriMesh& mesh, const std::vector<Vec2
 
 }  // namespace
 
-ChartStretch measureChartStretch(const TriMesh& mesh, const std::vector<Vec2>& cornerUv, const UvCharts& charts) {
+ChartStretch measureChartStretch(const TriMesh& mesh, const std::vector<Vec2>& cornerUv, const UvCharts& charts,
+                                 Vec2 texels) {
   ChartStretch r;
+  const double atlasArea = texels.x * texels.y;
   const std::vector<int8_t> winding = faceWindings(charts);
   const std::vector<int8_t> majority = majorityWindings(mesh, cornerUv, charts, winding);
   std::vector<StretchSums> sums(charts.charts);
   for (int32_t f = 0; f < mesh.numFaces(); ++f) {
     const int32_t c = charts.chartOfFace[f];
     if (c < 0) continue;
-    const Vec2* q = &cornerUv[3 * static_cast<size_t>(f)];
+    const Vec2* uv = &cornerUv[3 * static_cast<size_t>(f)];
+    const Vec2 q[3] = {inTexels(uv[0], texels), inTexels(uv[1], texels), inTexels(uv[2], texels)};
     const double doubleArea = cross(q[1] - q[0], q[2] - q[0]);
     const double area = mesh.faceArea(f);
     StretchSums& s = sums[c];
@@ -98,7 +105,7 @@ ChartStretch measureChartStretch(const TriMesh& mesh, const std::vector<Vec2>& c
     atlas.add(sums[c]);
   }
   std::tie(r.l2, r.linf) = atlas.stretch();
-  r.uvArea = atlas.uvArea;
+  r.uvArea = atlas.uvArea / atlasArea;
   return r;
 }
 

@@ -23,9 +23,13 @@ bool betterThan(const Choice& a, const std::optional<Choice>& b) {
 }
 
 /// The best rotation's first fit for one chart; nothing when no rotation fits.
-std::optional<Choice> bestPlacement(const std::vector<std::optional<ChartMask>>& masks, AtlasOccupancy& occupancy) {
+std::optional<Choice> bestPlacement(const std::vector<std::optional<ChartMask>>& masks, Rotations rotations,
+                                    AtlasOccupancy& occupancy) {
+  // The right angles are every (n / 4)-th of a chart's n evenly spread turns (ChartAngles).
+  const size_t step = rotations == Rotations::RightAngles && masks.size() >= 4 ? masks.size() / 4 : 1;
   std::optional<Choice> best;
-  for (const auto& mask : masks) {
+  for (size_t k = 0; k < masks.size(); k += step) {
+    const auto& mask = masks[k];
     if (!mask) continue;
     const int32_t h = mask->texels.height();
     // Only positions whose top can beat (or tie) the best so far are worth scanning.
@@ -52,14 +56,15 @@ std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, co
   return masks;
 }
 
-PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, const AtlasFrame& frame,
-                      const std::function<bool(double)>& keepGoing, std::vector<Placement>& placements) {
+PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, Rotations rotations,
+                      const AtlasFrame& frame, const std::function<bool(double)>& keepGoing,
+                      std::vector<Placement>& placements) {
   AtlasOccupancy occupancy(frame.width, frame.height, frame.border, frame.padding);
   placements.assign(masks.size(), Placement{});
   for (size_t i = 0; i < order.size(); ++i) {
     if (!keepGoing(static_cast<double>(i) / order.size())) return PackOutcome::Cancelled;
     const int32_t chart = order[i];
-    const auto choice = bestPlacement(masks[chart], occupancy);
+    const auto choice = bestPlacement(masks[chart], rotations, occupancy);
     if (!choice) return PackOutcome::DoesNotFit;
     occupancy.claim(*choice->mask, choice->position);
     const Vec2 corner{static_cast<double>(choice->position.x), static_cast<double>(choice->position.y)};

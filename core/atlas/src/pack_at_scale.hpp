@@ -1,6 +1,6 @@
 // pack_at_scale.hpp — one greedy packing at a fixed texel density: every chart's rotations rasterized once
 // (in parallel), then charts placed in a given order, each at the rotation and first-fit position that keep
-// the packed extent lowest.
+// its top edge lowest.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -17,8 +17,12 @@ struct AtlasFrame {
   double padding = 0;
 };
 
-/// Per chart, the rotations worth trying (the minimum-area rectangle's and its multiples of 45°, or 0 alone).
+/// Per chart, the rotations worth trying: turns evenly spread over the full turn from the minimum-area
+/// rectangle's angle, 4 of them (its right angles) or a multiple of 4 (the right angles every n / 4), or 0 alone.
 using ChartAngles = std::vector<std::vector<double>>;
+
+/// Which of a chart's rotations a packing tries: all, or the right angles of its minimum-area rectangle.
+enum class Rotations { All, RightAngles };
 
 /// Per chart, one mask per rotation (nothing where the rotated chart is larger than the atlas).
 using ChartMasks = std::vector<std::vector<std::optional<ChartMask>>>;
@@ -31,9 +35,11 @@ enum class PackOutcome { Packed, DoesNotFit, Cancelled };
 std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, const ChartAngles& angles,
                                        double texelsPerUnit, const AtlasFrame& frame, const Progress& progress);
 
-/// Places every chart, in `order`, from its masks; `placements` (one per chart, input order) is complete only
-/// when the outcome is Packed. `keepGoing(fraction)` is asked as the charts go; false cancels.
-PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, const AtlasFrame& frame,
-                      const std::function<bool(double)>& keepGoing, std::vector<Placement>& placements);
+/// Places every chart, in `order`, from its masks (those of `rotations`); `placements` (one per chart, input
+/// order) is complete only when the outcome is Packed. `keepGoing(fraction)` is asked as the charts go; false
+/// cancels.
+PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, Rotations rotations,
+                      const AtlasFrame& frame, const std::function<bool(double)>& keepGoing,
+                      std::vector<Placement>& placements);
 
 }  // namespace straightest::atlas_detail

@@ -69,4 +69,36 @@ class TexelMask {
   std::vector<uint64_t> words_;
 };
 
+/// The longest run of set bits among the first `width` bits of `words` (the first such run's start in `start`).
+inline int32_t longestRunOfBits(const uint64_t* words, int32_t width, int32_t* start = nullptr) {
+  int32_t longest = 0, current = 0;
+  auto endRun = [&](int32_t end) {
+    if (current > longest && start) *start = end - current;
+    longest = std::max(longest, current);
+    current = 0;
+  };
+  for (int32_t k = 0; 64 * k < width; ++k) {
+    const int32_t bits = std::min(64, width - 64 * k);
+    const uint64_t word = bits < 64 ? words[k] & ((uint64_t{1} << bits) - 1) : words[k];
+    if (word == ~uint64_t{0}) {
+      current += 64;
+      continue;
+    }
+    for (int32_t at = 0; at < bits;) {
+      const uint64_t rest = word >> at;
+      if (rest & 1) {
+        const int32_t ones = __builtin_ctzll(~rest);  // rest is not all ones: word is not
+        current += ones;
+        at += ones;
+      } else {
+        endRun(64 * k + at);
+        if (rest == 0) break;
+        at += __builtin_ctzll(rest);
+      }
+    }
+  }
+  endRun(width);
+  return longest;
+}
+
 }  // namespace straightest::atlas_detail

@@ -126,19 +126,10 @@ struct CutReport {
 
 Error internal(const std::string& what) { return Error{ErrorCode::Internal, "cutting to a disk: " + what}; }
 
-}  // namespace
-
-Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
-  if (mesh.numFaces() == 0) return Error{ErrorCode::Topology, "the mesh has no face to cut into a disk"};
-  if (!report(progress, kStage, 0)) return cancelledError("cutting to a disk");
-  CutReport cut;
-  const Components components = findComponents(mesh);
-  cut.components = int32_t(components.faces.size());
-  cut.component = int32_t(std::max_element(components.faces.begin(), components.faces.end()) -
-                          components.faces.begin());  // the first of the largest: lowest face index
-  cut.faces = components.faces[cut.component];
-
-  // The component's topology: χ = V − E + F = 2 − 2g − k.
+/// The largest component's topology (χ = V − E + F = 2 − 2g − k) and how to make it a disk: which
+/// boundary loops are filled (all but the longest on a genus-0 surface with holes, all otherwise) and
+/// whether a seam must be cut.
+void chooseMethod(const TriMesh& mesh, const Components& components, CutReport& cut) {
   std::vector<uint8_t> inComponent(mesh.numVertices(), 0);
   int64_t boundaryHalfedges = 0;
   for (int32_t f = 0; f < mesh.numFaces(); ++f) {
@@ -172,10 +163,65 @@ Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
     cut.method = cut.genus == 0 ? CutMethod::Path : CutMethod::CutGraph;
     cut.filledLoops = loops;
   }
+}
+
+bool cuts(CutMethod method) { return method == CutMethod::Path || method == CutMethod::CutGraph; }
+
+/// The seam on the filled surface, as edges between the mesh's vertices (a seam through a filled hole's
+/// virtual vertex would be a bug).
+Expected<void> recordSeam(const TriMesh& mesh, const Surface& surface, const detail::Seam& seam, CutReport& cut) {
+  for (const auto& e : seam.edges) {
+    const int32_t a = surface.meshVertex[e[0]], b = surface.meshVertex[e[1]];
+    if (a < 0 || b < 0) return internal("the seam runs through a filled hole");
+    cut.seam.push_back({a, b});
+    cut.seamLength += norm(mesh.position(a) - mesh.position(b));
+  }
+  if (cut.method == CutMethod::Path)
+    cut.seamEnds = {surface.meshVertex[seam.ends[0]], surface.meshVertex[seam.ends[1]]};
+  return {};
+}
+
+/// The filled surface opened along the seam into a new mesh (or, with no seam, the filled surface as it
+/// is), and where each of its vertices came from.
+Expected<TriMesh> openAlongSeam(std::optional<Expected<TriMesh>>& built, const TriMesh& filled, Surface& surface,
+                                const detail::Seam& seam, const Progress& progress, CutReport& cut) {
+  cut.faceOrigin = std::move(surface.meshFace);
+  if (!cuts(cut.method)) {
+    cut.vertexOrigin = std::move(surface.meshVertex);
+    return std::move(*built);
+  }
+  auto open = detail::cutOpen(filled, seam.edges, progress.range(0.75, 0.9), kStage);
+  if (!open) return cancelledError("cutting to a disk");
+  for (int32_t v : open->copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
+  Expected<TriMesh> disk = TriMesh::build(std::move(open->positions), std::move(open->triangles));
+  if (!disk) return internal("the cut surface is not a mesh: " + disk.error().message);
+  return disk;
+}
+
+Expected<void> checkDisk(const MeshSummary& summary) {
+  if (summary.boundaryLoopSizes.size() == 1 && summary.eulerCharacteristic == 1 && summary.components == 1 &&
+      summary.reorientedFaces == 0)
+    return {};
+  return internal("the cut surface is not a disk (" + std::to_string(summary.boundaryLoopSizes.size()) +
+                  " boundary loops, Euler characteristic " + std::to_string(summary.eulerCharacteristic) + ")");
+}
+
+}  // namespace
+
+Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
+  if (mesh.numFaces() == 0) return Error{ErrorCode::Topology, "the mesh has no face to cut into a disk"};
+  if (!report(progress, kStage, 0)) return cancelledError("cutting to a disk");
+  CutReport cut;
+  const Components components = findComponents(mesh);
+  cut.components = int32_t(components.faces.size());
+  cut.component = int32_t(std::max_element(components.faces.begin(), components.faces.end()) -
+                          components.faces.begin());  // the first of the largest: lowest face index
+  cut.faces = components.faces[cut.component];
+  chooseMethod(mesh, components, cut);
   if (!report(progress, kStage, 0.1)) return cancelledError("cutting to a disk");
 
   Surface surface = componentSurface(mesh, components.ofFace, cut.component, cut.filledLoops);
-  const bool cutting = cut.method == CutMethod::Path || cut.method == CutMethod::CutGraph;
+  const bool cutting = cuts(cut.method);
   // A closed mesh of one piece is its own surface to find the seam on: no need to build it again. (The
   // disk itself is always built, so that its summary is its own.)
   const bool meshIsSurface = cutting && cut.components == 1 && cut.filledLoops.empty() &&
@@ -196,33 +242,12 @@ Expected<DiskCut> cutToDisk(const TriMesh& mesh, const Progress& progress) {
     if (!found) return found.error();
     seam = std::move(found).value();
   }
-  for (const auto& e : seam.edges) {
-    const int32_t a = surface.meshVertex[e[0]], b = surface.meshVertex[e[1]];
-    if (a < 0 || b < 0) return internal("the seam runs through a filled hole");
-    cut.seam.push_back({a, b});
-    cut.seamLength += norm(mesh.position(a) - mesh.position(b));
-  }
-  if (cut.method == CutMethod::Path)
-    cut.seamEnds = {surface.meshVertex[seam.ends[0]], surface.meshVertex[seam.ends[1]]};
-
-  cut.faceOrigin = std::move(surface.meshFace);
-  if (!cutting) {  // without a seam (Disk, Fill) the filled surface is the disk
-    cut.vertexOrigin = std::move(surface.meshVertex);
-  } else {
-    auto open = detail::cutOpen(filled, seam.edges, progress.range(0.75, 0.9), kStage);
-    if (!open) return cancelledError("cutting to a disk");
-    for (int32_t v : open->copyOf) cut.vertexOrigin.push_back(surface.meshVertex[v]);
-    built = TriMesh::build(std::move(open->positions), std::move(open->triangles));
-    if (!*built) return internal("the cut surface is not a mesh: " + built->error().message);
-  }
-  TriMesh& disk = built->value();
-  const MeshSummary& summary = disk.summary();
-  if (summary.boundaryLoopSizes.size() != 1 || summary.eulerCharacteristic != 1 || summary.components != 1 ||
-      summary.reorientedFaces != 0)
-    return internal("the cut surface is not a disk (" + std::to_string(summary.boundaryLoopSizes.size()) +
-                    " boundary loops, Euler characteristic " + std::to_string(summary.eulerCharacteristic) + ")");
+  if (auto recorded = recordSeam(mesh, surface, seam, cut); !recorded) return recorded.error();
+  Expected<TriMesh> disk = openAlongSeam(built, filled, surface, seam, progress, cut);
+  if (!disk) return disk.error();
+  if (auto checked = checkDisk(disk.value().summary()); !checked) return checked.error();
   if (!report(progress, kStage, 1)) return cancelledError("cutting to a disk");
-  return DiskCut{std::move(disk),
+  return DiskCut{std::move(disk).value(),
                  std::move(cut.vertexOrigin),
                  std::move(cut.faceOrigin),
                  std::move(cut.seam),

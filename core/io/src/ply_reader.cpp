@@ -249,6 +249,156 @@ int findProperty(const Element& e, std::string_view name) {
   return -1;
 }
 
+/// Which element and properties of the header hold what is read: the vertices' x, y, z and the faces'
+/// index list.
+struct Layout {
+  int vertexElement = -1, faceElement = -1, xyz[3] = {-1, -1, -1}, indexList = -1;
+  int64_t vertices = 0, faces = 0;
+};
+
+Expected<void> findVertexProperties(const Element& e, Layout& layout) {
+  for (int k = 0; k < 3; ++k) {
+    const char* axis[] = {"x", "y", "z"};
+    layout.xyz[k] = findProperty(e, axis[k]);
+    if (layout.xyz[k] < 0) return parse(std::string("the PLY vertex element has no '") + axis[k] + "' property");
+    if (e.properties[layout.xyz[k]].isList)
+      return parse(std::string("the PLY vertex property '") + axis[k] + "' is a list");
+  }
+  return {};
+}
+
+Expected<void> findFaceIndices(const Element& e, Layout& layout) {
+  layout.indexList = findProperty(e, "vertex_indices");
+  if (layout.indexList < 0) layout.indexList = findProperty(e, "vertex_index");
+  if (layout.indexList < 0 || !e.properties[layout.indexList].isList)
+    return parse("the PLY face element has no list property 'vertex_indices' (or 'vertex_index')");
+  if (!isInteger(e.properties[layout.indexList].type))
+    return unsupported("the PLY face list 'vertex_indices' has a floating-point item type; indices must be integers");
+  return {};
+}
+
+Expected<Layout> findLayout(const Header& h, const BuildLimits& limits) {
+  Layout layout;
+  for (size_t i = 0; i < h.elements.size(); ++i) {
+    const Element& e = h.elements[i];
+    Expected<void> found;
+    if (e.name == "vertex" && layout.vertexElement < 0) {
+      layout.vertexElement = static_cast<int>(i);
+      found = findVertexProperties(e, layout);
+    } else if (e.name == "face" && layout.faceElement < 0) {
+      layout.faceElement = static_cast<int>(i);
+      found = findFaceIndices(e, layout);
+    }
+    if (!found) return found.error();
+  }
+  if (layout.vertexElement < 0) return parse("the PLY header has no 'vertex' element");
+  if (layout.faceElement < 0)
+    return Error{ErrorCode::Empty, "the PLY file has no 'face' element (a point cloud?): there is no surface to read"};
+  const int64_t nv = h.elements[layout.vertexElement].count, nf = h.elements[layout.faceElement].count;
+  if (nv > limits.maxVertices || nf > limits.maxFaces)
+    return Error{ErrorCode::TooLarge, "the PLY header claims " + std::to_string(nv) + " vertices and " +
+                                          std::to_string(nf) + " faces, over the limits of " +
+                                          std::to_string(limits.maxVertices) + " vertices and " +
+                                          std::to_string(limits.maxFaces) + " faces"};
+  layout.vertices = nv;
+  layout.faces = nf;
+  return layout;
+}
+
+/// What the elements' bodies hold: the vertices, and every face's indices one after another.
+struct Body {
+  PolygonSoup soup;
+  std::vector<int32_t> corners;
+  std::vector<int64_t> firstCorner{0};  // face f: corners[firstCorner[f] .. firstCorner[f + 1])
+};
+
+/// Before allocating: every instance takes at least this many bytes (binary: its scalars and list
+/// counts; ASCII: a character and a separator per value, the very last value needing no separator).
+Expected<void> checkElementFits(const Element& e, const ValueSource& source) {
+  uint64_t least = 0;
+  for (const Property& p : e.properties) least += source.ascii() ? 2 : sizeOf(p.isList ? p.countType : p.type);
+  if (static_cast<uint64_t>(e.count) > (source.remaining() + 1) / least)
+    return parse("the PLY header claims " + std::to_string(e.count) + " '" + e.name + "' elements, but only " +
+                 std::to_string(source.remaining()) + " bytes follow (the file is truncated or the header lies)");
+  return {};
+}
+
+/// One list property of instance i, whose count has been read; its items are kept only if they are the
+/// faces' indices.
+Expected<void> readList(ValueSource& source, const Element& e, const Property& p, int64_t i, double count, bool indices,
+                        int64_t vertices, std::vector<int32_t>& corners) {
+  const double itemBytes = source.ascii() ? 2.0 : static_cast<double>(sizeOf(p.type));
+  if (count < 0 || count * itemBytes > static_cast<double>(source.remaining()))
+    return parse(source.lineNote() + e.name + " " + std::to_string(i) + ": a list of " +
+                 std::to_string(static_cast<int64_t>(count)) + " values does not fit in the " +
+                 std::to_string(source.remaining()) + " bytes left (truncated?)");
+  const int64_t k = static_cast<int64_t>(count);
+  if (indices && k < 3)
+    return Error{ErrorCode::InvalidFace, source.lineNote() + "face " + std::to_string(i) + " has " + std::to_string(k) +
+                                             " vertices (at least 3 needed)"};
+  for (int64_t j = 0; j < k; ++j) {
+    double item = 0;
+    if (!source.read(p.type, item, e.name, i)) return *source.error;
+    if (!indices) continue;
+    if (item < 0 || item >= static_cast<double>(vertices))
+      return Error{ErrorCode::IndexOutOfRange, source.lineNote() + "face " + std::to_string(i) + " refers to vertex " +
+                                                   std::to_string(static_cast<int64_t>(item)) + ", but the file has " +
+                                                   std::to_string(vertices) + " vertices"};
+    corners.push_back(static_cast<int32_t>(item));
+  }
+  return {};
+}
+
+/// Every instance of element ei, keeping the vertices' coordinates and the faces' indices.
+Expected<void> readElement(ValueSource& source, const Header& h, size_t ei, const Layout& layout, Body& body) {
+  const Element& e = h.elements[ei];
+  if (auto fits = checkElementFits(e, source); !fits) return fits.error();
+  const bool isVertex = static_cast<int>(ei) == layout.vertexElement,
+             isFace = static_cast<int>(ei) == layout.faceElement;
+  if (isVertex) body.soup.positions.reserve(e.count);
+  if (isFace) body.firstCorner.reserve(e.count + 1);
+  for (int64_t i = 0; i < e.count; ++i) {
+    double c[3] = {0, 0, 0};
+    for (size_t pi = 0; pi < e.properties.size(); ++pi) {
+      const Property& p = e.properties[pi];
+      double value = 0;
+      if (!source.read(p.isList ? p.countType : p.type, value, e.name, i)) return *source.error;
+      if (p.isList) {
+        const bool indices = isFace && static_cast<int>(pi) == layout.indexList;
+        if (auto read = readList(source, e, p, i, value, indices, layout.vertices, body.corners); !read)
+          return read.error();
+      } else {
+        for (int k = 0; k < 3; ++k)
+          if (isVertex && layout.xyz[k] == static_cast<int>(pi)) c[k] = value;
+      }
+    }
+    if (isVertex) {
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+        return Error{ErrorCode::NonFinite,
+                     source.lineNote() + "vertex " + std::to_string(i) + " has a non-finite coordinate"};
+      body.soup.positions.push_back({c[0], c[1], c[2]});
+    }
+    if (isFace) body.firstCorner.push_back(static_cast<int64_t>(body.corners.size()));
+  }
+  return {};
+}
+
+/// The faces as triangles: triangles as they are, larger polygons triangulated.
+void triangulateFaces(Body& body, int64_t faces) {
+  PolygonSoup& soup = body.soup;
+  std::vector<int32_t> polygon;
+  soup.triangles.reserve(static_cast<size_t>(faces));
+  for (size_t f = 0; f + 1 < body.firstCorner.size(); ++f) {
+    polygon.assign(body.corners.begin() + body.firstCorner[f], body.corners.begin() + body.firstCorner[f + 1]);
+    if (polygon.size() == 3) {
+      soup.triangles.push_back({polygon[0], polygon[1], polygon[2]});
+    } else {
+      triangulatePolygon(soup.positions, polygon, soup.triangles);
+      ++soup.polygonsTriangulated;
+    }
+  }
+}
+
 }  // namespace
 
 bool looksLikePly(std::string_view bytes) {
@@ -259,116 +409,20 @@ Expected<PolygonSoup> readPly(std::string_view bytes, const BuildLimits& limits)
   auto header = readHeader(bytes);
   if (!header) return header.error();
   const Header& h = header.value();
-
-  // Which element and properties hold what we read.
-  int vertexElement = -1, faceElement = -1, xyz[3] = {-1, -1, -1}, indexList = -1;
-  for (size_t i = 0; i < h.elements.size(); ++i) {
-    const Element& e = h.elements[i];
-    if (e.name == "vertex" && vertexElement < 0) {
-      vertexElement = static_cast<int>(i);
-      for (int k = 0; k < 3; ++k) {
-        const char* axis[] = {"x", "y", "z"};
-        xyz[k] = findProperty(e, axis[k]);
-        if (xyz[k] < 0) return parse(std::string("the PLY vertex element has no '") + axis[k] + "' property");
-        if (e.properties[xyz[k]].isList)
-          return parse(std::string("the PLY vertex property '") + axis[k] + "' is a list");
-      }
-    } else if (e.name == "face" && faceElement < 0) {
-      faceElement = static_cast<int>(i);
-      indexList = findProperty(e, "vertex_indices");
-      if (indexList < 0) indexList = findProperty(e, "vertex_index");
-      if (indexList < 0 || !e.properties[indexList].isList)
-        return parse("the PLY face element has no list property 'vertex_indices' (or 'vertex_index')");
-      if (!isInteger(e.properties[indexList].type))
-        return unsupported(
-            "the PLY face list 'vertex_indices' has a floating-point item type; indices must be integers");
-    }
-  }
-  if (vertexElement < 0) return parse("the PLY header has no 'vertex' element");
-  if (faceElement < 0)
-    return Error{ErrorCode::Empty, "the PLY file has no 'face' element (a point cloud?): there is no surface to read"};
-  const int64_t nv = h.elements[vertexElement].count, nf = h.elements[faceElement].count;
-  if (nv > limits.maxVertices || nf > limits.maxFaces)
-    return Error{ErrorCode::TooLarge, "the PLY header claims " + std::to_string(nv) + " vertices and " +
-                                          std::to_string(nf) + " faces, over the limits of " +
-                                          std::to_string(limits.maxVertices) + " vertices and " +
-                                          std::to_string(limits.maxFaces) + " faces"};
-
-  PolygonSoup soup;
-  std::vector<int32_t> corners;         // every face's indices, one after another
-  std::vector<int64_t> firstCorner{0};  // face f: corners[firstCorner[f] .. firstCorner[f + 1])
+  auto layout = findLayout(h, limits);
+  if (!layout) return layout.error();
+  Body body;
   ValueSource source(bytes, h);
   for (size_t ei = 0; ei < h.elements.size(); ++ei) {
     const Element& e = h.elements[ei];
     if (e.properties.empty() || e.count == 0) continue;
-    // Before allocating: every instance takes at least this many bytes (binary: its scalars and list
-    // counts; ASCII: a character and a separator per value, the very last value needing no separator).
-    uint64_t least = 0;
-    for (const Property& p : e.properties) least += source.ascii() ? 2 : sizeOf(p.isList ? p.countType : p.type);
-    if (static_cast<uint64_t>(e.count) > (source.remaining() + 1) / least)
-      return parse("the PLY header claims " + std::to_string(e.count) + " '" + e.name + "' elements, but only " +
-                   std::to_string(source.remaining()) + " bytes follow (the file is truncated or the header lies)");
-    const bool isVertex = static_cast<int>(ei) == vertexElement, isFace = static_cast<int>(ei) == faceElement;
-    if (isVertex) soup.positions.reserve(e.count);
-    if (isFace) firstCorner.reserve(e.count + 1);
-    for (int64_t i = 0; i < e.count; ++i) {
-      double c[3] = {0, 0, 0};
-      for (size_t pi = 0; pi < e.properties.size(); ++pi) {
-        const Property& p = e.properties[pi];
-        double value = 0;
-        if (!source.read(p.isList ? p.countType : p.type, value, e.name, i)) return *source.error;
-        if (!p.isList) {
-          for (int k = 0; k < 3; ++k)
-            if (isVertex && xyz[k] == static_cast<int>(pi)) c[k] = value;
-          continue;
-        }
-        const bool indices = isFace && static_cast<int>(pi) == indexList;
-        const double itemBytes = source.ascii() ? 2.0 : static_cast<double>(sizeOf(p.type));
-        if (value < 0 || value * itemBytes > static_cast<double>(source.remaining()))
-          return parse(source.lineNote() + e.name + " " + std::to_string(i) + ": a list of " +
-                       std::to_string(static_cast<int64_t>(value)) + " values does not fit in the " +
-                       std::to_string(source.remaining()) + " bytes left (truncated?)");
-        const int64_t k = static_cast<int64_t>(value);
-        if (indices && k < 3)
-          return Error{ErrorCode::InvalidFace, source.lineNote() + "face " + std::to_string(i) + " has " +
-                                                   std::to_string(k) + " vertices (at least 3 needed)"};
-        for (int64_t j = 0; j < k; ++j) {
-          double item = 0;
-          if (!source.read(p.type, item, e.name, i)) return *source.error;
-          if (!indices) continue;
-          if (item < 0 || item >= static_cast<double>(nv))
-            return Error{ErrorCode::IndexOutOfRange, source.lineNote() + "face " + std::to_string(i) +
-                                                         " refers to vertex " +
-                                                         std::to_string(static_cast<int64_t>(item)) +
-                                                         ", but the file has " + std::to_string(nv) + " vertices"};
-          corners.push_back(static_cast<int32_t>(item));
-        }
-      }
-      if (isVertex) {
-        if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
-          return Error{ErrorCode::NonFinite,
-                       source.lineNote() + "vertex " + std::to_string(i) + " has a non-finite coordinate"};
-        soup.positions.push_back({c[0], c[1], c[2]});
-      }
-      if (isFace) firstCorner.push_back(static_cast<int64_t>(corners.size()));
-    }
+    if (auto read = readElement(source, h, ei, layout.value(), body); !read) return read.error();
   }
   if (!source.atEnd())
     return parse(source.lineNote() + std::to_string(source.remaining()) +
                  " bytes follow the last PLY element (the header's counts are too small?)");
-
-  std::vector<int32_t> polygon;
-  soup.triangles.reserve(static_cast<size_t>(nf));
-  for (size_t f = 0; f + 1 < firstCorner.size(); ++f) {
-    polygon.assign(corners.begin() + firstCorner[f], corners.begin() + firstCorner[f + 1]);
-    if (polygon.size() == 3) {
-      soup.triangles.push_back({polygon[0], polygon[1], polygon[2]});
-    } else {
-      triangulatePolygon(soup.positions, polygon, soup.triangles);
-      ++soup.polygonsTriangulated;
-    }
-  }
-  return soup;
+  triangulateFaces(body, layout.value().faces);
+  return std::move(body.soup);
 }
 
 }  // namespace straightest

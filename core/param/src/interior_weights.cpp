@@ -35,81 +35,102 @@ struct RowScratch {
   std::vector<Vec2> q;
 };
 
+/// Ring indices wrap with a compare, not `%`: an integer division per access was a noticeable part of
+/// the weights' cost.
+inline size_t nextIn(size_t d, size_t k) { return k + 1 == d ? 0 : k + 1; }
+inline size_t previousIn(size_t d, size_t k) { return k == 0 ? d - 1 : k - 1; }
+
+/// v's one ring in counter-clockwise order (neighbours k and k+1 span face(h_k)), its edge vectors and
+/// lengths, and the angles at v between them (s.theta, summing to *thetaSum). False if the ring is too
+/// small or has a zero or non-finite edge or angle sum.
+bool ringGeometry(const TriMesh& mesh, int32_t v, RowScratch& s, double& thetaSum) {
+  s.ring.clear();
+  for (int32_t neighbour : mesh.vertexNeighbours(v)) s.ring.push_back(neighbour);
+  const size_t d = s.ring.size();
+  const Vec3 p = mesh.position(v);
+  s.e.resize(d);
+  s.l.resize(d);
+  s.theta.resize(d);
+  s.w.assign(d, 0.0);
+  bool ok = d >= 3;
+  thetaSum = 0;
+  for (size_t k = 0; k < d && ok; ++k) {
+    s.e[k] = mesh.position(s.ring[k]) - p;
+    s.l[k] = norm(s.e[k]);
+    ok = s.l[k] > 0 && std::isfinite(s.l[k]);
+  }
+  for (size_t k = 0; k < d && ok; ++k) {
+    s.theta[k] = angleBetween(s.e[k], s.e[nextIn(d, k)]);  // angle at v in face (v, k, k+1)
+    thetaSum += s.theta[k];
+  }
+  return ok && thetaSum > 0;
+}
+
+void cotanWeights(const TriMesh& mesh, int32_t v, RowScratch& s) {
+  const size_t d = s.ring.size();
+  const Vec3 p = mesh.position(v);
+  for (size_t k = 0; k < d; ++k) {
+    const Vec3& pk = mesh.position(s.ring[k]);
+    const Vec3& pn = mesh.position(s.ring[nextIn(d, k)]);      // third vertex of face (v, k, k+1)
+    const Vec3& pp = mesh.position(s.ring[previousIn(d, k)]);  // third vertex of face (v, k-1, k)
+    s.w[k] = cotAngle(p - pn, pk - pn) + cotAngle(p - pp, pk - pp);
+  }
+}
+
+/// Floater's shape-preserving weights: the ring's geodesic polar map, then for each neighbour the
+/// barycentric coordinates of the origin in a triangle it makes with an opposite segment, averaged.
+/// False if some neighbour has no such triangle.
+bool shapePreservingWeights(RowScratch& s, double thetaSum) {
+  const size_t d = s.ring.size();
+  std::vector<Vec2>& q = s.q;
+  q.resize(d);
+  double psi = 0;
+  for (size_t k = 0; k < d; ++k) {
+    q[k] = Vec2{std::cos(psi), std::sin(psi)} * s.l[k];
+    psi += s.theta[k] * kTwoPi / thetaSum;
+  }
+  for (size_t k = 0; k < d; ++k) {
+    bool found = false;
+    for (size_t step = 1, a = nextIn(d, k); step + 1 < d && !found; ++step, a = nextIn(d, a)) {
+      const size_t b = nextIn(d, a);  // the segment (q_a, q_b), a = k + step
+      double mu[3];
+      if (!originBarycentric(q[k], q[a], q[b], mu)) continue;
+      if (mu[0] >= -1e-12 && mu[1] >= -1e-12 && mu[2] >= -1e-12) {
+        s.w[k] += mu[0];
+        s.w[a] += mu[1];
+        s.w[b] += mu[2];
+        found = true;
+      }
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
+/// The weights of `kind` into s.w (unnormalized); false if they cannot be formed.
+bool kindWeights(const TriMesh& mesh, int32_t v, WeightKind kind, RowScratch& s, double thetaSum) {
+  const size_t d = s.ring.size();
+  switch (kind) {
+    case WeightKind::Uniform:
+      for (size_t k = 0; k < d; ++k) s.w[k] = 1;
+      return true;
+    case WeightKind::MeanValue:
+      for (size_t k = 0; k < d; ++k)
+        s.w[k] = (std::tan(s.theta[previousIn(d, k)] / 2) + std::tan(s.theta[k] / 2)) / s.l[k];
+      return true;
+    case WeightKind::Cotan: cotanWeights(mesh, v, s); return true;
+    case WeightKind::ShapePreserving: return shapePreservingWeights(s, thetaSum);
+  }
+  return false;
+}
+
 /// Interior vertex v's row: its one ring in counter-clockwise order (s.ring) and the normalized
 /// weights (s.w). False when the weights fell back to uniform.
 bool rowWeights(const TriMesh& mesh, int32_t v, WeightKind kind, RowScratch& s) {
-  std::vector<int32_t>& ring = s.ring;
-  std::vector<Vec3>& e = s.e;
-  std::vector<double>&l = s.l, &theta = s.theta, &w = s.w;
-  std::vector<Vec2>& q = s.q;
-  // One ring in counter-clockwise order: neighbours k and k+1 span face(h_k).
-  ring.clear();
-  for (int32_t neighbour : mesh.vertexNeighbours(v)) ring.push_back(neighbour);
-  const size_t d = ring.size();
-  const Vec3 p = mesh.position(v);
-  e.resize(d);
-  l.resize(d);
-  theta.resize(d);
-  w.assign(d, 0.0);
-  bool ok = d >= 3;
   double thetaSum = 0;
-  for (size_t k = 0; k < d && ok; ++k) {
-    e[k] = mesh.position(ring[k]) - p;
-    l[k] = norm(e[k]);
-    ok = l[k] > 0 && std::isfinite(l[k]);
-  }
-  // Ring indices wrap with a compare, not `%`: an integer division per access was a noticeable part
-  // of this loop's cost.
-  auto next = [d](size_t k) { return k + 1 == d ? 0 : k + 1; };
-  for (size_t k = 0; k < d && ok; ++k) {
-    theta[k] = angleBetween(e[k], e[next(k)]);  // angle at v in face (v, k, k+1)
-    thetaSum += theta[k];
-  }
-  ok = ok && thetaSum > 0;
-  if (ok) {
-    switch (kind) {
-      case WeightKind::Uniform:
-        for (size_t k = 0; k < d; ++k) w[k] = 1;
-        break;
-      case WeightKind::MeanValue:
-        for (size_t k = 0; k < d; ++k)
-          w[k] = (std::tan(theta[k == 0 ? d - 1 : k - 1] / 2) + std::tan(theta[k] / 2)) / l[k];
-        break;
-      case WeightKind::Cotan:
-        for (size_t k = 0; k < d; ++k) {
-          const Vec3& pk = mesh.position(ring[k]);
-          const Vec3& pn = mesh.position(ring[next(k)]);                 // third vertex of face (v, k, k+1)
-          const Vec3& pp = mesh.position(ring[k == 0 ? d - 1 : k - 1]);  // third vertex of face (v, k-1, k)
-          w[k] = cotAngle(p - pn, pk - pn) + cotAngle(p - pp, pk - pp);
-        }
-        break;
-      case WeightKind::ShapePreserving: {
-        // Geodesic polar map of the ring, then Floater's averaged barycentric coordinates.
-        q.resize(d);
-        double psi = 0;
-        for (size_t k = 0; k < d; ++k) {
-          q[k] = Vec2{std::cos(psi), std::sin(psi)} * l[k];
-          psi += theta[k] * kTwoPi / thetaSum;
-        }
-        for (size_t k = 0; k < d && ok; ++k) {
-          bool found = false;
-          for (size_t s = 1, a = next(k); s + 1 < d && !found; ++s, a = next(a)) {
-            const size_t b = next(a);  // the segment (q_a, q_b), a = k + s
-            double mu[3];
-            if (!originBarycentric(q[k], q[a], q[b], mu)) continue;
-            if (mu[0] >= -1e-12 && mu[1] >= -1e-12 && mu[2] >= -1e-12) {
-              w[k] += mu[0];
-              w[a] += mu[1];
-              w[b] += mu[2];
-              found = true;
-            }
-          }
-          ok = found;
-        }
-        break;
-      }
-    }
-  }
+  bool ok = ringGeometry(mesh, v, s, thetaSum) && kindWeights(mesh, v, kind, s, thetaSum);
+  const size_t d = s.ring.size();
+  std::vector<double>& w = s.w;
   double sum = 0;
   for (size_t k = 0; k < d && ok; ++k) {
     ok = std::isfinite(w[k]);

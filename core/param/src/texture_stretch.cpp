@@ -21,6 +21,23 @@ struct ChunkSums {
   double maxLinf = 0, angleMax = 1, areaMax = 1;
   int64_t flipped = 0, degenerate = 0;
 };
+
+/// The singular values Γ (linf) and γ (gamma) of face f's map from uv to 3D, and their root mean square
+/// (l2): Sander et al.'s stretch. twiceArea is the face's signed uv area, doubled.
+struct FaceStretch {
+  double l2, linf, gamma;
+};
+FaceStretch faceStretch(const TriMesh& mesh, const std::vector<Vec2>& uv, int32_t f, double twiceArea) {
+  const Triangle& t = mesh.triangle(f);
+  const Vec2 &q1 = uv[t[0]], &q2 = uv[t[1]], &q3 = uv[t[2]];
+  const Vec3 &p1 = mesh.position(t[0]), &p2 = mesh.position(t[1]), &p3 = mesh.position(t[2]);
+  const double A = twiceArea;
+  const Vec3 Ss = (p1 * (q2.y - q3.y) + p2 * (q3.y - q1.y) + p3 * (q1.y - q2.y)) / A;
+  const Vec3 St = (p1 * (q3.x - q2.x) + p2 * (q1.x - q3.x) + p3 * (q2.x - q1.x)) / A;
+  const double a = dot(Ss, Ss), b = dot(Ss, St), c = dot(St, St);
+  const double root = std::sqrt((a - c) * (a - c) + 4 * b * b);
+  return {std::sqrt((a + c) / 2), std::sqrt(((a + c) + root) / 2), std::sqrt(std::max(0.0, ((a + c) - root) / 2))};
+}
 }  // namespace
 
 StretchMetrics textureStretch(const TriMesh& mesh, const std::vector<Vec2>& uv) {
@@ -60,20 +77,11 @@ StretchMetrics textureStretch(const TriMesh& mesh, const std::vector<Vec2>& uv) 
         continue;
       }
       if (!(A3 > 0)) continue;  // a zero-area 3D face stretches nothing
-      const Triangle& t = mesh.triangle(f);
-      const Vec2 &q1 = uv[t[0]], &q2 = uv[t[1]], &q3 = uv[t[2]];
-      const Vec3 &p1 = mesh.position(t[0]), &p2 = mesh.position(t[1]), &p3 = mesh.position(t[2]);
-      const double A = 2 * a2[f];
-      const Vec3 Ss = (p1 * (q2.y - q3.y) + p2 * (q3.y - q1.y) + p3 * (q1.y - q2.y)) / A;
-      const Vec3 St = (p1 * (q3.x - q2.x) + p2 * (q1.x - q3.x) + p3 * (q2.x - q1.x)) / A;
-      const double a = dot(Ss, Ss), b = dot(Ss, St), c = dot(St, St);
-      const double root = std::sqrt((a - c) * (a - c) + 4 * b * b);
-      l2[f] = std::sqrt((a + c) / 2);
-      const double linf = std::sqrt(((a + c) + root) / 2);
-      const double gamma = std::sqrt(std::max(0.0, ((a + c) - root) / 2));
+      const FaceStretch stretch = faceStretch(mesh, uv, f, 2 * a2[f]);
+      l2[f] = stretch.l2;
       s.l2 += l2[f] * l2[f] * A3;
-      s.maxLinf = std::max(s.maxLinf, linf);
-      const double conformal = gamma > 0 ? linf / gamma : inf;
+      s.maxLinf = std::max(s.maxLinf, stretch.linf);
+      const double conformal = stretch.gamma > 0 ? stretch.linf / stretch.gamma : inf;
       s.angle += conformal * A3;
       s.angleMax = std::max(s.angleMax, conformal);
       const double sigma = (std::abs(a2[f]) / sumA2) / (A3 / sumA3);

@@ -12,7 +12,8 @@
 // below 0.5 is finer than the grid and moves by at most 2^-25 (6e-5 texels at 1024), so for the npm output's
 // float32 uv the tests are exact for the points as snapped, not for the float32 values below 0.5. Two
 // corners are "the same uv" when they snap to the same point. Distances (gaps) are computed in double from
-// the snapped points. Stretch uses the uv as given (not snapped), and the exact winding only decides which
+// the snapped points. Stretch uses the uv as given (not snapped), laid on texels (u × width, v × height, so
+// that a non-square atlas does not count its aspect as stretch), and the exact winding only decides which
 // faces are flipped or degenerate.
 #pragma once
 #include <cstdint>
@@ -29,7 +30,7 @@ struct AtlasQuality {
                                            // the same uv on both sides (from the uv alone, not from any chart ids)
   int32_t nonDiskCharts = 0;               // charts that are not a topological disk (χ != 1, boundary loops != 1, or a
                                            // vertex where the boundary pinches), on the chart welded by (vertex, uv)
-  double l2 = 0, linf = 0;                 // Sander stretch of the whole atlas, uv scaled so total uv area = total 3D
+  double l2 = 0, linf = 0;                 // Sander stretch of the whole atlas, uv in texels scaled so uv area = 3D
                                            // area; inf when any face is flipped or degenerate or any uv is not finite
   std::vector<double> chartL2, chartLinf;  // per chart, each normalized by its own areas
   int64_t flipped = 0;         // faces whose uv winding differs from their chart's majority (3D-area-weighted)

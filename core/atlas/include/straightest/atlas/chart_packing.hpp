@@ -7,6 +7,13 @@
 // (Euclidean). Every chart also keeps ceil(padding / 2) texels from the atlas border, so that copies of the
 // atlas tiled side by side (repeat wrapping) keep the padding too. With padding 0 charts may touch, never overlap.
 //
+// Placement: charts in decreasing order of their minimum-rectangle area (then longest side, then area: the
+// next order is tried when one does not fit), each at the rotation and position whose top edge is lowest,
+// then leftmost, among every position where its texels are free. Rotations: the right angles of the chart's
+// minimum-area rectangle; a chart whose longest side spans a quarter of the atlas or more (at the scale where
+// the chart area would fill it) is also tried at 16 evenly spread turns, so that a long chart may lie along
+// the diagonal; each scale is packed with all of them and then with the right angles alone.
+//
 // Scale: texelsPerUnit = 0 searches (bisection) the largest scale at which the greedy packing fits, within
 // half a texel of the largest chart's extent or 0.5 %, whichever is finer. A given texelsPerUnit that does
 // not fit is an error (TooLarge), never a silently smaller scale.
@@ -28,7 +35,7 @@ struct PackOptions {
   int32_t width = 0, height = 0;  // both 0 (use resolution) or both positive
   double padding = 2;             // texels between any two charts; ceil(padding / 2) from the atlas border
   double texelsPerUnit = 0;       // 0: the largest scale at which everything fits
-  bool rotate = true;             // try the minimum-area-rectangle rotation and its 4 right angles
+  bool rotate = true;             // turn charts: the minimum-area rectangle's right angles (16 turns for large charts)
 };
 
 /// One chart: 3 uv points per triangle, in 3D units (the flattening's scale), counter-clockwise.
