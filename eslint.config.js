@@ -18,5 +18,8 @@ export default [
     languageOptions: { globals: globals.node },
   },
   { files: ['tests/e2e/**/*.mjs'], languageOptions: { globals: { ...globals.node, ...globals.browser } } },
+  // The consumer tests' helpers run under Node; the consumer apps they build run in a browser.
+  { files: ['tests/package/*.mjs'], languageOptions: { globals: globals.node } },
+  { files: ['tests/package/**/app/*.js'], languageOptions: { globals: globals.browser } },
   { files: ['eslint.config.js'], languageOptions: { globals: globals.node } },
 ];

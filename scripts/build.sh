@@ -39,6 +39,10 @@ if [ "$target" = wasm ] || [ "$target" = module ] || [ "$target" = all ]; then
   cp build/wasm/straightest-core-threads.mjs build/wasm/straightest-core-threads.wasm \
     build/wasm/straightest-core-threads.worker.js wasm/dist/threads/
   echo '{ "type": "commonjs" }' > wasm/dist/threads/package.json
+  node scripts/neutral-threads-loader.mjs wasm/dist/threads/straightest-core-threads.mjs
+  # The same script as a string, which browsers start from a blob: URL (no worker file for bundlers to emit)
+  node scripts/embed-worker.mjs wasm/dist/threads/straightest-core-threads.worker.js \
+    wasm/dist/threads/straightest-core-threads-worker-source.mjs
   # straightest/inline's copy of the module, as base64 in an ES module
   node scripts/embed-wasm.mjs wasm/dist/straightest-core.wasm wasm/dist/straightest-core-embedded.js
 fi

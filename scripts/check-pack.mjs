@@ -12,6 +12,7 @@ const needed = [
   'straightest-core-embedded.js',
   'threads/straightest-core-threads.mjs',
   'threads/straightest-core-threads.worker.js',
+  'threads/straightest-core-threads-worker-source.mjs',
   'threads/package.json',
   ...modules,
 ];

@@ -4,7 +4,7 @@
 #            tests/core/, tests/fuzz/*.cpp|hpp, bench/
 #   prettier — JavaScript, TypeScript declarations, CSS and HTML formatted as .prettierrc.json says
 #            (prettier --check): wasm/, web/, scripts/, tests/, bench/ (.prettierignore lists what is not)
-#   eslint — JavaScript: wasm/, web/, scripts/, tests/js/, tests/e2e/ (eslint.config.js)
+#   eslint — JavaScript: wasm/, web/, scripts/, tests/js/, tests/e2e/, tests/package/ (eslint.config.js)
 #   types  — the package's TypeScript declarations against a consumer's code, strict (tests/types)
 # Prints one line per check and "N passed, M failed" last (scripts/test.sh reads it); exits non-zero if
 # any check fails. `lint.sh --fix` reformats the C++ and JavaScript files in place instead of checking
@@ -76,7 +76,7 @@ prettier_check() {
 }
 
 eslint_check() {
-  node_modules/.bin/eslint --max-warnings 0 wasm web scripts tests/js tests/e2e eslint.config.js
+  node_modules/.bin/eslint --max-warnings 0 wasm web scripts tests/js tests/e2e tests/package eslint.config.js
 }
 
 types_check() {

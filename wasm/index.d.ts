@@ -1,10 +1,12 @@
 // Types of the straightest npm package (ESM). See README.md for usage.
 
-// `using mesh = ...` (TypeScript ≥ 5.2) needs Symbol.dispose; declared here too so that projects whose
-// `lib` predates esnext.disposable still type-check this file.
+// `using mesh = ...` (TypeScript ≥ 5.2) needs Symbol.dispose, and `await using` on straightest/worker's
+// objects Symbol.asyncDispose; declared here too so that projects whose `lib` predates
+// esnext.disposable still type-check this file.
 declare global {
   interface SymbolConstructor {
     readonly dispose: unique symbol;
+    readonly asyncDispose: unique symbol;
   }
 }
 
@@ -588,11 +590,21 @@ export class Straightest {
    */
   threads: number;
   /**
+   * Why the single-threaded module runs although more than one thread was asked for (or by default):
+   * the page is not cross-origin isolated, wasmUrl/wasmBinary/straightest/inline name the
+   * single-threaded module, or the threaded module could not start (its files not served, a worker
+   * that failed, or workers silent for 10 s; said once on the console too). null when the threaded
+   * module runs or one thread was asked for.
+   */
+  readonly threadsUnavailable: string | null;
+  /**
    * Whether loadMesh and meshFromArrays warm up for the first call on a spare thread while they parse and
    * build (the threaded module with 2 or more threads): they touch the memory a parameterization of the
    * mesh will take, estimated from its size (at most maxVertices' worth and half of what the memory can
    * still grow by), and until once it ran to the end a small sample so the engine optimizes the hot
-   * code. Never slows a load by more than a step; changes no result. The module's memory keeps the size
+   * code. Only where that pays: the module's first load, and loads of at least 65,536 vertices (arrays)
+   * or 2.5 MB (files); other loads run as with false. Never slows a load by more than a step; changes
+   * no result. The module's memory keeps the size
    * the warm-up grew it to (WebAssembly memory never shrinks). Default true; a value that is not a
    * boolean throws a TypeError.
    */
@@ -630,7 +642,8 @@ export interface CreateOptions {
   /**
    * Threads for the core (default 0: every core; capped at 64). More than one loads the threaded module
    * where memory can be shared with workers (Node; pages and workers that are crossOriginIsolated), the
-   * single-threaded one elsewhere; 1 always loads the single-threaded one. Results do not depend on it.
+   * single-threaded one elsewhere or when the threaded one cannot start (Straightest.threadsUnavailable
+   * says why); 1 always loads the single-threaded one. Results do not depend on it.
    */
   threads?: number;
   /** The initial value of Straightest.warmUp (default true; not a boolean: createStraightest rejects with a TypeError). */

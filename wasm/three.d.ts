@@ -8,7 +8,9 @@ export interface MeshFromBufferGeometryOptions {
   /**
    * Merge vertices whose positions agree before building: true (within 1e-7 of the bounding box's
    * diagonal) or a distance. For non-indexed geometry (STLLoader's, toNonIndexed()), whose triangles
-   * otherwise share no vertex. Default false.
+   * otherwise share no vertex. Default false. A welded mesh has fewer vertices than the geometry, so its
+   * uv does not fit the geometry (applyUV throws a RangeError): texture toBufferGeometry(mesh), or
+   * toSeamSplitGeometry(mesh, p) for a cut mesh.
    */
   weld?: boolean | number;
 }
@@ -21,7 +23,11 @@ export function meshFromBufferGeometry(
 ): Mesh;
 /** A BufferGeometry (Float32 positions, the core's area-weighted vertex normals, Uint32 index) of a straightest Mesh. */
 export function toBufferGeometry(mesh: Mesh): BufferGeometry;
-/** Sets geometry's 'uv' attribute from straightest's uv (2 floats per vertex); returns the geometry. */
+/**
+ * Sets geometry's 'uv' attribute from straightest's uv (2 floats per vertex); returns the geometry. The
+ * geometry must have the mesh's vertices (else a RangeError): after `weld`, use toBufferGeometry(mesh)
+ * (or toSeamSplitGeometry(mesh, p) for a cut mesh) as the geometry to texture.
+ */
 export function applyUV(geometry: BufferGeometry, uv: ArrayLike<number>): BufferGeometry;
 /**
  * A BufferGeometry textured by a parameterization and split along its seam (one vertex per distinct mesh

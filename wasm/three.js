@@ -90,11 +90,20 @@ export function toBufferGeometry(mesh) {
   return geometry;
 }
 
-/** Sets a geometry's 'uv' attribute from straightest's per-vertex uv (2 floats per vertex). */
+/**
+ * Sets a geometry's 'uv' attribute from straightest's per-vertex uv (2 floats per vertex): the geometry
+ * must have the mesh's vertices. A mesh made with `weld` has fewer vertices than the geometry it came
+ * from; texture toBufferGeometry(mesh) (or toSeamSplitGeometry(mesh, p) for a cut mesh) instead.
+ */
 export function applyUV(geometry, uv) {
   const count = geometry.getAttribute('position')?.count;
   if (count !== undefined && uv.length !== 2 * count) {
-    throw new RangeError(`applyUV: ${uv.length} numbers for ${count} vertices (expected ${2 * count})`);
+    const fewer = uv.length < 2 * count;
+    const hint = fewer
+      ? ': the mesh has fewer vertices than the geometry (made with weld?); apply the uv to toBufferGeometry(mesh), ' +
+        'or to toSeamSplitGeometry(mesh, p) for a cut mesh'
+      : '';
+    throw new RangeError(`applyUV: ${uv.length} numbers for ${count} vertices (expected ${2 * count})${hint}`);
   }
   geometry.setAttribute('uv', new BufferAttribute(uv instanceof Float32Array ? uv : new Float32Array(uv), 2));
   return geometry;

@@ -6,7 +6,7 @@
 //   → { id, type: 'init', options }                      ← { id, type: 'result', value: names }
 //        options: createStraightest's (threads, wasmUrl, wasmBinary, warmUp); the worker's own default otherwise;
 //        names: the module's name lists ({ sampleNames, boundaryKinds, weightKinds, … }, see NAME_LISTS)
-//        and `threads` (the threads the module runs on)
+//        `threads` (the threads the module runs on) and `threadsUnavailable` (why not more, or null)
 //   → { id, type: 'module', method, args }                ← { id, type: 'result', value }
 //        a Straightest method that makes no mesh: 'formatFromFileName'
 //   → { id, type: 'create', mesh, method, args }         ← { id, type: 'result', value: MeshInfo }
@@ -98,6 +98,7 @@ async function handle(request) {
       return Object.fromEntries([
         ['sampleNames', straightest.sampleNames()],
         ['threads', straightest.threads],
+        ['threadsUnavailable', straightest.threadsUnavailable],
         ...NAME_LISTS.map((name) => [name, straightest[name]]),
       ]);
     case 'module':

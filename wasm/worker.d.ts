@@ -68,6 +68,8 @@ export class WorkerMesh {
   atlas(options?: WorkerOptions<AtlasOptions>): Promise<Atlas>;
   /** Frees the mesh in the worker. */
   delete(): Promise<void>;
+  /** The same as delete(): `await using mesh = await st.sample('cap')` frees it at the end of the scope. */
+  [Symbol.asyncDispose](): Promise<void>;
 }
 
 /** The library in a worker, from `await createStraightestWorker()`. */
@@ -76,6 +78,8 @@ export interface StraightestWorker {
   sampleNames(): string[];
   /** The threads the worker's module runs on (Straightest's `threads`; read when the worker started). */
   readonly threads: number;
+  /** Straightest's `threadsUnavailable`, read in the worker when it started. */
+  readonly threadsUnavailable: string | null;
   /** The trace statuses, in the core's order (as Straightest's; read once when the worker started). */
   readonly traceStatuses: Straightest['traceStatuses'];
   /** The boundary kinds, in the core's order. */
@@ -113,15 +117,23 @@ export interface StraightestWorker {
   atlas(meshes: WorkerMesh[], options?: WorkerOptions<AtlasOptions>): Promise<SharedAtlas>;
   /** Stops the running work: pending calls reject with 'cancelled'; meshes are rebuilt when next used. */
   cancel(): void;
-  /** Ends the worker for good. */
+  /** Ends the worker for good: pending and later calls reject with 'cancelled'. */
   terminate(): void;
+  /** The same as terminate(): `await using st = await createStraightestWorker()` ends it with the scope. */
+  [Symbol.asyncDispose](): Promise<void>;
 }
 
-/** createStraightestWorker's options: where the worker and the WebAssembly module come from. */
+/**
+ * createStraightestWorker's options: where the worker and the WebAssembly module come from. A wasmUrl
+ * (string or URL) is resolved against the page, not the worker's script.
+ */
 export interface WorkerCreateOptions extends Pick<CreateOptions, 'threads' | 'wasmUrl' | 'wasmBinary' | 'warmUp'> {
   /** Makes the module worker (running the package's wasm/worker-entry.js); called again after each cancel. */
   createWorker?: () => Worker;
 }
 
-/** Starts the worker and loads the module in it. */
+/**
+ * Starts the worker and loads the module in it. A worker whose script does not load rejects with
+ * StraightestError 'io' naming its URL and what fetching it gives (status, content type).
+ */
 export function createStraightestWorker(options?: WorkerCreateOptions): Promise<StraightestWorker>;

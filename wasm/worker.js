@@ -9,6 +9,10 @@ import { StraightestError } from './straightest-error.js';
 // Each WorkerMesh's number in its worker, for the calls that take several meshes (st.atlas).
 const meshIds = new WeakMap();
 
+// `await using` calls Symbol.asyncDispose; runtimes without it get the key TypeScript's downlevel
+// `await using` looks for.
+const asyncDisposeSymbol = Symbol.asyncDispose ?? Symbol.for('Symbol.asyncDispose');
+
 /** A mesh living in the worker; every method returns a promise of what Mesh's returns. */
 class WorkerMesh {
   #client;
@@ -79,10 +83,69 @@ class WorkerMesh {
   delete() {
     return this.#client.deleteMesh(this.#id);
   }
+
+  /** The same as delete(): `await using mesh = await st.sample('cap')` frees it at the end of the scope. */
+  [asyncDisposeSymbol]() {
+    return this.delete();
+  }
 }
 
 function defaultWorker() {
   return new Worker(new URL('./worker-entry.js', import.meta.url), { type: 'module' });
+}
+
+/**
+ * createWorker() run while the global Worker records the script URL it is given, so that a worker
+ * that cannot load can be named (a Worker does not say where it came from, and a bundler rewrites
+ * the URL of the default one).
+ */
+function startWorker(createWorker) {
+  const Original = globalThis.Worker;
+  let url = null;
+  if (typeof Original === 'function') {
+    globalThis.Worker = class extends Original {
+      constructor(scriptUrl, options) {
+        super(scriptUrl, options);
+        url = String(scriptUrl);
+      }
+    };
+  }
+  try {
+    const worker = createWorker();
+    return { worker, url };
+  } finally {
+    globalThis.Worker = Original;
+  }
+}
+
+/** What fetching the worker's script gives: its status and type, the usual cause of a worker that cannot load. */
+async function whyNotLoaded(url, event) {
+  if (!url) return event.message || 'its script did not load or failed (createWorker made it)';
+  try {
+    const response = await fetch(url);
+    const type = response.headers.get('content-type') ?? 'no content type';
+    const html = /html/i.test(type)
+      ? ' (an HTML page: the bundle has no worker script at that URL; see docs/API.md for your bundler)'
+      : '';
+    const failed = event.message ? `; the worker said: ${event.message}` : '';
+    return `HTTP ${response.status} ${response.statusText}, ${type}${html}${failed}`;
+  } catch (error) {
+    return `fetching it failed too: ${error?.message ?? error}`;
+  }
+}
+
+/**
+ * createStraightest's options as the worker gets them: a URL (object or relative) as an absolute
+ * string, resolved against this page rather than the worker's script; locateFile refused (a function
+ * cannot be sent to a worker).
+ */
+function optionsForWorker(options) {
+  if (options.locateFile !== undefined) {
+    throw new TypeError('createStraightestWorker cannot send locateFile (a function) to the worker: pass wasmUrl');
+  }
+  if (options.wasmUrl === undefined || options.wasmUrl === null) return options;
+  const base = globalThis.document?.baseURI ?? globalThis.location?.href;
+  return { ...options, wasmUrl: base ? new URL(String(options.wasmUrl), base).href : String(options.wasmUrl) };
 }
 
 /**
@@ -92,16 +155,20 @@ function defaultWorker() {
  * worker (the threaded module runs there when the worker is cross-origin isolated).
  */
 export async function createStraightestWorker(options = {}) {
-  const { createWorker = defaultWorker, ...loadOptions } = options;
+  const { createWorker = defaultWorker, ...rest } = options;
+  const loadOptions = optionsForWorker(rest);
   let current = null; // { worker, pending: Map(id → { resolve, reject, onProgress }), meshes: Map(id → built promise) }
   let names = null; // the module's name lists, from 'init'
   let nextId = 1;
   let nextMesh = 1;
+  let terminated = false;
   const recipes = new Map(); // mesh id → { method, args } that made it
 
-  function start(worker) {
-    const instance = { worker, pending: new Map(), meshes: new Map(), ready: null };
+  function start() {
+    const { worker, url } = startWorker(createWorker);
+    const instance = { worker, pending: new Map(), meshes: new Map(), ready: null, heard: false };
     worker.addEventListener('message', ({ data }) => {
+      instance.heard = true;
       const entry = instance.pending.get(data.id);
       if (!entry) return;
       if (data.type === 'progress') {
@@ -114,7 +181,16 @@ export async function createStraightestWorker(options = {}) {
     });
     worker.addEventListener('error', (event) => {
       event.preventDefault?.();
-      fail(instance, `the straightest worker failed: ${event.message || 'script error'}`, 'internal');
+      if (instance.heard) {
+        const where = event.filename ? ` (${event.filename}:${event.lineno})` : '';
+        fail(instance, `the straightest worker failed: ${event.message || 'script error'}${where}`, 'internal');
+        return;
+      }
+      // Nothing came from it yet: its script did not load (or failed at once).
+      worker.terminate();
+      whyNotLoaded(url, event).then((why) => {
+        fail(instance, `the straightest worker could not be started${url ? ` from ${url}` : ''}: ${why}`, 'io');
+      });
     });
     current = instance;
     instance.ready = send(instance, { type: 'init', options: loadOptions }).then((value) => {
@@ -130,6 +206,7 @@ export async function createStraightestWorker(options = {}) {
 
   function send(instance, message, transfer = [], onProgress = null) {
     const id = nextId++;
+    if (terminated) return Promise.reject(new StraightestError('the straightest worker was terminated', 'cancelled'));
     return new Promise((resolve, reject) => {
       instance.pending.set(id, { resolve, reject, onProgress });
       instance.worker.postMessage({ id, ...message }, transfer);
@@ -139,8 +216,9 @@ export async function createStraightestWorker(options = {}) {
   /** Terminates the worker: pending calls reject as 'cancelled'; a new worker takes over. */
   function cancel() {
     const old = current;
+    if (terminated) return;
     old.worker.terminate();
-    start(createWorker());
+    start();
     fail(old, 'cancelled', 'cancelled');
   }
 
@@ -205,11 +283,19 @@ export async function createStraightestWorker(options = {}) {
     async deleteMesh(id) {
       if (!recipes.delete(id)) return;
       const instance = current;
-      if (instance.meshes.delete(id)) await send(instance, { type: 'delete', mesh: id });
+      // A terminated worker took its meshes with it.
+      if (instance.meshes.delete(id) && !terminated) await send(instance, { type: 'delete', mesh: id });
     },
   };
 
-  start(createWorker());
+  function terminate() {
+    if (terminated) return;
+    terminated = true;
+    current.worker.terminate();
+    fail(current, 'the straightest worker was terminated', 'cancelled');
+  }
+
+  start();
   await current.ready;
 
   const list = (name) => [...names[name]];
@@ -219,6 +305,10 @@ export async function createStraightestWorker(options = {}) {
     /** The name lists of Straightest (read once when the worker started). */
     get threads() {
       return names.threads;
+    },
+    /** Why the worker's module is the single-threaded one although more threads were asked for (or null). */
+    get threadsUnavailable() {
+      return names.threadsUnavailable;
     },
     get traceStatuses() {
       return list('traceStatuses');
@@ -274,10 +364,11 @@ export async function createStraightestWorker(options = {}) {
     },
     /** Stops the running work: pending calls reject with 'cancelled'; meshes stay usable. */
     cancel,
-    /** Ends the worker for good. */
-    terminate() {
-      current.worker.terminate();
-      fail(current, 'the straightest worker was terminated', 'cancelled');
+    /** Ends the worker for good: pending and later calls reject with 'cancelled'. */
+    terminate,
+    /** The same as terminate(): `await using st = await createStraightestWorker()` ends it with the scope. */
+    async [asyncDisposeSymbol]() {
+      terminate();
     },
   };
 }

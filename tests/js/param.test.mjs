@@ -1,9 +1,9 @@
 // Parameterization through the npm API, and the three.js helper.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { BufferGeometry } from 'three';
+import { BufferGeometry, PlaneGeometry } from 'three';
 import { createStraightest } from '../../wasm/index.js';
-import { applyUV, toBufferGeometry } from '../../wasm/three.js';
+import { applyUV, meshFromBufferGeometry, toBufferGeometry } from '../../wasm/three.js';
 
 const st = await createStraightest();
 
@@ -76,6 +76,18 @@ test('straightest/three applyUV sets the uv attribute of a geometry', () => {
   assert.equal(geometry.getAttribute('uv').count, mesh.info().vertices);
   assert.throws(() => applyUV(geometry, new Float32Array(4)), RangeError);
   mesh.delete();
+});
+
+test('applyUV after a weld says to texture toBufferGeometry(mesh) instead of the original geometry', () => {
+  const original = new PlaneGeometry(1, 1, 4, 4).toNonIndexed(); // every triangle its own 3 vertices
+  const welded = meshFromBufferGeometry(st, original, { weld: true });
+  const { uv } = welded.parameterize();
+  assert.throws(
+    () => applyUV(original, uv),
+    (e) => e instanceof RangeError && /fewer vertices than the geometry \(made with weld\?\)/.test(e.message),
+  );
+  assert.equal(applyUV(toBufferGeometry(welded), uv).getAttribute('uv').count, welded.info().vertices);
+  welded.delete();
 });
 
 test('progress callbacks report the stages and can cancel', () => {

@@ -1,4 +1,3 @@
-/* global console */
 // Run by tests/js/consumer.test.mjs: a jsdom-style environment (a `window` and a `document` defined, as
 // Vitest's jsdom environment does, yet running in Node, where fetch cannot read file: URLs). The
 // default createStraightest() must still find the module on disk.

@@ -1,4 +1,3 @@
-/* global console */
 // Run by tests/js/consumer.test.mjs inside a fresh project where the packed package is installed:
 // Node ESM through the package's own exports, the inline variant, the three.js helpers and the .wasm's
 // export. Prints one JSON line of facts for the test to check.

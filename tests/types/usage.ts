@@ -99,6 +99,15 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   void [workerKinds, workerFormat, workerSamples];
   inWorker.cancel();
   inWorker.terminate();
+  {
+    // `await using` frees a worker mesh, then ends its worker; a URL object names the .wasm.
+    await using scoped = await createStraightestWorker({ wasmUrl: new URL('./straightest-core.wasm', 'https://x/') });
+    await using scopedMesh = await scoped.sample('cap');
+    const why: string | null = scoped.threadsUnavailable;
+    void [why, await scopedMesh.info()];
+  }
+  const threadsWhy: string | null = st.threadsUnavailable;
+  void threadsWhy;
   // @ts-expect-error the options are an object, not a URL string
   await createStraightest('/straightest-core.wasm');
 

@@ -1,4 +1,3 @@
-/* global window, URL */
 // The browser consumer app bundled by esbuild (tests/js/consumer.test.mjs) with no configuration:
 // esbuild does not emit assets, so the .wasm is copied next to the bundle and named by wasmUrl.
 import { createStraightest } from 'straightest';

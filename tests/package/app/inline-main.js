@@ -1,4 +1,3 @@
-/* global window */
 // The single-file variant bundled by esbuild (tests/js/consumer.test.mjs): nothing to copy or configure.
 import { createStraightest } from 'straightest/inline';
 

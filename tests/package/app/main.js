@@ -1,4 +1,3 @@
-/* global window, Worker, URL, AbortController */
 // The browser consumer app bundled by Vite (tests/js/consumer.test.mjs) with no configuration: the
 // package on the main thread and in a module worker. The result is left on window.__result.
 import { createStraightest } from 'straightest';

@@ -1,4 +1,3 @@
-/* global postMessage */
 // The consumer app's module worker: loads the package inside the worker and answers with one fact.
 import { createStraightest } from 'straightest';
 
