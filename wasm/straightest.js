@@ -3,6 +3,22 @@
 // StraightestErrors, arrays are copied out of WASM memory once, and meshes must be delete()d or
 // `using`-disposed (a FinalizationRegistry frees forgotten ones eventually). It imports no module
 // loader, so each entry brings only the modules it can start.
+import {
+  unwrap,
+  isArrayLike,
+  numberArray,
+  checkedOptions,
+  LIMITS,
+  PATHS,
+  SHOT,
+  PARAMETERIZE,
+  POLYGONS,
+  COMPARE,
+  ATLAS,
+  CREATE,
+  toBytes,
+  withProgress,
+} from './arguments.js';
 import { StraightestError } from './straightest-error.js';
 
 export { StraightestError };
@@ -10,69 +26,6 @@ export { StraightestError };
 // `using mesh = ...` calls Symbol.dispose; runtimes without it get the key TypeScript's downlevel
 // `using` looks for.
 const disposeSymbol = Symbol.dispose ?? Symbol.for('Symbol.dispose');
-
-/** The result, or its {error, category} thrown as a StraightestError (hint(category) may add a sentence). */
-function unwrap(result, hint = undefined) {
-  if (result.error !== undefined)
-    throw new StraightestError(result.error + (hint?.(result.category) ?? ''), result.category);
-  return result;
-}
-
-/** An array, a typed array or another object with a numeric length (what the index.d.ts calls ArrayLike). */
-const isArrayLike = (a) => a !== null && typeof a === 'object' && typeof a.length === 'number';
-
-/**
- * The numbers of an array-like as the module copies them without a JavaScript call that can throw: a
- * typed array of numbers as it is, anything else converted here (a BigInt, a Symbol or a throwing
- * getter fails in JavaScript, not inside the module's C++ frames).
- */
-const numberArray = (a) =>
-  ArrayBuffer.isView(a) && !(a instanceof DataView) && !(a instanceof BigInt64Array) && !(a instanceof BigUint64Array)
-    ? a
-    : Float64Array.from(a);
-
-/**
- * A call's options object as given (undefined: {}), or StraightestError 'invalid_argument' for anything
- * that is not a plain object and for a name the call does not take: a misspelt option would otherwise be
- * ignored, and the call would return a result for the default silently.
- */
-function checkedOptions(options, known, call) {
-  if (options === undefined) return {};
-  if (options === null || typeof options !== 'object' || Array.isArray(options)) {
-    throw new StraightestError(
-      `${call} takes an object of options, got ${Array.isArray(options) ? 'an array' : String(options)}`,
-      'invalid_argument',
-    );
-  }
-  for (const name of Object.keys(options)) {
-    if (!known.includes(name)) {
-      throw new StraightestError(
-        `${call}: unknown option '${name}' (it takes ${known.join(', ')})`,
-        'invalid_argument',
-      );
-    }
-  }
-  return options;
-}
-
-const LIMITS = ['maxVertices', 'maxFaces'];
-const PATHS = ['source', 'targets', 'points', 'onProgress'];
-const SHOT = ['source', 'direction', 'angle', 'toward', 'length', 'points', 'onProgress'];
-const PARAMETERIZE = ['source', 'boundary', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
-const POLYGONS = ['source', 'kinds', 'onProgress'];
-const COMPARE = ['source', 'boundaries', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
-const ATLAS = [
-  'maxStretch',
-  'maxCharts',
-  'resolution',
-  'width',
-  'height',
-  'padding',
-  'texelsPerUnit',
-  'rotate',
-  'onProgress',
-];
-const CREATE = ['threads', 'warmUp', 'wasmUrl', 'locateFile', 'wasmBinary'];
 
 // Where the load's warm-up pays (scripts/bench-warm-up.mjs; docs/BENCHMARKS.md, "The load's warm-up").
 // Its sample gets the hot code optimized while the first load parses: that pays once per module, on its
@@ -88,40 +41,6 @@ const WARM_UP_MIN_BYTES = 38 * WARM_UP_MIN_VERTICES;
 function checkedWarmUp(on) {
   if (typeof on !== 'boolean') throw new TypeError('warmUp must be true or false');
   return on;
-}
-
-function toBytes(data) {
-  if (typeof data === 'string') return new TextEncoder().encode(data);
-  if (data instanceof Uint8Array) return data;
-  if (data instanceof ArrayBuffer) return new Uint8Array(data);
-  if (ArrayBuffer.isView(data)) return new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
-  throw new TypeError('loadMesh expects a Uint8Array, an ArrayBuffer or a string with the file contents');
-}
-
-/**
- * Runs call(progress) and unwraps its result. onProgress(stage, fraction) is called from inside the
- * WASM work (synchronously, ~100 times per stage at most); returning false cancels and the call
- * throws a StraightestError with category 'cancelled'. An exception thrown by onProgress never crosses
- * the WASM frames (unwinding them from JS would skip the core's destructors and leak): it is caught,
- * the work is cancelled like a `false`, and the same exception is rethrown here once the core has
- * returned cleanly.
- */
-function withProgress(onProgress, call, hint = undefined) {
-  if (onProgress === undefined || onProgress === null) return unwrap(call(null), hint);
-  if (typeof onProgress !== 'function')
-    throw new TypeError('onProgress must be a function (stage, fraction) => boolean | void');
-  let thrown = null;
-  const result = call((stage, fraction) => {
-    if (thrown) return false;
-    try {
-      return onProgress(stage, fraction) !== false;
-    } catch (error) {
-      thrown = { error };
-      return false;
-    }
-  });
-  if (thrown) throw thrown.error;
-  return unwrap(result, hint);
 }
 
 const finalizer =
