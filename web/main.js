@@ -14,7 +14,8 @@
 //   exact-ratio.js  straightest ÷ exact over every boundary target (plot and table)
 //   keyboard.js, point-entry.js   the view from the keyboard; typed source and destinations
 //   hints.js        what to try when traces fail or the measured boundary stretches more than the circle
-//   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
+//   param-view.js   the parameterization (with param-stats.js, param-texture.js, stretch-view.js,
+//                   compare-view.js, uv-layout.js)
 //   export-panel.js figure mode (figure-mode.js) and the image exports (image-export.js, layout-svg.js)
 //   atlas-mode.js   the Atlas mode: charts on the mesh, the packed layout beside the view (atlas-layout.js),
 //                   its metrics and downloads (atlas-export.js)
