@@ -51,7 +51,7 @@ import { pageModes } from './modes.js';
 import { summarizePaths } from './results-summary.js';
 import { createUrlSync } from './url-sync.js';
 import { createDataDownloads } from './data-downloads.js';
-import { hooks, setState } from './test-hooks.js';
+import { expose, hooks, setState } from './test-hooks.js';
 import { isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
@@ -139,6 +139,14 @@ const param = createParamView({
   surface,
   pathSource: () => pathRequest.source,
   onShown: () => urlSync.save(),
+});
+const paramStatus = () => param.status();
+expose({
+  param: () => paramStatus().param,
+  paramError: () => paramStatus().paramError,
+  parameterizations: () => paramStatus().parameterizations,
+  paramHint: () => paramStatus().paramHint,
+  defaultBoundary: () => paramStatus().defaultBoundary,
 });
 createExportPanel({ session, view, surface, paths, param });
 createAtlasMode({ session, view, surface });

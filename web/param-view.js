@@ -13,10 +13,10 @@
 // has its seam drawn on the surface and, as the disk's boundary, in the layout; its texture goes on a
 // seam-split twin of the surface (param-texture.js); filled holes get a note.
 //
-// Test hooks: param, paramError, parameterizations (see test-hooks.js).
+// What it has on display, as plain data, is status() (main.js puts it in the page's observable
+// state, window.__straightest: param, paramError, parameterizations, paramHint, defaultBoundary).
 
 import { applyUV } from 'straightest/three';
-import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { createCompareView } from './compare-view.js';
 import { createStretchView } from './stretch-view.js';
@@ -65,6 +65,10 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   // The Boundary menu follows each new mesh's default (mesh-defaults.js) until the user picks one
   // (the menu, a Compare row, a shared link); from then on the choice stays across meshes.
   let boundaryChosen = false;
+  // What is on display, for status(): the metrics of the parameterization (null before and after a
+  // failure), the last failure's { message, category }, how many were shown, the hint's text, and the
+  // boundary the mesh opened with ({ boundary, reason, applied }).
+  const status = { param: null, paramError: null, parameterizations: 0, paramHint: null, defaultBoundary: null };
 
   const large = () => (session.info?.vertices ?? 0) > LARGE_MESH_VERTICES;
 
@@ -103,7 +107,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     const why = $('param-why');
     const kinds = [...select.options].map((o) => o.value);
     const { boundary, reason } = defaultBoundary(session.info, kinds);
-    hooks.defaultBoundary = { boundary, reason, applied: !boundaryChosen };
+    status.defaultBoundary = { boundary, reason, applied: !boundaryChosen };
     if (boundaryChosen) {
       why.hidden = true;
       return;
@@ -160,7 +164,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   function setButtons() {
     const hasMesh = surface.mesh !== null;
     $('param-button').disabled = !hasMesh;
-    $('compare-button').disabled = !hasMesh || hooks.paramError?.category === 'topology';
+    $('compare-button').disabled = !hasMesh || status.paramError?.category === 'topology';
     $('export-obj-button').disabled = !shown;
     $('export-glb-button').disabled = !shown;
     $('export-png-button').disabled = !shown;
@@ -210,7 +214,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     else applyUV(surface.mesh.geometry, reply.uv);
     shown = { reply, requested, requestedWeights, split: surfaceTexture.show(reply) };
     stretch.setStretch(reply.faceStretch);
-    hooks.param = {
+    status.param = {
       boundary: reply.boundary,
       weights: reply.weights,
       l2: reply.stretch.l2,
@@ -226,8 +230,8 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
       filledLoops: [...reply.filledLoops],
       components: reply.components,
     };
-    hooks.paramError = null;
-    hooks.parameterizations += 1;
+    status.paramError = null;
+    status.parameterizations += 1;
     showStats(reply, requested);
     summarizeParameterization(reply, requested);
     const failed = reply.overlays.filter((o) => o.error);
@@ -251,7 +255,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
 
   function showFailure(err) {
     forget();
-    hooks.paramError = { message: err.message, category: err.category ?? 'error' };
+    status.paramError = { message: err.message, category: err.category ?? 'error' };
     clearStats();
     $('param-stats').hidden = true;
     $('param-method').hidden = true;
@@ -270,7 +274,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   /** The poor-result hint under the stats (hints.js decides), or none. */
   function showHint(hint) {
     renderHint($('param-hint'), hint);
-    hooks.paramHint = hint?.text ?? null;
+    status.paramHint = hint?.text ?? null;
   }
 
   /** Drops the parameterization on display (the uv attribute, the heat map, the hook, the hint). */
@@ -279,7 +283,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     shown = null;
     summarizeParameterization(null);
     surfaceTexture.show(null);
-    hooks.param = null;
+    status.param = null;
     stretch.setStretch(null);
     surface.mesh?.geometry.deleteAttribute('uv');
   }
@@ -352,7 +356,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     runs.supersede();
     running = false;
     forget();
-    hooks.paramError = null;
+    status.paramError = null;
     clearStats();
     showNote('');
     delete $('param-panel').dataset.state;
@@ -442,6 +446,8 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   redrawLayout();
 
   return {
+    /** What is on display (a copy: see `status` above). */
+    status: () => ({ ...status }),
     /** Sets the Boundary menu as the user's choice (a shared link): it no longer follows each mesh's default. */
     chooseBoundary(boundary) {
       fillBoundaryMenu();
