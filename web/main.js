@@ -14,7 +14,8 @@
 //   exact-ratio.js  straightest ÷ exact over every boundary target (plot and table)
 //   keyboard.js, point-entry.js   the view from the keyboard; typed source and destinations
 //   hints.js        what to try when traces fail or the measured boundary stretches more than the circle
-//   param-view.js   the parameterization (with stretch-view.js, compare-view.js, uv-layout.js)
+//   param-view.js   the parameterization (with param-stats.js, param-texture.js, stretch-view.js,
+//                   compare-view.js, uv-layout.js)
 //   export-panel.js figure mode (figure-mode.js) and the image exports (image-export.js, layout-svg.js)
 //   atlas-mode.js   the Atlas mode: charts on the mesh, the packed layout beside the view (atlas-layout.js),
 //                   its metrics and downloads (atlas-export.js)
@@ -50,7 +51,7 @@ import { pageModes } from './modes.js';
 import { summarizePaths } from './results-summary.js';
 import { createUrlSync } from './url-sync.js';
 import { createDataDownloads } from './data-downloads.js';
-import { hooks, setState } from './test-hooks.js';
+import { expose, hooks, setState } from './test-hooks.js';
 import { isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
@@ -138,6 +139,14 @@ const param = createParamView({
   surface,
   pathSource: () => pathRequest.source,
   onShown: () => urlSync.save(),
+});
+const paramStatus = () => param.status();
+expose({
+  param: () => paramStatus().param,
+  paramError: () => paramStatus().paramError,
+  parameterizations: () => paramStatus().parameterizations,
+  paramHint: () => paramStatus().paramHint,
+  defaultBoundary: () => paramStatus().defaultBoundary,
 });
 createExportPanel({ session, view, surface, paths, param });
 createAtlasMode({ session, view, surface });

@@ -1,8 +1,9 @@
 // The parameterization part of the page: the "Parameterization" and "UV layout" panels, the texture
-// on the 3D mesh (a checkerboard or the user's image), the exports, and the automatic first run once
-// a mesh's paths are drawn. The worker computes everything (uv, stretch, metrics, the boundary
-// polygons, the OBJ text); this module shows its arrays. The stretch heat map on the mesh is
-// stretch-view.js, the comparison table compare-view.js, the layout drawing uv-layout.js.
+// on the 3D mesh, the exports, and the automatic first run once a mesh's paths are drawn. The worker
+// computes everything (uv, stretch, metrics, the boundary polygons, the OBJ text); this module
+// decides what is on display and when. The texture and seam on the mesh are param-texture.js, the
+// stats' words param-stats.js, the stretch heat map stretch-view.js, the comparison table
+// compare-view.js, the layout drawing uv-layout.js.
 //
 // It follows the session's events: 'meshchange' (everything shown belongs to the previous mesh),
 // 'meshready' (the automatic parameterization; large meshes only get a note, the button runs it)
@@ -10,18 +11,19 @@
 //
 // A mesh that is not a disk comes back cut or filled (the core's `cut`): a closed or higher-genus mesh
 // has its seam drawn on the surface and, as the disk's boundary, in the layout; its texture goes on a
-// seam-split twin of the surface (surface-view.js); filled holes get a note.
+// seam-split twin of the surface (param-texture.js); filled holes get a note.
 //
-// Test hooks: param, paramError, parameterizations (see test-hooks.js).
+// What it has on display, as plain data, is status() (main.js puts it in the page's observable
+// state, window.__straightest: param, paramError, parameterizations, paramHint, defaultBoundary).
 
-import * as THREE from 'three';
-import { applyUV, toSeamSplitGeometry } from 'straightest/three';
-import { hooks } from './test-hooks.js';
+import { applyUV } from 'straightest/three';
 import { latest } from './latest.js';
 import { createCompareView } from './compare-view.js';
 import { createStretchView } from './stretch-view.js';
-import { WEIGHT_LABELS, formatCount, formatMetric, formatMs } from './param-format.js';
-import { SEAM_COLOR, checkerboardCanvas, drawLayout, surfaceTexture } from './uv-layout.js';
+import { WEIGHT_LABELS, formatCount, formatMetric } from './param-format.js';
+import { drawLayout } from './uv-layout.js';
+import { clearStats, cutNote, showStats } from './param-stats.js';
+import { createParamTexture } from './param-texture.js';
 import { isCancelled } from './requests.js';
 import { parameterizationHint, renderHint } from './hints.js';
 import { download } from './image-export.js';
@@ -63,128 +65,15 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   // The Boundary menu follows each new mesh's default (mesh-defaults.js) until the user picks one
   // (the menu, a Compare row, a shared link); from then on the choice stays across meshes.
   let boundaryChosen = false;
+  // What is on display, for status(): the metrics of the parameterization (null before and after a
+  // failure), the last failure's { message, category }, how many were shown, the hint's text, and the
+  // boundary the mesh opened with ({ boundary, reason, applied }).
+  const status = { param: null, paramError: null, parameterizations: 0, paramHint: null, defaultBoundary: null };
 
   const large = () => (session.info?.vertices ?? 0) > LARGE_MESH_VERTICES;
 
-  // ---------------------------------------------------------------- textures
-
-  const maxAnisotropy = view.renderer.capabilities.getMaxAnisotropy();
-  let checkerTexture = null; // made when first shown
-  let checkerCells = 16; // squares per side of the checkerboard (the export panel's density)
-  let imageTexture = null; // the user's image, once loaded
-
-  const configureTexture = (texture) => surfaceTexture(texture, maxAnisotropy);
-
-  /** The map of the surface: null without a uv on the mesh or with texture 'none'. */
-  function texture() {
-    if (!shown) return null;
-    const choice = $('texture-select').value;
-    if (choice === 'checker') {
-      checkerTexture ??= configureTexture(new THREE.CanvasTexture(checkerboardCanvas(1024, checkerCells)));
-      return checkerTexture;
-    }
-    if (choice === 'image') return imageTexture;
-    return null;
-  }
-
-  function updateTexture() {
-    surface.setTexture(texture(), shown?.split ?? null);
-  }
-
-  // ---------------------------------------------------------------- the seam on the surface
-
-  const seamMaterial = new THREE.LineBasicMaterial({ color: SEAM_COLOR, depthTest: true });
-  let seamLines = null; // THREE.LineSegments of the seam on display
-
-  function showSeam(seam) {
-    hideSeam();
-    const geometry = surface.mesh?.geometry;
-    if (!geometry || !seam?.length) return;
-    const position = geometry.getAttribute('position');
-    const points = new Float32Array(3 * seam.length);
-    seam.forEach((v, i) => {
-      points[3 * i] = position.getX(v);
-      points[3 * i + 1] = position.getY(v);
-      points[3 * i + 2] = position.getZ(v);
-    });
-    const lines = new THREE.BufferGeometry();
-    lines.setAttribute('position', new THREE.BufferAttribute(points, 3));
-    seamLines = new THREE.LineSegments(lines, seamMaterial);
-    seamLines.renderOrder = 2; // over the surface, whose polygon offset pushes it back
-    view.scene.add(seamLines);
-    view.requestRender();
-  }
-
-  function hideSeam() {
-    if (!seamLines) return;
-    view.scene.remove(seamLines);
-    seamLines.geometry.dispose();
-    seamLines = null;
-    view.requestRender();
-  }
-
-  /**
-   * A cut mesh's texture geometry: its surface split along the seam, one vertex per mesh vertex and
-   * corner uv (the arrays the page already holds stand in for the core's mesh).
-   */
-  function splitGeometry(reply) {
-    const geometry = surface.mesh.geometry;
-    return toSeamSplitGeometry(
-      {
-        positions: () => geometry.getAttribute('position').array,
-        vertexNormals: () => geometry.getAttribute('normal').array,
-        indices: () => geometry.index.array,
-      },
-      reply,
-    );
-  }
-
-  /** What the core did to make the mesh a disk, in words (empty for a disk). */
-  function cutNote(reply) {
-    const loops = session.info?.boundaryLoops ?? [];
-    const parts = [];
-    if (reply.components > 1) {
-      parts.push(
-        `Component ${reply.component} of ${reply.components} (the largest) is parameterized; ` +
-          'the others have no uv.',
-      );
-    }
-    if (reply.cut === 'fill' || reply.filledLoops.length > 0) {
-      const outer = loops.findIndex((_, i) => !reply.filledLoops.includes(i));
-      const n = reply.filledLoops.length;
-      parts.push(
-        `${n} hole${n === 1 ? '' : 's'} filled virtually` +
-          `${reply.cut === 'fill' ? `; outer boundary = loop ${outer}` : ''}.`,
-      );
-    }
-    if (reply.cut === 'path' || reply.cut === 'cut-graph') {
-      parts.push(
-        `${reply.cut === 'path' ? 'Closed surface' : `Genus ${reply.genus}`}: cut to a disk along a seam ` +
-          `of ${reply.seamEdges} edges (length ${formatMetric(reply.seamLength)}), drawn in magenta.`,
-      );
-    }
-    return parts.join(' ');
-  }
-
-  async function loadImage(file) {
-    const url = URL.createObjectURL(file);
-    try {
-      const loaded = await new THREE.TextureLoader().loadAsync(url);
-      configureTexture(loaded);
-      imageTexture?.dispose();
-      imageTexture = loaded;
-      const option = $('texture-select').querySelector('option[value="image"]');
-      option.disabled = false;
-      option.textContent = `Image: ${file.name}`;
-      $('texture-select').value = 'image';
-      showNote('');
-      updateTexture();
-    } catch {
-      showNote(`“${file.name}” is not an image the browser can read.`);
-    } finally {
-      URL.revokeObjectURL(url);
-    }
-  }
+  const surfaceTexture = createParamTexture({ view, surface, showNote });
+  const updateTexture = () => surfaceTexture.update();
 
   const stretch = createStretchView({
     view,
@@ -194,8 +83,6 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   const showStretch = () => stretch.show($('stretch-toggle').checked);
 
   // ---------------------------------------------------------------- panels
-
-  const statsFields = ['l2', 'linf', 'bijective', 'flips', 'fallbacks', 'angle', 'area', 'refine', 'time'];
 
   /** The boundary menu from the core's kinds (once the worker has named them), keeping the choice. */
   function fillBoundaryMenu() {
@@ -220,7 +107,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     const why = $('param-why');
     const kinds = [...select.options].map((o) => o.value);
     const { boundary, reason } = defaultBoundary(session.info, kinds);
-    hooks.defaultBoundary = { boundary, reason, applied: !boundaryChosen };
+    status.defaultBoundary = { boundary, reason, applied: !boundaryChosen };
     if (boundaryChosen) {
       why.hidden = true;
       return;
@@ -230,88 +117,11 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     why.hidden = !reason;
   }
 
-  function clearStats() {
-    for (const field of statsFields) {
-      const dd = $(`param-${field}`);
-      dd.textContent = '–';
-      dd.className = '';
-      dd.removeAttribute('title');
-    }
-    $('param-method').textContent = '–';
-    $('param-method').removeAttribute('title');
-    $('param-method').hidden = false;
-    $('param-stats').hidden = false;
-  }
-
   function showNote(text, kind = 'note') {
     const note = $('param-message');
     note.textContent = text;
     note.className = kind;
     note.hidden = !text;
-  }
-
-  function showStats(reply, requested) {
-    const set = (field, text, className = '', title = '') => {
-      const dd = $(`param-${field}`);
-      dd.textContent = text;
-      dd.className = className;
-      if (title) dd.title = title;
-      else dd.removeAttribute('title');
-    };
-    const method = $('param-method');
-    const weights = document.createElement('span'); // breaks before, never inside 'shape-preserving weights'
-    weights.className = 'nowrap';
-    weights.textContent = `${WEIGHT_LABELS[reply.weights]} weights`;
-    method.replaceChildren(
-      `${requested === 'auto' ? 'auto → ' : ''}${reply.boundary} boundary` +
-        `${reply.init ? ` (from ${reply.init})` : ''} · `,
-      weights,
-    );
-    method.title =
-      reply.candidates.length > 1
-        ? `least L2 stretch of ${reply.candidates.map((c) => `${c.boundary} ${formatMetric(c.l2)}`).join(', ')}`
-        : '';
-    set('l2', formatMetric(reply.stretch.l2), 'strong');
-    set('linf', formatMetric(reply.stretch.linf));
-    set('bijective', reply.bijective ? 'yes' : 'no', reply.bijective ? 'good' : 'bad');
-    set(
-      'flips',
-      `${reply.flipped} / ${reply.degenerate} / ${reply.overlaps}`,
-      reply.flipped + reply.degenerate + reply.overlaps ? 'bad' : '',
-      'flipped triangles / degenerate triangles / pairs of boundary edges crossing in the plane',
-    );
-    set(
-      'fallbacks',
-      `${reply.fallbacks} / ${reply.weightFallbacks}`,
-      '',
-      'traces of the measured boundary that used the edge-graph distance / faces whose weights fell back',
-    );
-    set('angle', `${formatMetric(reply.angleDistortion.mean)} / ${formatMetric(reply.angleDistortion.max)}`);
-    set('area', `${formatMetric(reply.areaDistortion.mean)} / ${formatMetric(reply.areaDistortion.max)}`);
-    if (reply.init) {
-      set(
-        'refine',
-        `from ${reply.init} · ${reply.iterations} it. · ${formatMetric(reply.energyInitial)} → ` +
-          `${formatMetric(reply.energyFinal)}${reply.untangled ? ' · untangled' : ''}`,
-        reply.converged ? '' : 'warn',
-        'the start of the refinement, its iterations and its symmetric Dirichlet energy per unit area (4 for an ' +
-          `isometry); ${reply.converged ? 'converged' : 'stopped by the iteration cap or the time budget'}` +
-          (reply.untangled ? '; the start had folded triangles and was untangled first' : ''),
-      );
-    } else {
-      set('refine', '–', '', 'only the free boundary is refined');
-    }
-    const t = reply.timings;
-    set(
-      'time',
-      `${formatMs(t.solve, '')}${t.refine > 0 ? ` + ${formatMs(t.refine, '')}` : ''} / ${formatMs(t.total)}`,
-      '',
-      `source ${formatMs(t.source)}, trace ${formatMs(t.trace)}, boundary ${formatMs(t.boundary)}, ` +
-        `weights ${formatMs(t.weights)}, solve ${formatMs(t.solve)}, refine ${formatMs(t.refine)}, ` +
-        `metrics ${formatMs(t.metrics)}; ` +
-        `relative residual ${reply.residual.toExponential(1)}; ${formatMs(reply.timeMs)} in the worker ` +
-        "(plus the other boundaries' polygons)",
-    );
   }
 
   // ---------------------------------------------------------------- the 2D layout
@@ -354,7 +164,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   function setButtons() {
     const hasMesh = surface.mesh !== null;
     $('param-button').disabled = !hasMesh;
-    $('compare-button').disabled = !hasMesh || hooks.paramError?.category === 'topology';
+    $('compare-button').disabled = !hasMesh || status.paramError?.category === 'topology';
     $('export-obj-button').disabled = !shown;
     $('export-glb-button').disabled = !shown;
     $('export-png-button').disabled = !shown;
@@ -402,10 +212,9 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     const cut = reply.cut !== 'disk';
     if (cut) surface.mesh.geometry.deleteAttribute('uv');
     else applyUV(surface.mesh.geometry, reply.uv);
-    shown = { reply, requested, requestedWeights, split: cut ? splitGeometry(reply) : null };
-    showSeam(reply.seam);
+    shown = { reply, requested, requestedWeights, split: surfaceTexture.show(reply) };
     stretch.setStretch(reply.faceStretch);
-    hooks.param = {
+    status.param = {
       boundary: reply.boundary,
       weights: reply.weights,
       l2: reply.stretch.l2,
@@ -421,13 +230,18 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
       filledLoops: [...reply.filledLoops],
       components: reply.components,
     };
-    hooks.paramError = null;
-    hooks.parameterizations += 1;
+    status.paramError = null;
+    status.parameterizations += 1;
     showStats(reply, requested);
     summarizeParameterization(reply, requested);
     const failed = reply.overlays.filter((o) => o.error);
     showNote(
-      [cutNote(reply), ...failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`)].filter(Boolean).join(' '),
+      [
+        cutNote(reply, session.info?.boundaryLoops),
+        ...failed.map((o) => `The ${o.boundary} boundary failed: ${o.error}`),
+      ]
+        .filter(Boolean)
+        .join(' '),
     );
     showHint(parameterizationHint(reply, requested, session.boundaryKinds));
     $('param-panel').dataset.state = 'done';
@@ -441,7 +255,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
 
   function showFailure(err) {
     forget();
-    hooks.paramError = { message: err.message, category: err.category ?? 'error' };
+    status.paramError = { message: err.message, category: err.category ?? 'error' };
     clearStats();
     $('param-stats').hidden = true;
     $('param-method').hidden = true;
@@ -460,7 +274,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   /** The poor-result hint under the stats (hints.js decides), or none. */
   function showHint(hint) {
     renderHint($('param-hint'), hint);
-    hooks.paramHint = hint?.text ?? null;
+    status.paramHint = hint?.text ?? null;
   }
 
   /** Drops the parameterization on display (the uv attribute, the heat map, the hook, the hint). */
@@ -468,8 +282,8 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     showHint(null);
     shown = null;
     summarizeParameterization(null);
-    hideSeam();
-    hooks.param = null;
+    surfaceTexture.show(null);
+    status.param = null;
     stretch.setStretch(null);
     surface.mesh?.geometry.deleteAttribute('uv');
   }
@@ -542,7 +356,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     runs.supersede();
     running = false;
     forget();
-    hooks.paramError = null;
+    status.paramError = null;
     clearStats();
     showNote('');
     delete $('param-panel').dataset.state;
@@ -608,12 +422,6 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   });
   $('export-obj-button').addEventListener('click', () => exportObj());
   $('export-glb-button').addEventListener('click', () => exportGlb());
-  $('texture-select').addEventListener('change', () => updateTexture());
-  $('texture-input').addEventListener('change', (event) => {
-    const [file] = event.target.files;
-    if (file) loadImage(file);
-    event.target.value = '';
-  });
   // The stretch heat map and the heat distances colour the same surface: one at a time.
   $('stretch-toggle').addEventListener('change', (event) => {
     const heatDistance = $('heat-toggle');
@@ -638,6 +446,8 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   redrawLayout();
 
   return {
+    /** What is on display (a copy: see `status` above). */
+    status: () => ({ ...status }),
     /** Sets the Boundary menu as the user's choice (a shared link): it no longer follows each mesh's default. */
     chooseBoundary(boundary) {
       fillBoundaryMenu();
@@ -658,14 +468,9 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
     /** The base of export file names: the mesh, the boundary and the weights on display. */
     exportName: () => `${baseName()}-${shown?.reply.boundary ?? 'none'}-${shown?.reply.weights ?? ''}`,
     get checkerCells() {
-      return checkerCells;
+      return surfaceTexture.checkerCells;
     },
     /** The checkerboard's squares per side (the texture on the mesh is made again). */
-    setCheckerCells(cells) {
-      checkerCells = cells;
-      checkerTexture?.dispose();
-      checkerTexture = null;
-      updateTexture();
-    },
+    setCheckerCells: (cells) => surfaceTexture.setCheckerCells(cells),
   };
 }

@@ -26,24 +26,14 @@ export const hooks = {
   // The poor-result hints on display (hints.js), as their text, or null: under the paths, and under
   // the parameterization, and under the comparison table.
   pathsHint: null,
-  paramHint: null,
-  compareHint: null,
+  compareHint: null, // (paramHint: param-view.js's status())
   // The 3D camera at the last frame: { upAxis, up, position, target (the orbit centre), fovDeg (vertical),
   // aspect } (arrays of 3 numbers).
   camera: null,
   cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
-  // The parameterization view: { boundary, weights, l2, linf, bijective, flipped, overlaps, init,
-  // iterations, cut, seamEdges, genus, filledLoops, components } after each parameterization (init
-  // and iterations: null unless the boundary is free; cut: how the mesh was made a disk) (null before
-  // and after a failure), { message, category } of the last failure,
-  // the number of parameterizations shown, and the rows of the last comparison.
-  param: null,
-  paramError: null,
-  // The boundary the mesh on display opens with (mesh-defaults.js): { boundary, reason ('' for a disk),
-  // applied (false when the user's own choice kept the menu) }.
-  defaultBoundary: null,
-  parameterizations: 0,
-  compare: null,
+  // The parameterization view's param, paramError, parameterizations and defaultBoundary are its
+  // status() (param-view.js), put here by main.js (expose below).
+  compare: null, // the rows of the last comparison
   // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,
   // l2, linf, bijective, init }] in the order shown }, or null (never opened, or a new mesh).
   figure: null,
@@ -72,4 +62,15 @@ window.__straightest = hooks;
 export function setState(state) {
   hooks.state = state;
   document.body.dataset.state = state;
+}
+
+/**
+ * Adds read-only fields to window.__straightest, each read from the module that has it on display
+ * when a test asks (getters: fields: { name: () => value }). The page's modules keep what they show
+ * to themselves; only main.js, which holds them all, calls this.
+ */
+export function expose(fields) {
+  for (const [name, get] of Object.entries(fields)) {
+    Object.defineProperty(hooks, name, { get, enumerable: true });
+  }
 }
