@@ -39,9 +39,10 @@ describe('plain path lines', () => {
       await expectReady(page, 'window.__straightest.param');
       const { paths } = await page.evaluate(() => window.__straightest);
       assert(paths.plain && paths.reached === paths.count, `paths: ${JSON.stringify(paths)}`);
+      // The render count is read before the changes, so that a frame they cause cannot come before it.
+      const renders = await page.evaluate(() => window.__straightest.renders);
       await page.selectOption('#texture-select', 'none');
       await page.click('#view-top-button', { force: true });
-      const renders = await page.evaluate(() => window.__straightest.renders);
       await page.waitForFunction((n) => window.__straightest.renders > n, renders, { timeout: BIG_WAIT_TIMEOUT_MS });
       await page.waitForTimeout(500); // the frame reaches the screen
       const image = decodePng(await page.locator('#view-canvas').screenshot({ timeout: BIG_WAIT_TIMEOUT_MS }));
