@@ -2,8 +2,8 @@
 // its blocks by transparent huge pages and keeping freed memory for reuse, by re-executing themselves
 // once with the glibc tunables that ask for it.
 //
-// Why: a 1M-vertex parameterization allocates a few hundred MB in blocks of 8–100 MB (meshes, sparse
-// matrices, the solver's vectors); with 4 KiB pages the first touch of every page is a fault, and on a
+// Why: a large parameterization allocates its memory in large blocks (meshes, sparse matrices, the
+// solver's vectors); with 4 KiB pages the first touch of every page is a fault, and on a
 // virtual machine a fault is expensive; huge pages take a fraction of the faults, and a one-shot CLI
 // run meets every one of them. Where the kernel's THP mode is "madvise" (Debian's default), only memory
 // that asks for huge pages gets them — which malloc does when glibc.malloc.hugetlb=1 is set; and

@@ -40,6 +40,8 @@ namespace {
 /// "a|b|c" for the usage text.
 std::string alternatives(const std::vector<std::string>& names) { return choiceList(names, "|", "|"); }
 
+std::string otherCommandsUsage();
+
 std::string usage() {
   return "usage: straightest COMMAND MESH [options]\n"
          "\n"
@@ -79,8 +81,13 @@ std::string usage() {
          std::to_string(static_cast<long long>(FreeBoundaryOptions{}.timeBudgetMs)) +
          "), converged false\n"
          "      -o OUT.obj             write the mesh with its UVs (vt) in the input's vertex order; a cut or\n"
-         "                             filled mesh gets a vt per distinct corner uv (f v/vt: the seam splits)\n"
-         "  shoot MESH       a straightest geodesic from a source and a direction (Polthier–Schmies)\n"
+         "                             filled mesh gets a vt per distinct corner uv (f v/vt: the seam splits)\n" +
+         otherCommandsUsage();
+}
+
+/// The usage text after param: shoot, atlas, distances, what MESH may be, the common options.
+std::string otherCommandsUsage() {
+  return "  shoot MESH       a straightest geodesic from a source and a direction (Polthier–Schmies)\n"
          "      --source auto|N        source vertex (default auto)\n"
          "      --direction ANGLE      radians in the source's tangent frame (0: its first edge, counter-clockwise)\n"
          "      --toward D             or: toward vertex D, as the cutting plane would start (reports miss_distance)\n"

@@ -18,6 +18,9 @@
 
 namespace straightest::cli {
 
+/// Below this a warm-up is not worth a thread: malloc serves small blocks from memory already touched.
+constexpr std::size_t kMinWarmupBytes = std::size_t{16} << 20;
+
 /// A lower estimate of the heap a measured-boundary parameterization of `mesh` takes, made before the mesh
 /// is read (0: none). The call grows the heap by ~315 bytes per vertex (measured on the 1M height field);
 /// heightfield:N has N² vertices. An OBJ, OFF or PLY file is taken to hold a vertex per ≤ 300 bytes: the 1M
@@ -43,13 +46,13 @@ inline std::size_t parameterizationBytes(const std::string& mesh) {
   return static_cast<std::size_t>(std::min(bytes, physical > 0 ? physical / 4 : 0.0));
 }
 
-/// Touches `bytes` of heap (none below 16 MB) on a second thread from construction to destruction, then
+/// Touches `bytes` of heap (none below kMinWarmupBytes) on a second thread from construction to destruction, then
 /// gives them back to malloc. The block is allocated on the constructing thread, so it comes from the
 /// arena that thread's later allocations use.
 class MemoryWarmup {
  public:
   explicit MemoryWarmup(std::size_t bytes)
-      : block_(bytes > (16u << 20) ? static_cast<char*>(std::malloc(bytes)) : nullptr) {
+      : block_(bytes > kMinWarmupBytes ? static_cast<char*>(std::malloc(bytes)) : nullptr) {
     if (!block_) return;
     toucher_ = std::thread([this, bytes] {
       for (std::size_t at = 0; at < bytes; at += 4096) block_[at] = 0;

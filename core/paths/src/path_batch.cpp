@@ -64,6 +64,35 @@ PathSummary summarize(const PathBatch& batch) {
   return s;
 }
 
+namespace {
+
+/// The per-target columns of a batch of n paths, sized (filled in place by the threads).
+void sizeColumns(PathBatch& batch, size_t n) {
+  batch.targetPositions.resize(n);
+  batch.status.resize(n);
+  batch.length.resize(n);
+  batch.facesCrossed.resize(n);
+  batch.reversed.resize(n);
+  batch.otherArcLength.resize(n);
+  batch.directions.resize(n);
+}
+
+/// The chunks' points joined in target order, with each target's offset (counts: points per target).
+void joinChunks(std::vector<std::vector<Vec3>>& parts, const std::vector<int64_t>& counts, std::vector<Vec3>& points,
+                std::vector<int64_t>& offsets) {
+  const size_t n = counts.size();
+  offsets.resize(n + 1);
+  offsets[0] = 0;
+  for (size_t i = 0; i < n; ++i) offsets[i + 1] = offsets[i] + counts[i];
+  points.reserve(static_cast<size_t>(offsets[n]));
+  for (std::vector<Vec3>& part : parts) {
+    points.insert(points.end(), part.begin(), part.end());
+    std::vector<Vec3>().swap(part);
+  }
+}
+
+}  // namespace
+
 Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoint& source,
                                           std::vector<SurfacePoint> targets, const TraceOptions& options,
                                           const Progress& progress) {
@@ -78,18 +107,12 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
   batch.base = idle.back()->base();
   batch.targets = std::move(targets);
   const size_t n = batch.targets.size();
-  batch.targetPositions.resize(n);
-  batch.status.resize(n);
-  batch.length.resize(n);
-  batch.facesCrossed.resize(n);
-  batch.reversed.resize(n);
-  batch.otherArcLength.resize(n);
-  batch.directions.resize(n);
+  sizeColumns(batch, n);
   // Targets in chunks: the per-target values go straight to their slots; the points of each chunk to
   // its own buffer, joined in target order at the end (the batch is the same for any thread count).
   // A chunk is a run of neighbouring targets, whose paths cross nearly the same faces: the longer the
   // runs a thread walks, the more of the mesh it finds in its own caches. About 16 chunks (at least 8
-  // targets each; at most 1024, a few milliseconds of walking, so that progress moves and a cancel is
+  // targets each; at most 1024, so that progress moves and a cancel is
   // heard) keep the threads' shares even; runs of a few targets each were much slower, and from about
   // 16 chunks down the count hardly mattered (docs/BENCHMARKS.md).
   const size_t targetsPerChunk = std::clamp<size_t>((n + 15) / 16, 8, 1024);
@@ -130,19 +153,8 @@ Expected<PathBatch> traceStraightestPaths(const TriMesh& mesh, const SurfacePoin
   };
   if (!detail::parallelFor(n, targetsPerChunk, traceChunk, progress, "trace"))
     return cancelledError("straightest paths");
-  auto join = [n](std::vector<std::vector<Vec3>>& parts, const std::vector<int64_t>& counts, std::vector<Vec3>& points,
-                  std::vector<int64_t>& offsets) {
-    offsets.resize(n + 1);
-    offsets[0] = 0;
-    for (size_t i = 0; i < n; ++i) offsets[i + 1] = offsets[i] + counts[i];
-    points.reserve(static_cast<size_t>(offsets[n]));
-    for (std::vector<Vec3>& part : parts) {
-      points.insert(points.end(), part.begin(), part.end());
-      std::vector<Vec3>().swap(part);
-    }
-  };
-  join(chunkPoints, pointCount, batch.points, batch.offsets);
-  join(chunkOtherPoints, otherPointCount, batch.otherPoints, batch.otherOffsets);
+  joinChunks(chunkPoints, pointCount, batch.points, batch.offsets);
+  joinChunks(chunkOtherPoints, otherPointCount, batch.otherPoints, batch.otherOffsets);
   record(options.timings, "trace", time.lap());
   return batch;
 }

@@ -102,8 +102,8 @@ Expected<GeodesicShot> shootGeodesicToward(const TriMesh& mesh, const SurfacePoi
                                            const ShootOptions& options = {}, const Progress& progress = {});
 
 /// Shoots many geodesics on one mesh (the same results as the functions above, bit for bit), faster: every
-/// face laid flat (its corners in 2D, its twins) is recorded once when the shooter is made (64 bytes per
-/// face, about 128 MB for a 1M-vertex mesh, so it is for batches), and each shot then reads one record
+/// face laid flat (its corners in 2D, its twins) is recorded once when the shooter is made (a record per
+/// face, memory worth spending only on batches; the size is in docs/BENCHMARKS.md), and each shot then reads one record
 /// per face it crosses, where the functions make it from the face's 3D corners. The mesh must outlive the
 /// shooter; shooting is const and thread-safe.
 class GeodesicShooter {
