@@ -145,6 +145,23 @@ TEST(AtlasQuality, DegenerateFaceIsCounted) {
   EXPECT_EQ(q.l2, kInf);
 }
 
+TEST(AtlasQuality, SliverThinnerThanTheGridIsMappedNotDegenerate) {
+  // A needle face at its true shape, 1e-9 high (the exact predicates' grid is 2^-24 ≈ 6e-8): its snapped corners
+  // are collinear, but its orientation in double precision is certain, so it is mapped (and isometric).
+  FlatAtlas atlas;
+  atlas.addRectangle(0.1, 0.1, 0.4, 0.4);
+  atlas.addChart({{0.5, 0.5}, {0.8, 0.5}, {0.65, 0.5 + 1e-9}}, {{0, 1, 2}});
+  const AtlasQuality q = atlas.measure();
+  EXPECT_EQ(q.degenerate, 0);
+  EXPECT_EQ(q.flipped, 0);
+  EXPECT_EQ(q.mirroredCharts, 0);
+  EXPECT_NEAR(q.l2, 1, 1e-6);
+  FlatAtlas mirrored = atlas;
+  std::swap(mirrored.cornerUv[7], mirrored.cornerUv[8]);  // the needle clockwise: a mirrored chart, still mapped
+  EXPECT_EQ(mirrored.measure().mirroredCharts, 1);
+  EXPECT_EQ(mirrored.measure().degenerate, 0);
+}
+
 TEST(AtlasQuality, AnnulusIsNotADisk) {
   FlatAtlas atlas;
   const std::vector<Vec2> uv = {{0.1, 0.1}, {0.7, 0.1}, {0.7, 0.7}, {0.1, 0.7},

@@ -48,13 +48,26 @@ void addFaceStretch(const TriMesh& mesh, int32_t f, const Vec2* q, double double
 
 Vec2 inTexels(Vec2 uv, Vec2 texels) { return {uv.x * texels.x, uv.y * texels.y}; }
 
-/// Exact winding of each finite face's snapped uv: +1, −1 or 0.
-std::vector<int8_t> faceWindings(const UvCharts& charts) {
+/// The sign of the double-precision area of uv triangle abc when it exceeds the cross product's rounding
+/// error (a bound a little above Shewchuk's for the orientation determinant), else 0.
+int8_t certainSign(Vec2 a, Vec2 b, Vec2 c) {
+  const double left = (b.x - a.x) * (c.y - a.y), right = (b.y - a.y) * (c.x - a.x);
+  const double det = left - right;
+  const double bound = 1e-15 * (std::fabs(left) + std::fabs(right));
+  return det > bound ? 1 : det < -bound ? -1 : 0;
+}
+
+/// Each finite face's winding: exact on the snapped uv (+1, −1 or 0); where the snapped corners are collinear
+/// but the face has a certain orientation in double precision (a sliver thinner than the grid, e.g. a mesh's
+/// needle face at its true shape), that orientation: the face is mapped, only finer than the grid.
+std::vector<int8_t> faceWindings(const UvCharts& charts, const std::vector<Vec2>& uv) {
   std::vector<int8_t> winding(charts.chartOfFace.size(), 0);
   for (size_t f = 0; f < winding.size(); ++f)
-    if (charts.chartOfFace[f] >= 0)
+    if (charts.chartOfFace[f] >= 0) {
       winding[f] = static_cast<int8_t>(
           orientation(charts.corner[3 * f], charts.corner[3 * f + 1], charts.corner[3 * f + 2]));
+      if (winding[f] == 0) winding[f] = certainSign(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]);
+    }
   return winding;
 }
 
@@ -79,7 +92,7 @@ ChartStretch measureChartStretch(const TriMesh& mesh, const std::vector<Vec2>& c
                                  Vec2 texels) {
   ChartStretch r;
   const double atlasArea = texels.x * texels.y;
-  const std::vector<int8_t> winding = faceWindings(charts);
+  const std::vector<int8_t> winding = faceWindings(charts, cornerUv);
   const std::vector<int8_t> majority = majorityWindings(mesh, cornerUv, charts, winding);
   std::vector<StretchSums> sums(charts.charts);
   for (int32_t f = 0; f < mesh.numFaces(); ++f) {

@@ -35,7 +35,8 @@ struct AtlasQuality {
   std::vector<double> chartL2, chartLinf;  // per chart, each normalized by its own areas
   int64_t flipped = 0;         // faces whose uv winding differs from their chart's majority (3D-area-weighted)
   int64_t mirroredCharts = 0;  // charts whose majority winding is clockwise (against the TriMesh face)
-  int64_t degenerate = 0;      // faces with zero (snapped) uv area whose 3D area is not zero
+  int64_t degenerate = 0;      // faces with no certain uv orientation (collinear when snapped and in double
+                               // precision) whose 3D area is not zero
   int64_t overlaps = 0;        // chart pairs that overlap (boundary edges properly crossing, or a vertex, a
                                // boundary edge's midpoint or a face centroid of one strictly inside a
                                // triangle of the other) + charts whose boundary properly crosses itself
