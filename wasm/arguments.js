@@ -55,6 +55,7 @@ export const POLYGONS = ['source', 'kinds', 'onProgress'];
 export const COMPARE = ['source', 'boundaries', 'weights', 'solver', 'maxIterations', 'timeBudgetMs', 'onProgress'];
 export const ATLAS = [
   'maxStretch',
+  'minHullFill',
   'maxCharts',
   'resolution',
   'width',

@@ -5,7 +5,12 @@ import type { ProgressCallback } from './index.js';
 export interface AtlasOptions {
   /** Largest Sander L2 stretch of a chart (≥ 1, default 1.02): a chart above it is split. */
   maxStretch?: number;
-  /** Most charts (an integer; default 0: no cap); reaching it stops splitting for stretch (Atlas.capped); a chart with no flat map is split anyway. */
+  /**
+   * Least fraction of its convex hull a chart's uv fills (0..1, default 0.7): a chart below it (an L, a body
+   * with its legs) is split, so the charts pack tighter for a little more seam; 0 keeps any shape.
+   */
+  minHullFill?: number;
+  /** Most charts (an integer; default 0: no cap); reaching it stops splitting for stretch or shape (Atlas.capped); a chart with no flat map is split anyway. */
   maxCharts?: number;
   /** Side of the square atlas in texels (1..16384, default 1024) when width and height are 0. */
   resolution?: number;

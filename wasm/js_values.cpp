@@ -164,8 +164,9 @@ Expected<AtlasOptions> atlasOptionsFrom(const val& options) {
   AtlasOptions atlas;
   if (options.isUndefined() || options.isNull()) return atlas;
   const auto given = [&](const char* name) { return !options[name].isUndefined() && !options[name].isNull(); };
-  for (auto [name, x] : {std::pair{"maxStretch", &atlas.charts.maxStretch}, std::pair{"padding", &atlas.pack.padding},
-                         std::pair{"texelsPerUnit", &atlas.pack.texelsPerUnit}}) {
+  for (auto [name, x] :
+       {std::pair{"maxStretch", &atlas.charts.maxStretch}, std::pair{"minHullFill", &atlas.charts.minHullFill},
+        std::pair{"padding", &atlas.pack.padding}, std::pair{"texelsPerUnit", &atlas.pack.texelsPerUnit}}) {
     if (!given(name)) continue;
     if (!isNumber(options[name])) return Error{ErrorCode::InvalidArgument, std::string(name) + " must be a number"};
     *x = options[name].as<double>();

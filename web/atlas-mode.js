@@ -33,13 +33,20 @@ const RERUN_DELAY_MS = 300; // an option's change makes the atlas again once the
 const CHECKER_CELLS = 32; // the checkerboard over the whole atlas: every chart at one texel density, so equal squares
 
 /** The options in the panel, or { error, field } when one is not a value the atlas takes. */
-export function readAtlasOptions({ maxStretch, resolution, padding }) {
+export function readAtlasOptions({ maxStretch, minHullFill = '0.7', resolution, padding }) {
   const given = (text) => (String(text).trim() ? `“${text}”` : 'empty or not a number');
   const stretch = Number(maxStretch);
   if (!(String(maxStretch).trim() && stretch > 1 && stretch <= 10)) {
     return {
       error: `Max stretch must be above 1 and at most 10 (1.02 keeps charts nearly isometric); it is ${given(maxStretch)}.`,
       field: 'atlas-max-stretch',
+    };
+  }
+  const fill = Number(minHullFill);
+  if (!(String(minHullFill).trim() && fill >= 0 && fill <= 1)) {
+    return {
+      error: `Min hull fill must be from 0 to 1 (0.7 splits concave charts so they pack tighter); it is ${given(minHullFill)}.`,
+      field: 'atlas-min-hull-fill',
     };
   }
   const pad = Number(padding);
@@ -49,7 +56,7 @@ export function readAtlasOptions({ maxStretch, resolution, padding }) {
       field: 'atlas-padding',
     };
   }
-  return { options: { maxStretch: stretch, resolution: Number(resolution), padding: pad } };
+  return { options: { maxStretch: stretch, minHullFill: fill, resolution: Number(resolution), padding: pad } };
 }
 
 /** session: session.js; view: scene.js; surface: surface-view.js (the mesh's arrays on display). */
@@ -276,9 +283,11 @@ export function createAtlasMode({ session, view, surface }) {
 
   /** The options in the panel, marking a field that is not valid (null then, with the error shown). */
   function options() {
-    for (const id of ['atlas-max-stretch', 'atlas-padding']) $(id).removeAttribute('aria-invalid');
+    for (const id of ['atlas-max-stretch', 'atlas-min-hull-fill', 'atlas-padding'])
+      $(id).removeAttribute('aria-invalid');
     const read = readAtlasOptions({
       maxStretch: $('atlas-max-stretch').value,
+      minHullFill: $('atlas-min-hull-fill').value,
       resolution: $('atlas-resolution').value,
       padding: $('atlas-padding').value,
     });
@@ -461,7 +470,7 @@ export function createAtlasMode({ session, view, surface }) {
     });
   }
   $('atlas-button').addEventListener('click', () => make());
-  for (const id of ['atlas-max-stretch', 'atlas-resolution', 'atlas-padding']) {
+  for (const id of ['atlas-max-stretch', 'atlas-min-hull-fill', 'atlas-resolution', 'atlas-padding']) {
     $(id).addEventListener('change', () => optionsChanged());
   }
   $('atlas-display').addEventListener('change', () => updateMaterial());

@@ -99,6 +99,9 @@ std::string otherCommandsUsage() {
          "      --max-stretch S        split charts whose L2 stretch exceeds S (default " +
          std::to_string(ChartOptions{}.maxStretch).substr(0, 4) +
          ")\n"
+         "      --min-hull-fill F      split charts filling less than F of their convex hull (default " +
+         std::to_string(ChartOptions{}.minHullFill).substr(0, 3) +
+         ")\n"
          "      --max-charts N         stop splitting at N charts (default: no cap)\n"
          "      --resolution R         atlas side in texels (default " +
          std::to_string(PackOptions{}.resolution) +
@@ -176,6 +179,14 @@ double parsePositive(const std::string& flag, const char* value) {
   return v;
 }
 
+double parseFraction(const std::string& flag, const char* value) {
+  char* end = nullptr;
+  const double v = std::strtod(value, &end);
+  if (!*value || *end || !(v >= 0 && v <= 1))
+    throw UsageError{flag + " expects a number in [0, 1], got '" + value + "'"};
+  return v;
+}
+
 double parseNonNegative(const std::string& flag, const char* value) {
   char* end = nullptr;
   const double v = std::strtod(value, &end);
@@ -233,6 +244,7 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--time-budget-ms") o.free.timeBudgetMs = parsePositive(a, value());
     else if (a == "--progress") o.progress = true;
     else if (a == "--max-stretch") o.atlas.charts.maxStretch = parsePositive(a, value());
+    else if (a == "--min-hull-fill") o.atlas.charts.minHullFill = parseFraction(a, value());
     else if (a == "--max-charts") o.atlas.charts.maxCharts = parseCount32(a, value());
     else if (a == "--resolution") o.atlas.pack.resolution = parseCount32(a, value());
     else if (a == "--padding") o.atlas.pack.padding = parseNonNegative(a, value());

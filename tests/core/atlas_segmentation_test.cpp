@@ -210,6 +210,54 @@ TEST(AtlasCharts, MaxChartFacesCapsEveryChart) {
   EXPECT_EQ(chartsOf(sheet, uncapped).charts.size(), 1u) << "the sheet itself needs no cut";
 }
 
+/// Twice the area of the convex hull of `points` (gift wrapping: the test's own hull, not the atlas's).
+double twiceHullArea(const std::vector<Vec2>& points) {
+  size_t start = 0;
+  for (size_t i = 1; i < points.size(); ++i)
+    if (points[i].x < points[start].x || (points[i].x == points[start].x && points[i].y < points[start].y)) start = i;
+  std::vector<Vec2> hull;
+  size_t current = start;
+  do {
+    hull.push_back(points[current]);
+    size_t next = current == 0 ? 1 : 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const double turn = cross(points[next] - points[current], points[i] - points[current]);
+      const bool farther = norm(points[i] - points[current]) > norm(points[next] - points[current]);
+      if (turn < 0 || (turn == 0 && farther)) next = i;
+    }
+    current = next;
+  } while (current != start && hull.size() <= points.size());
+  double twice = 0;
+  for (size_t i = 0; i < hull.size(); ++i) twice += cross(hull[i], hull[(i + 1) % hull.size()]);
+  return std::fabs(twice);
+}
+
+TEST(AtlasCharts, ConcaveChartsAreSplitUntilEachFillsItsHull) {
+  // A flat C: three quarters of an annulus. It projects onto its plane isometrically as one chart, which fills
+  // about 0.43 of its convex hull; the default splits it into pieces that each fill at least minHullFill.
+  const TriMesh ring = makeGrid(
+      24,
+      [](int i, int j) {
+        const double angle = 1.5 * testing::kPi * i / 24, radius = 1 + j / 24.0;
+        return Vec3{radius * std::cos(angle), radius * std::sin(angle), 0};
+      },
+      GridDiagonals::Alternating);
+  ChartOptions anyShape;
+  anyShape.minHullFill = 0;
+  EXPECT_EQ(chartsOf(ring, anyShape).charts.size(), 1u);
+  const ChartSet set = chartsOf(ring);
+  expectValidCharts(ring, set, 1.02);
+  expectIsometric(ring, set, 1e-9);
+  EXPECT_GE(set.charts.size(), 2u);
+  for (const FlatChart& chart : set.charts) {
+    double twiceArea = 0;
+    for (size_t i = 0; i < chart.faces.size(); ++i)
+      twiceArea += cross(chart.cornerUv[3 * i + 1] - chart.cornerUv[3 * i],
+                         chart.cornerUv[3 * i + 2] - chart.cornerUv[3 * i]);
+    EXPECT_GE(twiceArea, ChartOptions{}.minHullFill * twiceHullArea(chart.cornerUv)) << chart.faces.size() << " faces";
+  }
+}
+
 TEST(AtlasCharts, RefusesBadOptions) {
   const TriMesh sphere = makeIcosphere(1.0, 1);
   ChartOptions options;
@@ -218,6 +266,11 @@ TEST(AtlasCharts, RefusesBadOptions) {
   options = {};
   options.maxCharts = -1;
   EXPECT_EQ(makeCharts(sphere, options).error().code, ErrorCode::InvalidArgument);
+  for (const double fill : {-0.1, 1.5, std::nan("")}) {
+    options = {};
+    options.minHullFill = fill;
+    EXPECT_EQ(makeCharts(sphere, options).error().code, ErrorCode::InvalidArgument) << fill;
+  }
 }
 
 TEST(AtlasCharts, CancelDuringEachStage) {

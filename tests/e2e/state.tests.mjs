@@ -116,7 +116,8 @@ describe('default per mesh and state in the URL', () => {
     'a link restores the Atlas mode and its options; changing them and the mode goes back into the URL',
     { timeout: BIG_TEST_TIMEOUT_MS },
     async ({ page }) => {
-      const query = '?sample=torus&mode=atlas&atlasstretch=1.1&atlasres=512&atlaspad=4&atlasshow=checker&seams=0';
+      const query =
+        '?sample=torus&mode=atlas&atlasstretch=1.1&atlasfill=0.5&atlasres=512&atlaspad=4&atlasshow=checker&seams=0';
       await page.goto(`${page.url().split('?')[0]}${query}`);
       const atlasShown = (more) =>
         page.waitForFunction(`window.__straightest.atlas && !window.__straightest.progress.busy && ${more}`, null, {
@@ -124,10 +125,15 @@ describe('default per mesh and state in the URL', () => {
         });
       await atlasShown('true');
       const { atlas } = await hooks(page);
-      assert.deepEqual(atlas.options, { maxStretch: 1.1, resolution: 512, padding: 4 }, 'the atlas made');
+      assert.deepEqual(
+        atlas.options,
+        { maxStretch: 1.1, minHullFill: 0.5, resolution: 512, padding: 4 },
+        'the atlas made',
+      );
       assert((await page.getAttribute('#mode-tab-atlas', 'aria-selected')) === 'true', 'the Atlas tab is not selected');
       assert((await page.evaluate(() => document.body.dataset.mode)) === 'atlas', 'the page is not in the Atlas mode');
       assert((await page.inputValue('#atlas-max-stretch')) === '1.1', 'max stretch field');
+      assert((await page.inputValue('#atlas-min-hull-fill')) === '0.5', 'min hull fill field');
       assert((await page.inputValue('#atlas-resolution')) === '512', 'resolution menu');
       assert((await page.inputValue('#atlas-padding')) === '4', 'padding field');
       assert((await page.inputValue('#atlas-display')) === 'checker', 'show menu');
@@ -142,7 +148,12 @@ describe('default per mesh and state in the URL', () => {
       assert(new URL(page.url()).searchParams.get('atlaspad') === '3', `URL ${new URL(page.url()).search}`);
       await page.reload();
       await atlasShown('window.__straightest.atlas.options.padding === 3');
-      assert.deepEqual((await hooks(page)).atlas.options, { maxStretch: 1.1, resolution: 512, padding: 3 });
+      assert.deepEqual((await hooks(page)).atlas.options, {
+        maxStretch: 1.1,
+        minHullFill: 0.5,
+        resolution: 512,
+        padding: 3,
+      });
 
       // Back to the 3D surface: the mode leaves the URL, the atlas options stay.
       await page.click('#mode-tab-surface');

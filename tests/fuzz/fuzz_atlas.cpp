@@ -31,6 +31,7 @@ AtlasOptions randomOptions(FuzzedDataProvider& in) {
   AtlasOptions options;
   options.charts.maxStretch = 1 + in.ConsumeFloatingPointInRange(0.005, 0.5);
   options.charts.maxCharts = in.ConsumeIntegralInRange(0, 3) == 0 ? in.ConsumeIntegralInRange(1, 8) : 0;
+  options.charts.minHullFill = in.ConsumeFloatingPointInRange(0.0, 1.0);
   options.charts.free.maxIterations = in.ConsumeIntegralInRange(1, 8);
   options.charts.free.timeBudgetMs = 2000;
   options.pack.resolution = in.ConsumeIntegralInRange(16, 256);

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "chart_mesh.hpp"
+#include "chart_shape.hpp"
 #include "corner_stretch.hpp"
 #include "straightest/param/boundary_overlaps.hpp"
 #include "straightest/param/parameterize.hpp"
@@ -175,9 +176,14 @@ std::vector<Vec2> mapOfDisk(const TriMesh& mesh, const std::vector<int32_t>& fac
   if (uv.empty() || outlineCrossesItself(chartMesh.value(), uv)) return {};
   return uv;
 }
+/// Whether the chart fills enough of its convex hull: the gaps in a concave chart's hull are gaps no packer
+/// fills well, and its convex halves pack tighter.
+bool packsWell(const std::vector<Vec2>& cornerUv, const ChartLimits& limits) {
+  return limits.minHullFill <= 0 || hullFill(cornerUv) >= limits.minHullFill;
+}
 }  // namespace
 
-ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, double maxStretch,
+ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, const ChartLimits& limits,
                              const FreeBoundaryOptions& free) {
   ChartFlattening out;
   out.chart.faces = std::move(faces);
@@ -190,7 +196,8 @@ ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, do
   out.chart.cornerUv = std::move(uv);
   out.chart.l2 = mapped ? stretch.l2 : kInfinity;  // faces laid out apart overlap: no map
   out.chart.linf = mapped ? stretch.linf : kInfinity;
-  out.acceptable = chartFaces.size() == 1 || (mapped && stretch.flipped == 0 && stretch.l2 <= maxStretch);
+  out.acceptable = chartFaces.size() == 1 || (mapped && stretch.flipped == 0 && stretch.l2 <= limits.maxStretch &&
+                                              packsWell(out.chart.cornerUv, limits));
   return out;
 }
 

@@ -1,5 +1,5 @@
 // chart_flattening.hpp — one chart mapped to the plane at its 3D scale, counter-clockwise, and judged:
-// acceptable when bijective (no flipped or flat uv triangle, no crossing boundary) within maxStretch.
+// acceptable when bijective (no flipped or flat uv triangle, no crossing boundary) within the chart limits.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -8,16 +8,22 @@
 
 namespace straightest::atlas {
 
+/// What makes a flat chart acceptable besides being bijective.
+struct ChartLimits {
+  double maxStretch = 1.02;  // Sander L2
+  double minHullFill = 0;    // uv area / convex hull area (0: any shape)
+};
+
 struct ChartFlattening {
   FlatChart chart;
-  bool acceptable = false;  // bijective and l2 <= maxStretch; a one-face chart always is
+  bool acceptable = false;  // bijective and within the limits; a one-face chart always is
 };
 
 /// `faces` ascending and edge-connected. A lone face is laid out directly (a zero-area one as a thin
 /// triangle along its longest edge, so its uv is finite and counter-clockwise); a planar chart is
 /// projected onto its plane; any other is parameterized with the free boundary. The result always has
 /// finite uv; when no map succeeds it is every face laid out on its own (not acceptable).
-ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, double maxStretch,
+ChartFlattening flattenChart(const TriMesh& mesh, std::vector<int32_t> faces, const ChartLimits& limits,
                              const FreeBoundaryOptions& free);
 
 }  // namespace straightest::atlas

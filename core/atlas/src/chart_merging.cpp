@@ -77,7 +77,7 @@ std::vector<int32_t> unionOf(const std::vector<int32_t>& a, const std::vector<in
 }  // namespace
 
 Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
-                              const ChartOptions& options, const Progress& progress) {
+                              const ChartOptions& options, const ChartLimits& limits, const Progress& progress) {
   int32_t merges = 0;
   int64_t budget = kTrialFacesPerFace * static_cast<int64_t>(mesh.numFaces());
   while (budget > 0) {
@@ -90,7 +90,7 @@ Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& chart
     }
     if (unions.empty()) break;
     trials.resize(unions.size());
-    auto flattened = flattenCharts(mesh, std::move(unions), options.maxStretch, options.free, progress);
+    auto flattened = flattenCharts(mesh, std::move(unions), limits, options.free, progress);
     if (!flattened) return flattened.error();
     std::vector<uint8_t> gone(charts.size(), 0);
     int32_t merged = 0;

@@ -5,6 +5,7 @@
 #include <set>
 #include <vector>
 
+#include "chart_flattening.hpp"
 #include "straightest/atlas/chart_segmentation.hpp"
 
 namespace straightest::atlas {
@@ -21,6 +22,6 @@ inline std::array<ChartKey, 2> chartPair(ChartKey a, ChartKey b) { return a < b 
 /// to try or the trials have flattened 4× the mesh's faces. `charts` is updated (merged charts replace the pair);
 /// returns the merge count. Progress stage "flatten"; Cancelled when it says stop.
 Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
-                              const ChartOptions& options, const Progress& progress);
+                              const ChartOptions& options, const ChartLimits& limits, const Progress& progress);
 
 }  // namespace straightest::atlas

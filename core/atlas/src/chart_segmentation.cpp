@@ -34,14 +34,13 @@ std::vector<std::vector<int32_t>> facesPerChart(const std::vector<int32_t>& labe
 
 /// Flattens `pending`, splitting every unacceptable chart (unless maxCharts forbids) until none is left.
 Expected<std::vector<FlatChart>> flattenAndSplit(const TriMesh& mesh, std::vector<std::vector<int32_t>> pending,
-                                                 const ChartOptions& options, ChartSet& set, ChartPairs& knownBad,
-                                                 const Progress& progress) {
+                                                 const ChartOptions& options, const ChartLimits& limits, ChartSet& set,
+                                                 ChartPairs& knownBad, const Progress& progress) {
   std::vector<FlatChart> done;
   double flattenedFaces = 0;
   while (!pending.empty()) {
     const double begin = 0.8 * flattenedFaces / mesh.numFaces();
-    auto flattened = flattenCharts(mesh, std::move(pending), options.maxStretch, options.free,
-                                   progress.range(begin, begin));
+    auto flattened = flattenCharts(mesh, std::move(pending), limits, options.free, progress.range(begin, begin));
     if (!flattened) return flattened.error();
     pending.clear();
     size_t unread = flattened.value().size();  // this round's results not yet taken, this one included
@@ -51,7 +50,7 @@ Expected<std::vector<FlatChart>> flattenAndSplit(const TriMesh& mesh, std::vecto
       // The cap keeps a chart that is only too stretched; one that has no flat map (its faces would lie
       // apart and overlap) is split whatever the cap: the atlas never overlaps.
       if (result.acceptable || (!mayGrow && std::isfinite(result.chart.l2))) {
-        if (!result.acceptable) set.capped = true, ++set.overStretch;
+        if (!result.acceptable) set.capped = true, set.overStretch += result.chart.l2 > options.maxStretch;
         flattenedFaces += static_cast<double>(result.chart.faces.size());
         done.push_back(std::move(result.chart));
         continue;
@@ -91,9 +90,10 @@ Expected<ChartSet> charts(const TriMesh& mesh, const ChartOptions& options, cons
   if (!labels) return labels.error();
   ChartSet set;
   ChartPairs knownBad;
-  auto flat = flattenAndSplit(mesh, facesPerChart(labels.value()), options, set, knownBad, progress);
+  const ChartLimits limits{options.maxStretch, options.minHullFill};
+  auto flat = flattenAndSplit(mesh, facesPerChart(labels.value()), options, limits, set, knownBad, progress);
   if (!flat) return flat.error();
-  auto merges = mergeCharts(mesh, flat.value(), knownBad, options, progress.range(0.8, 1));
+  auto merges = mergeCharts(mesh, flat.value(), knownBad, options, limits, progress.range(0.8, 1));
   if (!merges) return merges.error();
   set.merges = merges.value();
   finish(mesh, std::move(flat.value()), set);
@@ -106,6 +106,9 @@ Expected<ChartSet> makeCharts(const TriMesh& mesh, const ChartOptions& options, 
   if (!std::isfinite(options.maxStretch) || options.maxStretch < 1)
     return Error{ErrorCode::InvalidArgument,
                  "maxStretch must be a finite number >= 1, not " + std::to_string(options.maxStretch)};
+  if (!(options.minHullFill >= 0 && options.minHullFill <= 1))
+    return Error{ErrorCode::InvalidArgument,
+                 "minHullFill must be a number in [0, 1], not " + std::to_string(options.minHullFill)};
   if (options.maxCharts < 0)
     return Error{ErrorCode::InvalidArgument,
                  "maxCharts must be 0 (no cap) or positive, not " + std::to_string(options.maxCharts)};

@@ -10,7 +10,7 @@ constexpr size_t kLargeChart = 20000;  // faces: a solve this large keeps the th
 }
 
 Expected<std::vector<ChartFlattening>> flattenCharts(const TriMesh& mesh, std::vector<std::vector<int32_t>> charts,
-                                                     double maxStretch, const FreeBoundaryOptions& free,
+                                                     const ChartLimits& limits, const FreeBoundaryOptions& free,
                                                      const Progress& progress) {
   std::vector<ChartFlattening> out(charts.size());
   if (charts.empty()) return out;
@@ -24,12 +24,11 @@ Expected<std::vector<ChartFlattening>> flattenCharts(const TriMesh& mesh, std::v
     }
     if (!progress("flatten", done / total)) return cancelledError("atlas flattening");
     done += static_cast<double>(charts[i].size());
-    out[i] = flattenChart(mesh, std::move(charts[i]), maxStretch, free);
+    out[i] = flattenChart(mesh, std::move(charts[i]), limits, free);
   }
   if (!progress("flatten", done / total)) return cancelledError("atlas flattening");
   auto body = [&](size_t, size_t begin, size_t end) {
-    for (size_t j = begin; j < end; ++j)
-      out[small[j]] = flattenChart(mesh, std::move(charts[small[j]]), maxStretch, free);
+    for (size_t j = begin; j < end; ++j) out[small[j]] = flattenChart(mesh, std::move(charts[small[j]]), limits, free);
   };
   if (!detail::parallelFor(small.size(), 1, body, progress.range(total > 0 ? done / total : 0, 1), "flatten"))
     return cancelledError("atlas flattening");

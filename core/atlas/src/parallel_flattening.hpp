@@ -14,7 +14,7 @@ namespace straightest::atlas {
 /// (the core's loops give bit-identical results for any thread count), so the result does not depend on
 /// the thread count. Progress stage "flatten" (fraction of faces flattened); Cancelled when it says stop.
 Expected<std::vector<ChartFlattening>> flattenCharts(const TriMesh& mesh, std::vector<std::vector<int32_t>> charts,
-                                                     double maxStretch, const FreeBoundaryOptions& free,
+                                                     const ChartLimits& limits, const FreeBoundaryOptions& free,
                                                      const Progress& progress);
 
 }  // namespace straightest::atlas

@@ -12,9 +12,9 @@
 // only at a corner are split, so it is manifold) and is mapped by parameterize with the free boundary
 // (never folds; a chart that is not a disk is cut by parameterize), planar charts by projection and lone
 // faces directly, all isometric in scale (3D units) and counter-clockwise. A chart that is not bijective
-// or whose L2 stretch exceeds maxStretch is split in two (two far-apart seeds, regrown inside it) and
-// both halves are flattened again; a one-face chart is always accepted. Then adjacent charts are merged,
-// smallest first, wherever their union still flattens bijectively within maxStretch.
+// or whose L2 stretch exceeds maxStretch or that fills less than minHullFill of its convex hull is split in two (two
+// far-apart seeds, regrown inside it) and both halves are flattened again; a one-face chart is always accepted. Then
+// adjacent charts are merged, smallest first, wherever their union still flattens bijectively within maxStretch.
 //
 // Charts are flattened in parallel (threads.hpp); each chart's map depends only on its faces, so the
 // result is the same for any thread count.
@@ -34,6 +34,10 @@ struct ChartOptions {
   double maxStretch = 1.02;  // per-chart Sander L2 target after flattening (>= 1); charts above it are split
   int32_t maxCharts = 0;     // 0: no cap; otherwise splitting for stretch stops at this many charts (ChartSet::capped);
                              // a chart with no flat map is split anyway, so the count can pass it
+  // The least fraction of its uv's convex hull a chart may fill (0: any shape). A chart below it (an L, a
+  // piece of a ring, a body with its legs) is split like a stretched one: convex pieces pack with few gaps,
+  // so the atlas's texels go further, for a little more seam. Splits for shape count toward maxCharts.
+  double minHullFill = 0.7;
   // The most faces a chart grows to or merges into (0: no cap). Without it a large smooth mesh becomes a few
   // huge charts whose refinement solves dominate and run one at a time; with it a big developable region
   // becomes several charts, which costs a texture a little seam and keeps every solve small and parallel.
@@ -59,7 +63,8 @@ struct ChartSet {
   bool capped = false;               // maxCharts stopped a split
 };
 
-/// Errors: InvalidArgument (maxStretch < 1 or not finite, maxCharts < 0, maxChartFaces < 0), Cancelled, TooLarge.
+/// Errors: InvalidArgument (maxStretch < 1 or not finite, minHullFill outside [0, 1], maxCharts < 0,
+/// maxChartFaces < 0), Cancelled, TooLarge.
 Expected<ChartSet> makeCharts(const TriMesh& mesh, const ChartOptions& options, const Progress& progress = {});
 
 }  // namespace straightest
