@@ -54,19 +54,29 @@ void rasterizeTriangle(const Vec2 (&corner)[3], TexelMask& mask) {
   }
 }
 
-/// Per block height, the block of rows with the longest common run (ChartMask::blocks).
+/// Per block height, the block of rows with the longest common run (ChartMask::blocks). Blocks of 16 rows are
+/// four blocks of 4, as in the occupancy's.
 void findBlocks(ChartMask& mask) {
+  static_assert(kBlockRows[0] == 4 && kBlockRows[1] == 16, "blocks of 16 rows are four blocks of 4");
   const TexelMask& texels = mask.texels;
-  std::vector<uint64_t> common(texels.wordsPerRow());
-  for (int b = 0; b < 2; ++b) {
-    for (int32_t row = 0; row + kBlockRows[b] <= texels.height(); ++row) {
-      std::copy(texels.row(row), texels.row(row) + texels.wordsPerRow(), common.begin());
-      for (int32_t i = 1; i < kBlockRows[b]; ++i)
-        for (int32_t k = 0; k < texels.wordsPerRow(); ++k) common[k] &= texels.row(row + i)[k];
-      int32_t start = 0;
-      const int32_t length = longestRunOfBits(common.data(), texels.width(), &start);
-      if (length > mask.blocks[b].length) mask.blocks[b] = {row, start, length};
-    }
+  const int32_t words = texels.wordsPerRow();
+  TexelMask four(texels.width(), std::max(texels.height() - 3, 0));
+  for (int32_t row = 0; row < four.height(); ++row) {
+    uint64_t* common = four.row(row);
+    std::copy(texels.row(row), texels.row(row) + words, common);
+    for (int32_t i = 1; i < 4; ++i)
+      for (int32_t k = 0; k < words; ++k) common[k] &= texels.row(row + i)[k];
+    int32_t start = 0;
+    const int32_t length = longestRunOfBits(common, texels.width(), &start);
+    if (length > mask.blocks[0].length) mask.blocks[0] = {row, start, length};
+  }
+  std::vector<uint64_t> common(words);
+  for (int32_t row = 0; row + 16 <= texels.height(); ++row) {
+    for (int32_t k = 0; k < words; ++k)
+      common[k] = four.row(row)[k] & four.row(row + 4)[k] & four.row(row + 8)[k] & four.row(row + 12)[k];
+    int32_t start = 0;
+    const int32_t length = longestRunOfBits(common.data(), texels.width(), &start);
+    if (length > mask.blocks[1].length) mask.blocks[1] = {row, start, length};
   }
 }
 
@@ -110,6 +120,25 @@ std::optional<ChartMask> rasterizeChart(const std::vector<Vec2>& triangles, doub
   collectRuns(mask);
   findBlocks(mask);
   return mask;
+}
+
+std::optional<ChartMask> quarterTurned(const ChartMask& mask, double angle, int32_t maxWidth, int32_t maxHeight) {
+  const TexelMask& from = mask.texels;
+  if (!(from.height() < maxWidth && from.width() < maxHeight)) return std::nullopt;
+  ChartMask turned;
+  turned.angle = angle;
+  // Texel (i, j) covers [o.x + i, +1] × [o.y + j, +1]; (x, y) → (−y, x) takes it to texel (H − 1 − j, i) of the
+  // grid whose corner is (−o.y − H, o.x).
+  turned.origin = {-mask.origin.y - from.height(), mask.origin.x};
+  turned.texels = TexelMask(from.height(), from.width());
+  for (const MaskRun& run : mask.runs) {
+    const int32_t column = from.height() - 1 - run.row;
+    const uint64_t bit = uint64_t{1} << (column & 63);
+    for (int32_t i = run.start; i < run.start + run.length; ++i) turned.texels.row(i)[column >> 6] |= bit;
+  }
+  collectRuns(turned);
+  findBlocks(turned);
+  return turned;
 }
 
 }  // namespace straightest::atlas_detail

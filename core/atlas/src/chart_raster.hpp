@@ -49,4 +49,10 @@ struct ChartMask {
 std::optional<ChartMask> rasterizeChart(const std::vector<Vec2>& triangles, double texelsPerUnit, double angle,
                                         int32_t maxWidth, int32_t maxHeight);
 
+/// `mask` turned a quarter counter-clockwise, as the mask of the same chart at `angle` (the mask's angle + π/2):
+/// the texel grid turns onto itself, so the turned texels are exactly the squares the turned chart touches
+/// (only the origin moves), and no triangle is rasterized again. Nothing when it would be wider than maxWidth
+/// or taller than maxHeight.
+std::optional<ChartMask> quarterTurned(const ChartMask& mask, double angle, int32_t maxWidth, int32_t maxHeight);
+
 }  // namespace straightest::atlas_detail

@@ -48,9 +48,17 @@ std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, co
                                        double texelsPerUnit, const AtlasFrame& frame, const Progress& progress) {
   ChartMasks masks(charts.size());
   auto body = [&](size_t, size_t begin, size_t end) {
-    for (size_t c = begin; c < end; ++c)
-      for (const double angle : angles[c])
-        masks[c].push_back(rasterizeChart(charts[c].triangles, texelsPerUnit, angle, frame.width, frame.height));
+    for (size_t c = begin; c < end; ++c) {
+      // The turns are evenly spread over the full turn: with a multiple of 4 of them, each turn a quarter
+      // after an earlier one is that one's mask turned.
+      const size_t quarter = angles[c].size() % 4 == 0 ? angles[c].size() / 4 : angles[c].size();
+      for (size_t k = 0; k < angles[c].size(); ++k) {
+        const auto& earlier = k >= quarter ? masks[c][k - quarter] : std::nullopt;
+        masks[c].push_back(earlier ? quarterTurned(*earlier, angles[c][k], frame.width, frame.height)
+                                   : rasterizeChart(charts[c].triangles, texelsPerUnit, angles[c][k], frame.width,
+                                                    frame.height));
+      }
+    }
   };
   if (!detail::parallelFor(charts.size(), 1, body, progress, "pack")) return std::nullopt;
   return masks;
