@@ -54,9 +54,9 @@ std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, co
       const size_t quarter = angles[c].size() % 4 == 0 ? angles[c].size() / 4 : angles[c].size();
       for (size_t k = 0; k < angles[c].size(); ++k) {
         const auto& earlier = k >= quarter ? masks[c][k - quarter] : std::nullopt;
-        masks[c].push_back(earlier ? quarterTurned(*earlier, angles[c][k], frame.width, frame.height)
-                                   : rasterizeChart(charts[c].triangles, texelsPerUnit, angles[c][k], frame.width,
-                                                    frame.height));
+        masks[c].push_back(
+            earlier ? quarterTurned(*earlier, angles[c][k], frame.width, frame.height)
+                    : rasterizeChart(charts[c].triangles, texelsPerUnit, angles[c][k], frame.width, frame.height));
       }
     }
   };
