@@ -142,6 +142,9 @@ const param = createParamView({
 });
 const paramStatus = () => param.status();
 expose({
+  renders: () => view.status().renders,
+  background: () => view.status().background,
+  camera: () => view.status().camera,
   param: () => paramStatus().param,
   paramError: () => paramStatus().paramError,
   parameterizations: () => paramStatus().parameterizations,

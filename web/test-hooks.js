@@ -10,8 +10,6 @@ export const hooks = {
   threads: 0, // the threads the worker's WebAssembly module runs on (1: the single-threaded module)
   lastInfo: null, // mesh.info() of the mesh on display
   lastError: null, // { message, category } of the last error shown in the error panel
-  renders: 0, // frames rendered
-  background: null, // the 3D view's clear colour as [r, g, b] bytes
   traces: 0, // completed path traces
   // { count, reached, source, traceMs, plain, otherArcs (other arcs drawn: closed surfaces), arcs: up
   // to 16 paths' { status, length, other (NaN when none), backward } } of the paths on display
@@ -27,12 +25,10 @@ export const hooks = {
   // the parameterization, and under the comparison table.
   pathsHint: null,
   compareHint: null, // (paramHint: param-view.js's status())
-  // The 3D camera at the last frame: { upAxis, up, position, target (the orbit centre), fovDeg (vertical),
-  // aspect } (arrays of 3 numbers).
-  camera: null,
   cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
-  // The parameterization view's param, paramError, parameterizations and defaultBoundary are its
-  // status() (param-view.js), put here by main.js (expose below).
+  // The 3D view's renders, background and camera (scene.js) and the parameterization view's param,
+  // paramError, parameterizations and defaultBoundary (param-view.js) are their status(), put here by
+  // main.js (expose below; docs/PAGE.md lists them).
   compare: null, // the rows of the last comparison
   // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,
   // l2, linf, bijective, init }] in the order shown }, or null (never opened, or a new mesh).
