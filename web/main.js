@@ -34,7 +34,16 @@ import { createHeatDistance } from './heat-distance.js';
 import { poorResultHint, renderHint } from './hints.js';
 import { createKeyboard } from './keyboard.js';
 import { latest } from './latest.js';
-import { clearError, getIndexBase, setIndexBase, setStatus, showError, showInfo, showPathStats } from './panels.js';
+import {
+  clearError,
+  getIndexBase,
+  setIndexBase,
+  setStatus,
+  showError,
+  showInfo,
+  showPathStats,
+  shownError,
+} from './panels.js';
 import { indexBaseOf } from './data-export.js';
 import { createParamView } from './param-view.js';
 import { createExportPanel } from './export-panel.js';
@@ -142,6 +151,11 @@ const param = createParamView({
 });
 const paramStatus = () => param.status();
 expose({
+  samples: () => session.samples,
+  threads: () => session.threads,
+  lastInfo: () => session.info,
+  lastError: () => shownError(),
+  cancels: () => session.cancels,
   renders: () => view.status().renders,
   background: () => view.status().background,
   camera: () => view.status().camera,

@@ -1,5 +1,6 @@
 // The side panels' text: the mesh info, the path statistics, the error panel and the status line,
-// and how the page writes numbers and surface points. Only DOM: it shows what it is handed.
+// and how the page writes numbers and surface points. Only DOM: it shows what it is handed (and
+// remembers the last error shown: shownError()).
 
 import { hooks, setState } from './test-hooks.js';
 import { formatCount, formatMs } from './param-format.js';
@@ -171,9 +172,11 @@ export function showPathStats(reply, request, drawn) {
   $('clear-targets-button').disabled = request.added === 0;
 }
 
+let lastError = null; // { message, category } of the last error shown (shownError())
+
 /** Shows an error (message and category from the core) in the error panel; the page state is 'error'. */
 export function showError(err, title) {
-  hooks.lastError = { message: err.message, category: err.category ?? 'error' };
+  lastError = { message: err.message, category: err.category ?? 'error' };
   $('error-title').textContent = title;
   $('error-message').textContent = err.message;
   $('error-category').textContent = err.category ?? 'error';
@@ -185,6 +188,13 @@ export function showError(err, title) {
   setState('error');
 }
 
-export function clearError() {
+/** Hides the error panel; forget: shownError() is null again (a mesh loaded). */
+export function clearError({ forget = false } = {}) {
   $('error-panel').hidden = true;
+  if (forget) lastError = null;
+}
+
+/** { message, category } of the last error shown in the error panel, or null (none since a mesh loaded). */
+export function shownError() {
+  return lastError;
 }

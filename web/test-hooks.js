@@ -6,10 +6,6 @@ export const hooks = {
   // 'loading' | 'ready' | 'error' (also document.body.dataset.state): 'ready' once the mesh and its
   // paths are drawn.
   state: 'loading',
-  samples: [], // the sample names the worker offers
-  threads: 0, // the threads the worker's WebAssembly module runs on (1: the single-threaded module)
-  lastInfo: null, // mesh.info() of the mesh on display
-  lastError: null, // { message, category } of the last error shown in the error panel
   traces: 0, // completed path traces
   // { count, reached, source, traceMs, plain, otherArcs (other arcs drawn: closed surfaces), arcs: up
   // to 16 paths' { status, length, other (NaN when none), backward } } of the paths on display
@@ -25,10 +21,10 @@ export const hooks = {
   // the parameterization, and under the comparison table.
   pathsHint: null,
   compareHint: null, // (paramHint: param-view.js's status())
-  cancels: 0, // completed cancellations (the worker restarted and has the mesh again)
-  // The 3D view's renders, background and camera (scene.js) and the parameterization view's param,
-  // paramError, parameterizations and defaultBoundary (param-view.js) are their status(), put here by
-  // main.js (expose below; docs/PAGE.md lists them).
+  // The session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
+  // lastError (panels.js), the 3D view's renders, background and camera (scene.js) and the
+  // parameterization view's param, paramError, parameterizations and defaultBoundary (param-view.js)
+  // are put here by main.js (expose below; docs/PAGE.md lists them).
   compare: null, // the rows of the last comparison
   // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,
   // l2, linf, bijective, init }] in the order shown }, or null (never opened, or a new mesh).
