@@ -60,7 +60,7 @@ import { pageModes } from './modes.js';
 import { summarizePaths } from './results-summary.js';
 import { createUrlSync } from './url-sync.js';
 import { createDataDownloads } from './data-downloads.js';
-import { expose, hooks, setState } from './test-hooks.js';
+import { expose, setState } from './test-hooks.js';
 import { isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
@@ -118,6 +118,7 @@ const session = createSession({
       $('heat-toggle').checked = false;
       paths.clear();
       shownPaths = null;
+      pathsStatus = null;
       summarizePaths(null);
       exactRatio.clear();
       renderHint($('paths-hint'), null);
@@ -151,6 +152,9 @@ const param = createParamView({
 });
 const paramStatus = () => param.status();
 expose({
+  traces: () => traceCount,
+  paths: () => pathsStatus,
+  pathsHint: () => pathsHint,
   samples: () => session.samples,
   threads: () => session.threads,
   lastInfo: () => session.info,
@@ -190,6 +194,11 @@ const pathRequest = {
 };
 const traces = latest(); // only the most recent trace may update the view
 let shownPaths = null; // the 'paths' reply on display (the data downloads)
+// What the paths show, for the page's observable state (docs/PAGE.md): the traces completed, the
+// paths on display (kept until the next trace or until no mesh is left) and the hint under them.
+let traceCount = 0;
+let pathsStatus = null;
+let pathsHint = null;
 
 function closedMesh() {
   return (session.info?.boundaryLoops ?? []).length === 0;
@@ -226,7 +235,7 @@ async function tracePaths() {
   try {
     const reply = await session.request('paths', { source: pathRequest.source, targets: currentTargets() });
     if (current.stale()) return;
-    hooks.traces += 1;
+    traceCount += 1;
     paths.show(
       reply,
       pathRequest.added.map(({ position }) => position),
@@ -242,9 +251,10 @@ async function tracePaths() {
         closed: closedMesh(),
       },
       { plain, stride },
+      traceCount,
     );
     summarizePaths(reply);
-    hooks.paths = {
+    pathsStatus = {
       count: reply.count,
       reached: reply.reached,
       source: reply.source,
@@ -290,7 +300,7 @@ function showPathsHint(reply) {
     freeAvailable: session.boundaryKinds.includes('free'),
   });
   renderHint($('paths-hint'), hint);
-  hooks.pathsHint = hint?.text ?? null;
+  pathsHint = hint?.text ?? null;
 }
 
 session.addEventListener('cancel', () => {

@@ -2,7 +2,7 @@
 // and how the page writes numbers and surface points. Only DOM: it shows what it is handed (and
 // remembers the last error shown: shownError()).
 
-import { hooks, setState } from './test-hooks.js';
+import { setState } from './test-hooks.js';
 import { formatCount, formatMs } from './param-format.js';
 import { summarizeStatus } from './results-summary.js';
 import { statusWords } from './data-export.js';
@@ -91,9 +91,10 @@ export function showInfo(info, label) {
 /**
  * Fills the stats panel from a 'paths' reply. request: { isDefault (the source is the default one),
  * boundary (the boundary destinations are in), added (the number of added destinations), closed
- * (the mesh has no boundary) }; drawn: { plain, stride } of the path view.
+ * (the mesh has no boundary) }; drawn: { plain, stride } of the path view; traces: the traces
+ * completed so far.
  */
-export function showPathStats(reply, request, drawn) {
+export function showPathStats(reply, request, drawn, traces) {
   const { summary } = reply; // the core's
   const { paths: count, reached } = summary;
   const source = $('stats-source');
@@ -133,7 +134,7 @@ export function showPathStats(reply, request, drawn) {
   time.title =
     `tracing ${formatMs(timings.trace)}, setup ${formatMs(timings.prepare)} ` +
     `(${formatMs(reply.timeMs)} in the worker in all)`;
-  $('stats-traces').textContent = formatCount(hooks.traces);
+  $('stats-traces').textContent = formatCount(traces);
 
   const notes = [];
   if (request.closed && count === 0) {

@@ -12,7 +12,7 @@
 // What it knows, as plain data, is its getters (info, samples, threads, cancels; main.js puts them in
 // the page's observable state, docs/PAGE.md).
 
-import { hooks, setState } from './test-hooks.js'; // (hooks.paths: main.js's)
+import { setState } from './test-hooks.js';
 import { latest } from './latest.js';
 import { clearError, setStatus, showError, showThreads } from './panels.js';
 import { createRequests, isCancelled } from './requests.js';
@@ -109,7 +109,6 @@ export function createSession({ observer, display }) {
     status = '';
     displayed = null;
     info = null;
-    hooks.paths = null;
     emit('meshchange');
   }
 

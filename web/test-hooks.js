@@ -6,10 +6,6 @@ export const hooks = {
   // 'loading' | 'ready' | 'error' (also document.body.dataset.state): 'ready' once the mesh and its
   // paths are drawn.
   state: 'loading',
-  traces: 0, // completed path traces
-  // { count, reached, source, traceMs, plain, otherArcs (other arcs drawn: closed surfaces), arcs: up
-  // to 16 paths' { status, length, other (NaN when none), backward } } of the paths on display
-  paths: null,
   // The geodesic comparison (geodesic-compare.js) to the last added destination: { target (vertex),
   // planeLength, planeStatus, shotLength, shotStatus, missDistance, exactLength, drawn: { plane, shot,
   // exact } (whether each line was drawn) }, or null (toggle off, no destination, or before the reply).
@@ -17,11 +13,9 @@ export const hooks = {
   // Straightest ÷ exact over every boundary target (exact-ratio.js): { count, failed, min, median, max,
   // ratios (NaN where the trace failed), statuses, source } of the plot on display, or null.
   exactRatio: null,
-  // The poor-result hints on display (hints.js), as their text, or null: under the paths, and under
-  // the parameterization, and under the comparison table.
-  pathsHint: null,
-  compareHint: null, // (paramHint: param-view.js's status())
-  // The session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
+  // The poor-result hint under the comparison table (hints.js), as its text, or null.
+  compareHint: null,
+  // The paths' traces, paths and pathsHint (main.js's own), the session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
   // lastError (panels.js), the 3D view's renders, background and camera (scene.js) and the
   // parameterization view's param, paramError, parameterizations and defaultBoundary (param-view.js)
   // are put here by main.js (expose below; docs/PAGE.md lists them).
