@@ -152,6 +152,7 @@ const param = createParamView({
 });
 const paramStatus = () => param.status();
 expose({
+  progress: () => progressView.status(),
   traces: () => traceCount,
   paths: () => pathsStatus,
   pathsHint: () => pathsHint,

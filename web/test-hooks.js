@@ -15,7 +15,7 @@ export const hooks = {
   exactRatio: null,
   // The poor-result hint under the comparison table (hints.js), as its text, or null.
   compareHint: null,
-  // The paths' traces, paths and pathsHint (main.js's own), the session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
+  // The progress panel's progress (progress-view.js's status()), the paths' traces, paths and pathsHint (main.js's own), the session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
   // lastError (panels.js), the 3D view's renders, background and camera (scene.js) and the
   // parameterization view's param, paramError, parameterizations and defaultBoundary (param-view.js)
   // are put here by main.js (expose below; docs/PAGE.md lists them).
@@ -38,10 +38,6 @@ export const hooks = {
   atlasError: null,
   atlases: 0,
   atlasExports: [],
-  // The progress panel: busy while a job runs (and its bars linger), the number of jobs and progress
-  // messages, the largest fraction each stage ('type:stage') of the current (or last) job reached,
-  // and when (ms after the job began) it was first reported and reached 100%.
-  progress: { busy: false, jobs: 0, messages: 0, stages: {}, times: {} },
 };
 window.__straightest = hooks;
 
