@@ -152,6 +152,8 @@ const param = createParamView({
 });
 const paramStatus = () => param.status();
 expose({
+  geodesics: () => geodesics.status(),
+  exactRatio: () => exactRatio.status(),
   progress: () => progressView.status(),
   traces: () => traceCount,
   paths: () => pathsStatus,

@@ -6,16 +6,10 @@ export const hooks = {
   // 'loading' | 'ready' | 'error' (also document.body.dataset.state): 'ready' once the mesh and its
   // paths are drawn.
   state: 'loading',
-  // The geodesic comparison (geodesic-compare.js) to the last added destination: { target (vertex),
-  // planeLength, planeStatus, shotLength, shotStatus, missDistance, exactLength, drawn: { plane, shot,
-  // exact } (whether each line was drawn) }, or null (toggle off, no destination, or before the reply).
-  geodesics: null,
-  // Straightest ÷ exact over every boundary target (exact-ratio.js): { count, failed, min, median, max,
-  // ratios (NaN where the trace failed), statuses, source } of the plot on display, or null.
-  exactRatio: null,
   // The poor-result hint under the comparison table (hints.js), as its text, or null.
   compareHint: null,
-  // The progress panel's progress (progress-view.js's status()), the paths' traces, paths and pathsHint (main.js's own), the session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
+  // The geodesics (geodesic-compare.js's status()) and exactRatio (exact-ratio.js's), the progress
+  // panel's progress (progress-view.js's), the paths' traces, paths and pathsHint (main.js's own), the session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
   // lastError (panels.js), the 3D view's renders, background and camera (scene.js) and the
   // parameterization view's param, paramError, parameterizations and defaultBoundary (param-view.js)
   // are put here by main.js (expose below; docs/PAGE.md lists them).
