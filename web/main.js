@@ -171,6 +171,8 @@ expose({
   parameterizations: () => paramStatus().parameterizations,
   paramHint: () => paramStatus().paramHint,
   defaultBoundary: () => paramStatus().defaultBoundary,
+  compare: () => paramStatus().compare,
+  compareHint: () => paramStatus().compareHint,
 });
 createExportPanel({ session, view, surface, paths, param });
 createAtlasMode({ session, view, surface });

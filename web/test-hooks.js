@@ -6,14 +6,8 @@ export const hooks = {
   // 'loading' | 'ready' | 'error' (also document.body.dataset.state): 'ready' once the mesh and its
   // paths are drawn.
   state: 'loading',
-  // The poor-result hint under the comparison table (hints.js), as its text, or null.
-  compareHint: null,
-  // The geodesics (geodesic-compare.js's status()) and exactRatio (exact-ratio.js's), the progress
-  // panel's progress (progress-view.js's), the paths' traces, paths and pathsHint (main.js's own), the session's samples, threads, lastInfo and cancels (session.js's getters), the error panel's
-  // lastError (panels.js), the 3D view's renders, background and camera (scene.js) and the
-  // parameterization view's param, paramError, parameterizations and defaultBoundary (param-view.js)
-  // are put here by main.js (expose below; docs/PAGE.md lists them).
-  compare: null, // the rows of the last comparison
+  // The other fields are read from the modules' status() and getters by main.js (expose below);
+  // docs/PAGE.md lists them all. The fields below are still written by their modules:
   // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,
   // l2, linf, bijective, init }] in the order shown }, or null (never opened, or a new mesh).
   figure: null,
