@@ -152,6 +152,7 @@ const param = createParamView({
 });
 const paramStatus = () => param.status();
 expose({
+  figure: () => exportPanel.figure.status(),
   geodesics: () => geodesics.status(),
   exactRatio: () => exactRatio.status(),
   progress: () => progressView.status(),
@@ -174,7 +175,7 @@ expose({
   compare: () => paramStatus().compare,
   compareHint: () => paramStatus().compareHint,
 });
-createExportPanel({ session, view, surface, paths, param });
+const exportPanel = createExportPanel({ session, view, surface, paths, param });
 createAtlasMode({ session, view, surface });
 createDataDownloads({
   session,

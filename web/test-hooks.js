@@ -8,15 +8,6 @@ export const hooks = {
   state: 'loading',
   // The other fields are read from the modules' status() and getters by main.js (expose below);
   // docs/PAGE.md lists them all. The fields below are still written by their modules:
-  // Figure mode (figure-mode.js): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary,
-  // l2, linf, bijective, init }] in the order shown }, or null (never opened, or a new mesh).
-  figure: null,
-  // The images saved (export-panel.js), in order: { kind: 'view' | 'figure' | 'layout-png' | 'layout-svg',
-  // name, width, height (device pixels; cssWidth, cssHeight for the view), bytes (SVG) }.
-  exports: [],
-  // The data downloads (data-downloads.js), in order: { what: 'paths' | 'distances' | 'compare' |
-  // 'exact-ratio', ext: 'csv' | 'json' }.
-  dataExports: [],
   // The Atlas mode (atlas-mode.js): the atlas on display as { charts, l2, linf, utilization, width,
   // height, texelsPerUnit, seamEdges, seamLength, flipped, mirrored, overlaps, degenerate,
   // nonDiskCharts, minGapTexels, paddingViolations, capped, options: { maxStretch, resolution, padding },
