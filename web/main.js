@@ -152,6 +152,9 @@ const param = createParamView({
 });
 const paramStatus = () => param.status();
 expose({
+  atlas: () => atlasMode.status().atlas,
+  atlasError: () => atlasMode.status().atlasError,
+  atlases: () => atlasMode.status().atlases,
   figure: () => exportPanel.figure.status(),
   geodesics: () => geodesics.status(),
   exactRatio: () => exactRatio.status(),
@@ -176,7 +179,7 @@ expose({
   compareHint: () => paramStatus().compareHint,
 });
 const exportPanel = createExportPanel({ session, view, surface, paths, param });
-createAtlasMode({ session, view, surface });
+const atlasMode = createAtlasMode({ session, view, surface });
 createDataDownloads({
   session,
   paths: () => shownPaths,

@@ -7,16 +7,7 @@ export const hooks = {
   // paths are drawn.
   state: 'loading',
   // The other fields are read from the modules' status() and getters by main.js (expose below);
-  // docs/PAGE.md lists them all. The fields below are still written by their modules:
-  // The Atlas mode (atlas-mode.js): the atlas on display as { charts, l2, linf, utilization, width,
-  // height, texelsPerUnit, seamEdges, seamLength, flipped, mirrored, overlaps, degenerate,
-  // nonDiskCharts, minGapTexels, paddingViolations, capped, options: { maxStretch, resolution, padding },
-  // colors (the layout's chart colours, in chart order) }, or null; { message, category } of its last
-  // failure; the atlases shown; its downloads in order ({ kind: 'obj' | 'glb' | 'png' | 'svg', name, bytes }).
-  atlas: null,
-  atlasError: null,
-  atlases: 0,
-  atlasExports: [],
+  // docs/PAGE.md lists them all.
 };
 window.__straightest = hooks;
 
