@@ -1,8 +1,7 @@
 // The side panels' text: the mesh info, the path statistics, the error panel and the status line,
-// and how the page writes numbers and surface points. Only DOM: it shows what it is handed (and
-// remembers the last error shown: shownError()).
+// the page's state, and how the page writes numbers and surface points. Only DOM: it shows what it is
+// handed (and remembers the last error shown: shownError()).
 
-import { setState } from './test-hooks.js';
 import { formatCount, formatMs } from './param-format.js';
 import { summarizeStatus } from './results-summary.js';
 import { statusWords } from './data-export.js';
@@ -54,6 +53,14 @@ export function describePoint(point, withCoordinates = true) {
 export function setStatus(text) {
   $('status').textContent = text;
   summarizeStatus(text);
+}
+
+/**
+ * The page's state: 'loading' | 'ready' ('ready' once the mesh and its paths are drawn) | 'error', as
+ * document.body.dataset.state (the view's busy cursor; the browser tests wait on it).
+ */
+export function setState(state) {
+  document.body.dataset.state = state;
 }
 
 /** The threads the worker's WebAssembly module runs on, in the info panel. */

@@ -12,9 +12,8 @@
 // What it knows, as plain data, is its getters (info, samples, threads, cancels; main.js puts them in
 // the page's observable state, docs/PAGE.md).
 
-import { setState } from './test-hooks.js';
 import { latest } from './latest.js';
-import { clearError, setStatus, showError, showThreads } from './panels.js';
+import { clearError, setState, setStatus, showError, showThreads } from './panels.js';
 import { createRequests, isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
