@@ -1,12 +1,11 @@
 // The atlas out of the page: the mesh with the atlas uv as OBJ (written by the core: mesh.toOBJ(cornerUv),
 // one vt per distinct corner uv, `f v/vt`) and as GLB (three's GLTFExporter on the seam-split geometry the
 // 3D view draws: TEXCOORD_0 is the atlas uv), and the packed layout as PNG (at the atlas's resolution) and
-// SVG (one path per chart). Each download is recorded in the test hooks.
+// SVG (one path per chart). Each returns the name of the file it saved.
 
 import { atlasCanvas, atlasSvg } from './atlas-layout.js';
 import { download, pngBlob } from './image-export.js';
 import { glbFromGeometry } from './mesh-files.js';
-import { hooks } from './test-hooks.js';
 
 /**
  * session: session.js (the OBJ is written in the worker); shown(): the atlas on display as
@@ -14,23 +13,19 @@ import { hooks } from './test-hooks.js';
  * baseName(): the file names' stem ("torus-atlas").
  */
 export function createAtlasExport({ session, shown, baseName }) {
-  function record(kind, name, bytes) {
-    hooks.atlasExports.push({ kind, name, bytes });
-  }
-
   async function obj() {
     const { reply } = shown();
     const { text } = await session.request('exportObj', { uv: reply.cornerUv });
     const name = `${baseName()}.obj`;
     download(new Blob([text], { type: 'text/plain' }), name);
-    record('obj', name, text.length);
+    return name;
   }
 
   async function glb() {
     const name = baseName();
     const buffer = await glbFromGeometry(shown().geometry, name);
     download(new Blob([buffer], { type: 'model/gltf-binary' }), `${name}.glb`);
-    record('glb', `${name}.glb`, buffer.byteLength);
+    return `${name}.glb`;
   }
 
   async function png() {
@@ -38,7 +33,7 @@ export function createAtlasExport({ session, shown, baseName }) {
     const blob = await pngBlob(atlasCanvas({ paths, width: reply.width, height: reply.height }));
     const name = `${baseName()}-layout.png`;
     download(blob, name);
-    record('png', name, blob.size);
+    return name;
   }
 
   function svg() {
@@ -50,7 +45,7 @@ export function createAtlasExport({ session, shown, baseName }) {
     );
     const name = `${baseName()}-layout.svg`;
     download(new Blob([text], { type: 'image/svg+xml' }), name);
-    record('svg', name, text.length);
+    return name;
   }
 
   return { obj, glb, png, svg };

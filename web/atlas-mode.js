@@ -11,11 +11,13 @@
 // An atlas is made on entering the mode (once per mesh; a large mesh waits for the button), and again
 // when an option changes. Progress and Cancel are the page's (progress-view.js, session.js); a new mesh
 // drops the atlas on display.
+//
+// What it has on display, as plain data, is status() (main.js puts it in the page's observable state:
+// atlas, atlasError, atlases; docs/PAGE.md).
 
 import * as THREE from 'three';
 import { toSeamSplitGeometry } from 'straightest/three';
 import { pageModes } from './modes.js';
-import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { isCancelled } from './requests.js';
 import { SEAM_COLOR, checkerboardCanvas, surfaceTexture } from './uv-layout.js';
@@ -66,6 +68,9 @@ export function createAtlasMode({ session, view, surface }) {
   let wanted = false; // the mode is on (its tab selected)
   const runs = latest(); // only the most recent atlas request may update the view
   let rerunTimer = 0;
+  // For status(): the metrics of the atlas on display (null when none), its last failure's { message,
+  // category } (null once one is shown or the mesh changes), and how many atlases were shown.
+  const status = { atlas: null, atlasError: null, atlases: 0 };
 
   // ---------------------------------------------------------------- 3D objects (on ATLAS_LAYER)
 
@@ -294,7 +299,7 @@ export function createAtlasMode({ session, view, surface }) {
     if (!read.error) return read.options;
     $(read.field).setAttribute('aria-invalid', 'true');
     showNote(read.error, 'error');
-    hooks.atlasError = { message: read.error, category: 'invalid_argument' };
+    status.atlasError = { message: read.error, category: 'invalid_argument' };
     return null;
   }
 
@@ -327,7 +332,7 @@ export function createAtlasMode({ session, view, surface }) {
     seamObject = onLayer(new THREE.LineSegments(seamGeometry(reply.seam), seamMaterial));
     seamObject.renderOrder = 2;
     updateMaterial();
-    hooks.atlas = {
+    status.atlas = {
       charts: reply.charts,
       l2: reply.stretch.l2,
       linf: reply.stretch.linf,
@@ -348,8 +353,8 @@ export function createAtlasMode({ session, view, surface }) {
       options: chosen,
       colors: Array.from({ length: reply.charts }, (_, k) => chartCss(k)),
     };
-    hooks.atlasError = null;
-    hooks.atlases += 1;
+    status.atlasError = null;
+    status.atlases += 1;
     showStats(reply);
     summarizeAtlas(reply);
     showNote(reply.capped ? 'The chart cap stopped a split: some chart may stretch more than the max stretch.' : '');
@@ -360,7 +365,7 @@ export function createAtlasMode({ session, view, surface }) {
 
   function showFailure(err) {
     forget();
-    hooks.atlasError = { message: err.message, category: err.category ?? 'error' };
+    status.atlasError = { message: err.message, category: err.category ?? 'error' };
     showNote(`Cannot make the atlas: ${err.message}`, 'error');
     $('atlas-panel').dataset.state = 'error';
     layoutMessage = 'The atlas failed (see the Atlas panel).';
@@ -372,7 +377,7 @@ export function createAtlasMode({ session, view, surface }) {
   function forget() {
     clearObjects();
     shown = null;
-    hooks.atlas = null;
+    status.atlas = null;
     summarizeAtlas(null);
     clearStats();
   }
@@ -428,7 +433,7 @@ export function createAtlasMode({ session, view, surface }) {
     runs.supersede();
     running = false;
     forget();
-    hooks.atlasError = null;
+    status.atlasError = null;
     showNote('');
     delete $('atlas-panel').dataset.state;
     layoutMessage = surface.mesh ? 'Making the atlas…' : 'No mesh loaded.';
@@ -462,8 +467,8 @@ export function createAtlasMode({ session, view, surface }) {
       if (!shown) return;
       $('atlas-export-status').textContent = '';
       try {
-        await run();
-        $('atlas-export-status').textContent = `Saved ${hooks.atlasExports.at(-1).name}.`;
+        const name = await run();
+        $('atlas-export-status').textContent = `Saved ${name}.`;
       } catch (err) {
         if (!isCancelled(err)) $('atlas-export-status').textContent = `Could not export the ${what}: ${err.message}`;
       }
@@ -483,4 +488,9 @@ export function createAtlasMode({ session, view, surface }) {
 
   clearStats();
   setButtons();
+
+  return {
+    /** What is on display: { atlas, atlasError, atlases } (a copy: see `status` above). */
+    status: () => ({ ...status }),
+  };
 }

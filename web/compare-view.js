@@ -1,8 +1,8 @@
 // The "Compare" panel: every boundary kind with every weights in the worker (with their progress),
 // as a table grouped by boundary with the best row marked and the row on display outlined; clicking
 // a row shows that combination. Free rows also say where their refinement started and its iterations.
+// Its rows and hint on display are getters (param-view.js's status() reports them).
 
-import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { BOUNDARY_COLORS } from './colormap.js';
 import { isCancelled } from './requests.js';
@@ -28,6 +28,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
   const runs = latest();
   let comparing = false; // a compare request is in flight
   let shownRows = null; // the rows of the table on display
+  let hintText = null; // the hint under the table, as text
 
   async function run() {
     const request = runs.begin(session.meshes);
@@ -46,7 +47,6 @@ export function createCompareView({ session, source, current, onChoose, onSettle
         status.textContent = `${done} / ${total}`;
       });
       if (request.stale()) return;
-      hooks.compare = reply.rows;
       shownRows = reply.rows;
       showTable(reply.rows, reply.rows[reply.best] ?? null);
       showHint(comparisonHint(reply.rows, current()?.weights));
@@ -136,7 +136,7 @@ export function createCompareView({ session, source, current, onChoose, onSettle
   /** The poor-result hint under the table (hints.js decides), or none. */
   function showHint(hint) {
     renderHint($('compare-hint'), hint);
-    hooks.compareHint = hint?.text ?? null;
+    hintText = hint?.text ?? null;
   }
 
   $('compare-button').addEventListener('click', () => run());
@@ -158,6 +158,10 @@ export function createCompareView({ session, source, current, onChoose, onSettle
     get rows() {
       return shownRows;
     },
+    /** The poor-result hint under the table, as text, or null. */
+    get hint() {
+      return hintText;
+    },
 
     /** No table (a new mesh). */
     clear() {
@@ -170,7 +174,6 @@ export function createCompareView({ session, source, current, onChoose, onSettle
       $('compare-data').hidden = true;
       $('compare-progress').hidden = true;
       $('compare-status').textContent = '';
-      hooks.compare = null;
       showHint(null);
     },
 

@@ -14,7 +14,6 @@ import {
 } from './data-export.js';
 import { download } from './image-export.js';
 import { isCancelled } from './requests.js';
-import { hooks } from './test-hooks.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -29,7 +28,6 @@ export function createDataDownloads({ session, paths, source, compareRows, exact
 
   function save(text, what, ext) {
     download(new Blob([text], { type: ext === 'csv' ? 'text/csv' : 'application/json' }), name(what, ext));
-    hooks.dataExports.push({ what, ext });
   }
 
   const tables = {

@@ -3,10 +3,11 @@
 // (both from the core, through the 'exactRatio' request), drawn as a plot against the target's place
 // along the loop — with the minimum, median and maximum and the count of failed traces — and as a
 // sortable table. Exact paths are the shortest, so every ratio is ≥ 1; on a plane every ratio is 1.
+// What it has on display, as plain data, is status() (main.js puts it in the page's observable state
+// as exactRatio, docs/PAGE.md).
 
 import { latest } from './latest.js';
 import { isCancelled } from './requests.js';
-import { hooks } from './test-hooks.js';
 import { statusWords } from './data-export.js';
 import { getIndexBase } from './panels.js';
 
@@ -93,6 +94,7 @@ export function createExactRatio({ session, source }) {
   let rows = [];
   let sort = { key: 'index', descending: false };
   let shownSource = null; // JSON of the resolved source the plot belongs to
+  let plotted = null; // the plot on display, for status(); null while a run is in flight
 
   function showTable() {
     const table = $('exact-ratio-table');
@@ -156,14 +158,14 @@ export function createExactRatio({ session, source }) {
     rows = [];
     shownSource = null;
     $('exact-ratio').hidden = true;
-    hooks.exactRatio = null;
+    plotted = null;
   }
 
   async function run() {
     const request = runs.begin(session.meshes);
     $('exact-ratio').hidden = false;
     $('exact-ratio-summary').textContent = 'Computing exact distances and straightest paths…';
-    hooks.exactRatio = null;
+    plotted = null;
     try {
       const reply = await session.request('exactRatio', { source: source() });
       if (request.stale()) return;
@@ -183,7 +185,7 @@ export function createExactRatio({ session, source }) {
         `median ${format(stats.median, 7)}, max ${format(stats.max, 7)} · ${failed} failed trace${failed === 1 ? '' : 's'}`;
       drawPlot($('exact-ratio-plot'), rows, stats);
       showTable();
-      hooks.exactRatio = {
+      plotted = {
         count: rows.length,
         failed,
         ...stats,
@@ -209,13 +211,18 @@ export function createExactRatio({ session, source }) {
     get rows() {
       return rows.length ? rows : null;
     },
+    /**
+     * The plot on display: { count, failed, min, median, max, ratios (NaN where the trace failed),
+     * statuses, source }, or null.
+     */
+    status: () => plotted,
     /** The paths were traced from `resolved`: a plot of another source is out of date. */
     sourceChanged(resolved) {
       if (shownSource !== null && shownSource !== JSON.stringify(resolved)) clear();
     },
     /** Cancel stopped the worker: the run in flight will not come. */
     cancelled() {
-      if (!$('exact-ratio').hidden && !hooks.exactRatio) {
+      if (!$('exact-ratio').hidden && !plotted) {
         runs.supersede();
         $('exact-ratio-summary').textContent = 'cancelled';
       }

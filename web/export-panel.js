@@ -2,14 +2,11 @@
 // colour and visibility; the base plane has its own toggle above), the figure mode button, and the
 // exports — the 3D view and the figure grid as PNG, the UV layout as PNG and SVG — at a chosen
 // resolution (1× / 2× / 4× the CSS size) and background (dark, light, transparent).
-//
-// Test hooks: figure, exports (see test-hooks.js).
 
 import { createFigureMode } from './figure-mode.js';
 import { BACKGROUNDS, download, fittingScale, pngBlob, renderToCanvas } from './image-export.js';
 import { layoutSvg } from './layout-svg.js';
 import { drawLayout, layoutExportSize } from './uv-layout.js';
-import { hooks } from './test-hooks.js';
 
 const $ = (id) => document.getElementById(id);
 const LAYOUT_EXPORT_WIDTH = 720; // CSS pixels of an exported UV layout (the PNG is this × the scale)
@@ -37,9 +34,8 @@ export function createExportPanel({ session, view, surface, paths, param }) {
     onChange: () => setButtons(),
   });
 
-  /** Notes what was saved (the tests read hooks.exports) and says so in the panel. */
-  function saved(kind, name, details) {
-    hooks.exports.push({ kind, name, ...details });
+  /** Says in the panel what was saved (details.note: why the scale shrank). */
+  function saved(name, details = {}) {
     $('export-status').textContent = `Saved ${name}${details.note ? ` (${details.note})` : ''}`;
   }
 
@@ -73,7 +69,7 @@ export function createExportPanel({ session, view, surface, paths, param }) {
       });
       const name = `${(session.label || 'mesh').replace(/\.[^.]+$/, '').replace(/[^\w.-]+/g, '_')}-view-${scale()}x.png`;
       download(await pngBlob(canvas), name);
-      saved('view', name, { width: canvas.width, height: canvas.height, cssWidth: width, cssHeight: height, note });
+      saved(name, { note });
     } catch (err) {
       failed('3D view', err);
     }
@@ -86,7 +82,7 @@ export function createExportPanel({ session, view, surface, paths, param }) {
       const canvas = figure.compose({ scale: scale(), theme: theme() });
       const name = `${figure.name.replace(/[^\w.-]+/g, '_')}-figure-${scale()}x.png`;
       download(await pngBlob(canvas), name);
-      saved('figure', name, { width: canvas.width, height: canvas.height });
+      saved(name);
     } catch (err) {
       failed('figure', err);
     }
@@ -101,7 +97,7 @@ export function createExportPanel({ session, view, surface, paths, param }) {
       drawLayout(canvas, layout, '', { size: { ...size, scale: scale() }, theme: theme() });
       const name = `${param.exportName()}-uv-layout.png`;
       download(await pngBlob(canvas), name);
-      saved('layout-png', name, { width: canvas.width, height: canvas.height });
+      saved(name);
     } catch (err) {
       failed('layout', err);
     }
@@ -114,7 +110,7 @@ export function createExportPanel({ session, view, surface, paths, param }) {
       const text = layoutSvg(layout, { width: LAYOUT_EXPORT_WIDTH, theme: theme() });
       const name = `${param.exportName()}-uv-layout.svg`;
       download(new Blob([text], { type: 'image/svg+xml' }), name);
-      saved('layout-svg', name, { bytes: text.length });
+      saved(name);
     } catch (err) {
       failed('layout', err);
     }

@@ -6,11 +6,11 @@
 // the Parameterization panel); here they are only drawn. The 3D images are offscreen renders
 // (image-export.js), so the main view is untouched and shows again as it was when figure mode closes.
 //
-// Test hook: figure (see test-hooks.js).
+// What it has shown, as plain data, is status() (main.js puts it in the page's observable state as
+// figure, docs/PAGE.md).
 
 import * as THREE from 'three';
 import { applyUV, toSeamSplitGeometry } from 'straightest/three';
-import { hooks } from './test-hooks.js';
 import { latest } from './latest.js';
 import { isCancelled } from './requests.js';
 import { BACKGROUNDS, renderToCanvas } from './image-export.js';
@@ -37,6 +37,9 @@ export function createFigureMode({ session, view, surface, options, checkerCells
   let panels = []; // [{ boundary, reply, geometry }] of the finished runs
   let running = false;
   let shownFor = null; // { label, weights } the grid was computed for
+  // For status(): { state: 'running' | 'done' | 'cancelled' | 'failed', panels: [{ boundary, l2, linf,
+  // bijective, init }] in the order shown }, or null (never opened, or a new mesh).
+  let outcome = null;
 
   // ---------------------------------------------------------------- the panels' scene
 
@@ -199,7 +202,7 @@ export function createFigureMode({ session, view, surface, options, checkerCells
     for (const panel of panels) panel.geometry.dispose();
     panels = [];
     $('figure-grid').replaceChildren();
-    hooks.figure = null;
+    outcome = null;
   }
 
   /** Parameterizes the mesh with every boundary of FIGURE_ORDER the core has, one after another. */
@@ -211,7 +214,7 @@ export function createFigureMode({ session, view, surface, options, checkerCells
     const { source, weights } = options();
     shownFor = { label: session.label || 'mesh', weights };
     $('figure-subtitle').textContent = `${shownFor.label} · ${WEIGHT_LABELS[weights]} weights`;
-    hooks.figure = { state: 'running', panels: [] };
+    outcome = { state: 'running', panels: [] };
     setRunning(true, `0 / ${kinds.length}`);
     const progress = $('figure-progress');
     try {
@@ -229,7 +232,7 @@ export function createFigureMode({ session, view, surface, options, checkerCells
         panels.push(panel);
         $('figure-grid').append(panelElement(panel));
         drawPanel($('figure-grid').lastElementChild, panel);
-        hooks.figure.panels.push({
+        outcome.panels.push({
           boundary,
           l2: reply.stretch.l2,
           linf: reply.stretch.linf,
@@ -237,11 +240,11 @@ export function createFigureMode({ session, view, surface, options, checkerCells
           init: reply.init,
         });
       }
-      hooks.figure.state = 'done';
+      outcome.state = 'done';
       setRunning(false, `${panels.length} boundaries`);
     } catch (err) {
       if (request.stale()) return;
-      hooks.figure.state = isCancelled(err) ? 'cancelled' : 'failed';
+      outcome.state = isCancelled(err) ? 'cancelled' : 'failed';
       setRunning(false, isCancelled(err) ? 'cancelled' : `failed: ${err.message}`);
     }
   }
@@ -266,7 +269,7 @@ export function createFigureMode({ session, view, surface, options, checkerCells
   session.addEventListener('cancel', () => {
     if (!running) return;
     runs.supersede();
-    if (hooks.figure) hooks.figure.state = 'cancelled';
+    if (outcome) outcome.state = 'cancelled';
     setRunning(false, 'cancelled');
   });
 
@@ -348,5 +351,7 @@ export function createFigureMode({ session, view, surface, options, checkerCells
     get name() {
       return `${shownFor?.label ?? 'mesh'}-${shownFor?.weights ?? ''}`;
     },
+    /** The grid's state and panels (a copy: see `outcome` above), or null. */
+    status: () => structuredClone(outcome),
   };
 }

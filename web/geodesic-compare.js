@@ -2,7 +2,9 @@
 // (snapped to the vertex of its face nearest to the picked point: exact shortest paths end at
 // vertices): the cutting-plane straightest path, the Polthier–Schmies straightest geodesic shot
 // toward it (an initial value problem: it may miss), and the exact shortest path. Each is drawn in
-// its own colour over the paths, with a table of their lengths and the shot's miss distance.
+// its own colour over the paths, with a table of their lengths and the shot's miss distance. What it
+// has on display, as plain data, is status() (main.js puts it in the page's observable state as
+// geodesics, docs/PAGE.md).
 
 import * as THREE from 'three';
 import { Line2 } from 'three/addons/lines/Line2.js';
@@ -10,7 +12,6 @@ import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { latest } from './latest.js';
 import { isCancelled } from './requests.js';
-import { hooks } from './test-hooks.js';
 import { statusWords } from './data-export.js';
 import { describePoint } from './panels.js';
 
@@ -45,6 +46,7 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
   view.scene.add(group);
   const runs = latest();
   let last = null; // { source, destination } of the paths on display
+  let compared = null; // the comparison on display, for status()
 
   function clear() {
     runs.supersede();
@@ -53,7 +55,7 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
       child.geometry.dispose();
     }
     $('geodesic-compare').hidden = true;
-    hooks.geodesics = null;
+    compared = null;
     view.requestRender();
   }
 
@@ -108,7 +110,7 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
       ];
       group.add(...drawn.filter(Boolean));
       showTable(reply, vertex);
-      hooks.geodesics = {
+      compared = {
         target: vertex,
         planeLength: reply.plane.length,
         planeStatus: reply.plane.status,
@@ -133,5 +135,10 @@ export function createGeodesicCompare({ session, view, surface, wanted }) {
     refresh() {
       if (last) update(last.source, last.destination);
     },
+    /**
+     * The comparison on display: { target (vertex), planeLength, planeStatus, shotLength, shotStatus,
+     * missDistance, exactLength, drawn: { plane, shot, exact } (whether each line was drawn) }, or null.
+     */
+    status: () => compared,
   };
 }

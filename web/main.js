@@ -7,7 +7,7 @@
 //   path-view.js    path lines, markers, base plane, the hovered path's cutting plane
 //   picking.js      hovering paths (tooltip) and clicking the surface
 //   heat-distance.js, colormap.js   the distance colours; every colour scale
-//   panels.js       info, path statistics, errors, status line
+//   panels.js       info, path statistics, errors, status line and page state
 //   session.js      load / cancel / reload, "latest request wins" (latest.js)
 //   requests.js     each request as a few calls to straightest/worker, with its progress stages
 //   geodesic-compare.js  cutting plane, shot (IVP) and exact geodesics to the last added destination
@@ -19,7 +19,9 @@
 //   export-panel.js figure mode (figure-mode.js) and the image exports (image-export.js, layout-svg.js)
 //   atlas-mode.js   the Atlas mode: charts on the mesh, the packed layout beside the view (atlas-layout.js),
 //                   its metrics and downloads (atlas-export.js)
-//   progress-view.js, test-hooks.js
+//   progress-view.js the progress panel and Cancel
+// At the end, window.__straightest: what the page has on display as plain data, from the modules'
+// status() and getters (the browser tests read it; docs/PAGE.md).
 //
 // After a mesh loads, the page asks the worker for the straightest paths from the default source to
 // every boundary vertex and draws them (the paper's Figure 1 view); clicking the mesh moves the
@@ -34,7 +36,17 @@ import { createHeatDistance } from './heat-distance.js';
 import { poorResultHint, renderHint } from './hints.js';
 import { createKeyboard } from './keyboard.js';
 import { latest } from './latest.js';
-import { clearError, getIndexBase, setIndexBase, setStatus, showError, showInfo, showPathStats } from './panels.js';
+import {
+  clearError,
+  getIndexBase,
+  setIndexBase,
+  setState,
+  setStatus,
+  showError,
+  showInfo,
+  showPathStats,
+  shownError,
+} from './panels.js';
 import { indexBaseOf } from './data-export.js';
 import { createParamView } from './param-view.js';
 import { createExportPanel } from './export-panel.js';
@@ -51,7 +63,6 @@ import { pageModes } from './modes.js';
 import { summarizePaths } from './results-summary.js';
 import { createUrlSync } from './url-sync.js';
 import { createDataDownloads } from './data-downloads.js';
-import { expose, hooks, setState } from './test-hooks.js';
 import { isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
@@ -109,6 +120,7 @@ const session = createSession({
       $('heat-toggle').checked = false;
       paths.clear();
       shownPaths = null;
+      pathsStatus = null;
       summarizePaths(null);
       exactRatio.clear();
       renderHint($('paths-hint'), null);
@@ -140,16 +152,8 @@ const param = createParamView({
   pathSource: () => pathRequest.source,
   onShown: () => urlSync.save(),
 });
-const paramStatus = () => param.status();
-expose({
-  param: () => paramStatus().param,
-  paramError: () => paramStatus().paramError,
-  parameterizations: () => paramStatus().parameterizations,
-  paramHint: () => paramStatus().paramHint,
-  defaultBoundary: () => paramStatus().defaultBoundary,
-});
-createExportPanel({ session, view, surface, paths, param });
-createAtlasMode({ session, view, surface });
+const exportPanel = createExportPanel({ session, view, surface, paths, param });
+const atlasMode = createAtlasMode({ session, view, surface });
 createDataDownloads({
   session,
   paths: () => shownPaths,
@@ -173,6 +177,11 @@ const pathRequest = {
 };
 const traces = latest(); // only the most recent trace may update the view
 let shownPaths = null; // the 'paths' reply on display (the data downloads)
+// What the paths show, for the page's observable state (docs/PAGE.md): the traces completed, the
+// paths on display (kept until the next trace or until no mesh is left) and the hint under them.
+let traceCount = 0;
+let pathsStatus = null;
+let pathsHint = null;
 
 function closedMesh() {
   return (session.info?.boundaryLoops ?? []).length === 0;
@@ -209,7 +218,7 @@ async function tracePaths() {
   try {
     const reply = await session.request('paths', { source: pathRequest.source, targets: currentTargets() });
     if (current.stale()) return;
-    hooks.traces += 1;
+    traceCount += 1;
     paths.show(
       reply,
       pathRequest.added.map(({ position }) => position),
@@ -225,9 +234,10 @@ async function tracePaths() {
         closed: closedMesh(),
       },
       { plain, stride },
+      traceCount,
     );
     summarizePaths(reply);
-    hooks.paths = {
+    pathsStatus = {
       count: reply.count,
       reached: reply.reached,
       source: reply.source,
@@ -273,7 +283,7 @@ function showPathsHint(reply) {
     freeAvailable: session.boundaryKinds.includes('free'),
   });
   renderHint($('paths-hint'), hint);
-  hooks.pathsHint = hint?.text ?? null;
+  pathsHint = hint?.text ?? null;
 }
 
 session.addEventListener('cancel', () => {
@@ -355,6 +365,45 @@ viewport.addEventListener('drop', (event) => {
   const [file] = event.dataTransfer.files;
   if (file) session.loadFile(file);
 });
+
+// ------------------------------------------------------------------ the page's observable state
+
+// window.__straightest: what the page has on display, as plain data read from the modules when asked
+// (each keeps its own and offers a status() or getters). The browser tests read it and the DOM,
+// nothing else; docs/PAGE.md lists the fields. Getters only: it is read-only.
+const paramStatus = () => param.status();
+const observable = {
+  state: () => document.body.dataset.state,
+  samples: () => session.samples,
+  threads: () => session.threads,
+  lastInfo: () => session.info,
+  cancels: () => session.cancels,
+  lastError: () => shownError(),
+  renders: () => view.status().renders,
+  background: () => view.status().background,
+  camera: () => view.status().camera,
+  progress: () => progressView.status(),
+  traces: () => traceCount,
+  paths: () => pathsStatus,
+  pathsHint: () => pathsHint,
+  geodesics: () => geodesics.status(),
+  exactRatio: () => exactRatio.status(),
+  param: () => paramStatus().param,
+  paramError: () => paramStatus().paramError,
+  parameterizations: () => paramStatus().parameterizations,
+  paramHint: () => paramStatus().paramHint,
+  defaultBoundary: () => paramStatus().defaultBoundary,
+  compare: () => paramStatus().compare,
+  compareHint: () => paramStatus().compareHint,
+  figure: () => exportPanel.figure.status(),
+  atlas: () => atlasMode.status().atlas,
+  atlasError: () => atlasMode.status().atlasError,
+  atlases: () => atlasMode.status().atlases,
+};
+window.__straightest = Object.defineProperties(
+  {},
+  Object.fromEntries(Object.entries(observable).map(([name, get]) => [name, { get, enumerable: true }])),
+);
 
 urlSync.applyOptions();
 session.start((samples) => urlSync.initialSample(samples));

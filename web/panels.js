@@ -1,7 +1,7 @@
 // The side panels' text: the mesh info, the path statistics, the error panel and the status line,
-// and how the page writes numbers and surface points. Only DOM: it shows what it is handed.
+// the page's state, and how the page writes numbers and surface points. Only DOM: it shows what it is
+// handed (and remembers the last error shown: shownError()).
 
-import { hooks, setState } from './test-hooks.js';
 import { formatCount, formatMs } from './param-format.js';
 import { summarizeStatus } from './results-summary.js';
 import { statusWords } from './data-export.js';
@@ -55,6 +55,14 @@ export function setStatus(text) {
   summarizeStatus(text);
 }
 
+/**
+ * The page's state: 'loading' | 'ready' ('ready' once the mesh and its paths are drawn) | 'error', as
+ * document.body.dataset.state (the view's busy cursor; the browser tests wait on it).
+ */
+export function setState(state) {
+  document.body.dataset.state = state;
+}
+
 /** The threads the worker's WebAssembly module runs on, in the info panel. */
 export function showThreads(threads) {
   $('info-threads').textContent = threads > 1 ? `${threads} (WebAssembly threads)` : '1 (single-threaded WebAssembly)';
@@ -90,9 +98,10 @@ export function showInfo(info, label) {
 /**
  * Fills the stats panel from a 'paths' reply. request: { isDefault (the source is the default one),
  * boundary (the boundary destinations are in), added (the number of added destinations), closed
- * (the mesh has no boundary) }; drawn: { plain, stride } of the path view.
+ * (the mesh has no boundary) }; drawn: { plain, stride } of the path view; traces: the traces
+ * completed so far.
  */
-export function showPathStats(reply, request, drawn) {
+export function showPathStats(reply, request, drawn, traces) {
   const { summary } = reply; // the core's
   const { paths: count, reached } = summary;
   const source = $('stats-source');
@@ -132,7 +141,7 @@ export function showPathStats(reply, request, drawn) {
   time.title =
     `tracing ${formatMs(timings.trace)}, setup ${formatMs(timings.prepare)} ` +
     `(${formatMs(reply.timeMs)} in the worker in all)`;
-  $('stats-traces').textContent = formatCount(hooks.traces);
+  $('stats-traces').textContent = formatCount(traces);
 
   const notes = [];
   if (request.closed && count === 0) {
@@ -171,9 +180,11 @@ export function showPathStats(reply, request, drawn) {
   $('clear-targets-button').disabled = request.added === 0;
 }
 
+let lastError = null; // { message, category } of the last error shown (shownError())
+
 /** Shows an error (message and category from the core) in the error panel; the page state is 'error'. */
 export function showError(err, title) {
-  hooks.lastError = { message: err.message, category: err.category ?? 'error' };
+  lastError = { message: err.message, category: err.category ?? 'error' };
   $('error-title').textContent = title;
   $('error-message').textContent = err.message;
   $('error-category').textContent = err.category ?? 'error';
@@ -185,6 +196,13 @@ export function showError(err, title) {
   setState('error');
 }
 
-export function clearError() {
+/** Hides the error panel; forget: shownError() is null again (a mesh loaded). */
+export function clearError({ forget = false } = {}) {
   $('error-panel').hidden = true;
+  if (forget) lastError = null;
+}
+
+/** { message, category } of the last error shown in the error panel, or null (none since a mesh loaded). */
+export function shownError() {
+  return lastError;
 }

@@ -14,7 +14,8 @@
 // seam-split twin of the surface (param-texture.js); filled holes get a note.
 //
 // What it has on display, as plain data, is status() (main.js puts it in the page's observable
-// state, window.__straightest: param, paramError, parameterizations, paramHint, defaultBoundary).
+// state, window.__straightest: param, paramError, parameterizations, paramHint, defaultBoundary, and
+// the Compare table's compare and compareHint).
 
 import { applyUV } from 'straightest/three';
 import { latest } from './latest.js';
@@ -446,8 +447,8 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   redrawLayout();
 
   return {
-    /** What is on display (a copy: see `status` above). */
-    status: () => ({ ...status }),
+    /** What is on display (a copy: see `status` above), with the Compare table's rows and hint. */
+    status: () => ({ ...status, compare: compare.rows, compareHint: compare.hint }),
     /** Sets the Boundary menu as the user's choice (a shared link): it no longer follows each mesh's default. */
     chooseBoundary(boundary) {
       fillBoundaryMenu();

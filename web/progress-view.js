@@ -6,10 +6,9 @@
 // restarts the worker). The panel appears only when a job takes longer than a moment and hides when
 // the worker is idle again; everything here is DOM, and the page stays interactive meanwhile.
 //
-// Test hooks: window.__straightest.progress (see test-hooks.js), keyed by the request type
-// ('file', 'paths', 'parameterize', …) and stage.
-
-import { hooks } from './test-hooks.js';
+// What it has shown, as plain data, is status() (main.js puts it in the page's observable state as
+// progress, docs/PAGE.md), its stages keyed by the request type ('file', 'paths', 'parameterize', …)
+// and stage.
 
 const $ = (id) => document.getElementById(id);
 
@@ -75,6 +74,10 @@ export function createProgressView({ onCancel }) {
   let showTimer = 0;
   let hideTimer = 0;
   let tick = 0; // interval updating the elapsed time while the panel is shown
+  // For status(): busy while a job runs (and its bars linger), the jobs and progress messages so far,
+  // the largest fraction each stage ('type:stage') of the current (or last) job reached, and when (ms
+  // after the job began) it was first reported and reached 100%: [first, done or null].
+  const progress = { busy: false, jobs: 0, messages: 0, stages: {}, times: {} };
 
   function updateElapsed() {
     if (jobStart) elapsed.textContent = `${((performance.now() - jobStart) / 1000).toFixed(1)} s`;
@@ -93,7 +96,7 @@ export function createProgressView({ onCancel }) {
     panel.hidden = true;
     clearInterval(tick);
     tick = 0;
-    hooks.progress.busy = false;
+    progress.busy = false;
   }
 
   /** A request starts: a new job if the worker was idle, else another group of the same one. */
@@ -105,12 +108,12 @@ export function createProgressView({ onCancel }) {
     if (!jobStart) {
       jobStart = performance.now();
       list.replaceChildren();
-      hooks.progress.stages = {};
-      hooks.progress.times = {};
-      hooks.progress.jobs += 1;
+      progress.stages = {};
+      progress.times = {};
+      progress.jobs += 1;
       showTimer = setTimeout(show, SHOW_DELAY_MS);
     }
-    hooks.progress.busy = true;
+    progress.busy = true;
     active += 1;
     cancelButton.disabled = false;
 
@@ -163,16 +166,16 @@ export function createProgressView({ onCancel }) {
     return {
       update({ stage, fraction, stages: planned }) {
         if (ended) return;
-        hooks.progress.messages += 1;
+        progress.messages += 1;
         for (const name of planned ?? []) row(name);
         const entry = row(stage);
         entry.started = true;
         entry.fraction = Math.max(entry.fraction, fraction);
         entry.pct.textContent = `${Math.floor(100 * entry.fraction)}%`;
         const key = `${type}:${stage}`;
-        hooks.progress.stages[key] = Math.max(hooks.progress.stages[key] ?? 0, entry.fraction);
+        progress.stages[key] = Math.max(progress.stages[key] ?? 0, entry.fraction);
         const now = Math.round(performance.now() - jobStart);
-        const times = (hooks.progress.times[key] ??= [now, null]);
+        const times = (progress.times[key] ??= [now, null]);
         if (entry.fraction >= 1) times[1] ??= now;
         markActive();
       },
@@ -200,5 +203,7 @@ export function createProgressView({ onCancel }) {
     begin,
     /** True while a request with a group runs (the Cancel button is useful). */
     busy: () => active > 0,
+    /** What it has shown: { busy, jobs, messages, stages, times } (a copy: see `progress` above). */
+    status: () => structuredClone(progress),
   };
 }

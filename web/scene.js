@@ -1,11 +1,11 @@
 // The 3D view: the three.js renderer, camera, lights and orbit controls, render scheduling (one
 // frame per change, on demand) and where the camera looks from: the up axis, framing a mesh's
 // bounding box (reset), fitting its bounding sphere (fit) and the top/front/side presets. Everything drawn is added to
-// view.scene by the other views; they call view.requestRender() after a change.
+// view.scene by the other views; they call view.requestRender() after a change. What it has drawn,
+// as plain data, is status() (main.js puts it in the page's observable state, docs/PAGE.md).
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { hooks } from './test-hooks.js';
 import { createGpuUpload } from './gpu-upload.js';
 
 const BACKGROUND = 0x14171c;
@@ -15,7 +15,6 @@ export function createView({ canvas, viewport }) {
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   renderer.setClearColor(BACKGROUND);
-  hooks.background = [(BACKGROUND >> 16) & 255, (BACKGROUND >> 8) & 255, BACKGROUND & 255];
 
   const scene = new THREE.Scene();
   const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 100);
@@ -43,13 +42,15 @@ export function createView({ canvas, viewport }) {
 
   let scale = 1; // bounding-box diagonal of the framed mesh: sizes markers and planes
   let scheduledFrame = 0; // requestAnimationFrame id of a pending render, 0 if none
+  let renders = 0; // frames rendered (for status())
+  let lastCamera = null; // the camera at the last frame (for status())
 
   function render() {
     cancelAnimationFrame(scheduledFrame); // rendering now makes a pending frame redundant
     scheduledFrame = 0;
     renderer.render(scene, camera);
-    hooks.renders += 1;
-    hooks.camera = {
+    renders += 1;
+    lastCamera = {
       upAxis,
       up: camera.up.toArray(),
       position: camera.position.toArray(),
@@ -220,5 +221,15 @@ export function createView({ canvas, viewport }) {
     get scale() {
       return scale;
     },
+    /**
+     * What it has drawn: { renders (frames rendered), background (the clear colour as [r, g, b] bytes),
+     * camera (at the last frame: { upAxis, up, position, target (the orbit centre), fovDeg (vertical),
+     * aspect }, arrays of 3 numbers; null before the first) }.
+     */
+    status: () => ({
+      renders,
+      background: [(BACKGROUND >> 16) & 255, (BACKGROUND >> 8) & 255, BACKGROUND & 255],
+      camera: lastCamera,
+    }),
   };
 }

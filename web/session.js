@@ -9,10 +9,11 @@
 //   'meshchange'  a new mesh is on display (or none, after cancelling its reload)
 //   'meshready'   its paths are drawn (time for the follow-up work, e.g. parameterizing)
 //   'cancel'      Cancel stopped the worker: whatever it was computing will not come
+// What it knows, as plain data, is its getters (info, samples, threads, cancels; main.js puts them in
+// the page's observable state, docs/PAGE.md).
 
-import { hooks, setState } from './test-hooks.js';
 import { latest } from './latest.js';
-import { clearError, setStatus, showError, showThreads } from './panels.js';
+import { clearError, setState, setStatus, showError, showThreads } from './panels.js';
 import { createRequests, isCancelled } from './requests.js';
 
 const $ = (id) => document.getElementById(id);
@@ -34,6 +35,10 @@ export function createSession({ observer, display }) {
   let label = ''; // the sample or file name of the mesh on display
   let status = ''; // the status line of the mesh on display
   let boundaryKinds = []; // the worker's names of the parameterization's boundaries
+  let info = null; // mesh.info() of the mesh on display
+  let samples = []; // the sample names the worker offers
+  let threads = 0; // the threads the worker's WebAssembly module runs on
+  let cancels = 0; // completed cancellations (the worker restarted and has the mesh again)
 
   /**
    * Runs a request (requests.js); resolves with its reply, rejects with an Error (+ category;
@@ -59,12 +64,11 @@ export function createSession({ observer, display }) {
       }
       requests.adopt(reply.mesh, reply.info);
       label = reply.label;
-      hooks.lastInfo = reply.info;
+      info = reply.info;
       meshes.supersede();
       display.showMesh(reply, origin);
       emit('meshchange');
-      clearError();
-      hooks.lastError = null;
+      clearError({ forget: true });
       displayed = origin;
       status =
         `${reply.label}${reply.note ? ` (${reply.note})` : ''}: ${reply.info.vertices} vertices, ` +
@@ -103,8 +107,7 @@ export function createSession({ observer, display }) {
     label = '';
     status = '';
     displayed = null;
-    hooks.lastInfo = null;
-    hooks.paths = null;
+    info = null;
     emit('meshchange');
   }
 
@@ -133,7 +136,7 @@ export function createSession({ observer, display }) {
     try {
       if (origin) await requests.restore(origin.sample ? 'sample' : 'file', origin.sample ?? origin.file.name);
       if (origin !== displayed) return;
-      hooks.cancels += 1;
+      cancels += 1;
       clearError();
       setStatus(origin ? `Cancelled. ${status}` : 'Cancelled: no mesh loaded — choose a sample or open a file.');
       setState('ready');
@@ -153,10 +156,9 @@ export function createSession({ observer, display }) {
     setState('loading');
     try {
       const ready = await requests.start();
-      const { samples } = ready;
-      hooks.samples = samples;
+      samples = ready.samples;
       boundaryKinds = ready.boundaryKinds;
-      hooks.threads = ready.threads;
+      threads = ready.threads;
       showThreads(ready.threads);
       const select = $('sample-select');
       select.replaceChildren(...samples.map((name) => new Option(name, name)));
@@ -195,7 +197,19 @@ export function createSession({ observer, display }) {
     },
     /** mesh.info() of the mesh on display, or null. */
     get info() {
-      return hooks.lastInfo;
+      return info;
+    },
+    /** The sample names the worker offers ([] until it started). */
+    get samples() {
+      return samples;
+    },
+    /** The threads the worker's WebAssembly module runs on (1: the single-threaded module; 0 until it started). */
+    get threads() {
+      return threads;
+    },
+    /** How many cancellations completed (the worker restarted and has the mesh again). */
+    get cancels() {
+      return cancels;
     },
   };
 }

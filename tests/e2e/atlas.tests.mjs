@@ -179,8 +179,10 @@ describe('atlas mode', () => {
         paths.every((p) => p[3].length > 0),
         'an empty chart path',
       );
-      const kinds = await page.evaluate(() => window.__straightest.atlasExports.map((e) => e.kind));
-      assert.deepEqual(kinds, ['obj', 'glb', 'png', 'svg']);
+      await page.waitForFunction(
+        (said) => document.getElementById('atlas-export-status').textContent === said,
+        `Saved ${SAMPLE}-atlas-layout.svg.`,
+      );
     },
   );
 
