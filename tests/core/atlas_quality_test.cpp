@@ -56,6 +56,7 @@ TEST(AtlasQuality, SeparateChartsAreCleanWithTheirAreaAndGap) {
   EXPECT_NEAR(q.minGapTexels, 0.1 * 1024, 1e-4);  // snapping moves a uv by up to 2^-25 (3e-5 texels)
   EXPECT_EQ(q.outside, 0);
   EXPECT_EQ(q.seamEdges, 0);
+  EXPECT_TRUE(q.overlappingFaces.empty());
 }
 
 TEST(AtlasQuality, SliverOverlapThroughCrossingEdges) {
@@ -67,6 +68,7 @@ TEST(AtlasQuality, SliverOverlapThroughCrossingEdges) {
   EXPECT_EQ(q.overlaps, 1);
   EXPECT_EQ(q.minGapTexels, 0);
   EXPECT_EQ(q.paddingViolations, 1);
+  EXPECT_EQ(q.overlappingFaces, (std::vector<int32_t>{0, 2}));  // each chart by its first face
 }
 
 TEST(AtlasQuality, SliverOverlapAlongCollinearEdges) {
@@ -209,6 +211,7 @@ TEST(AtlasQuality, StripWrappingOverItselfOverlapsItself) {
   EXPECT_EQ(q.nonDiskCharts, 0);
   EXPECT_EQ(q.flipped, 0);
   EXPECT_EQ(q.overlaps, 1);
+  EXPECT_EQ(q.overlappingFaces, std::vector<int32_t>{0});
 }
 
 TEST(AtlasQuality, StripOfOneTurnDoesNotOverlap) {

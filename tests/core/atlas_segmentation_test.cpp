@@ -3,7 +3,9 @@
 // is developable, the stretch target kept, cancel and thread count honoured.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -256,6 +258,24 @@ TEST(AtlasCharts, ConcaveChartsAreSplitUntilEachFillsItsHull) {
                          chart.cornerUv[3 * i + 2] - chart.cornerUv[3 * i]);
     EXPECT_GE(twiceArea, ChartOptions{}.minHullFill * twiceHullArea(chart.cornerUv)) << chart.faces.size() << " faces";
   }
+}
+
+TEST(AtlasCharts, SplitChartsSplitsTheChartsNamedAndKeepsTheRest) {
+  const TriMesh torus = makeTorus(1, 0.4, 48, 24);
+  ChartSet set = chartsOf(torus);
+  ASSERT_GE(set.charts.size(), 3u);
+  const size_t before = set.charts.size();
+  const std::vector<int32_t> keptFaces = set.charts[1].faces, splitFaces = set.charts[0].faces;
+  ASSERT_TRUE(splitCharts(torus, set, {0, 2}, ChartOptions{}).ok());
+  expectValidCharts(torus, set, ChartOptions{}.maxStretch);
+  EXPECT_GE(set.charts.size(), before + 2);
+  EXPECT_EQ(set.charts[set.chartOfFace[keptFaces.front()]].faces, keptFaces) << "a chart not named is kept whole";
+  std::set<int32_t> parts;  // the charts chart 0's faces are in now: two or more, each inside chart 0
+  for (const int32_t f : splitFaces) parts.insert(set.chartOfFace[f]);
+  EXPECT_GE(parts.size(), 2u);
+  for (const int32_t c : parts)
+    for (const int32_t f : set.charts[c].faces)
+      EXPECT_TRUE(std::binary_search(splitFaces.begin(), splitFaces.end(), f)) << "face " << f;
 }
 
 TEST(AtlasCharts, RefusesBadOptions) {

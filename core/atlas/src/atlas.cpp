@@ -1,6 +1,7 @@
 // atlas.cpp — the atlas pipeline: charts, packing, one uv per face corner, and the independent check.
 #include "straightest/atlas/atlas.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace straightest {
@@ -43,6 +44,38 @@ void record(Timings* timings, const char* stage, double ms) {
   if (timings) timings->add(stage, ms);
 }
 
+// A chart whose outline comes closer to itself than the uv's precision may cross itself once turned, scaled
+// and placed (the independent check sees it on its 2^-24 grid): such charts are split and all packed again.
+// A round or two clears them; the bound only keeps a pathological mesh from looping.
+constexpr int kRepairRounds = 4;
+
+/// The atlas of the charts as packed, measured by the independent check.
+Atlas assemble(const TriMesh& mesh, const ChartSet& set, const Packing& packing, double padding) {
+  Atlas atlas;
+  atlas.cornerUv = placedCornerUv(mesh, set, packing);
+  atlas.chartOfFace = set.chartOfFace;
+  atlas.charts = static_cast<int32_t>(set.charts.size());
+  atlas.width = packing.width;
+  atlas.height = packing.height;
+  atlas.texelsPerUnit = packing.texelsPerUnit;
+  atlas.utilization = packing.utilization;
+  atlas.splits = set.splits;
+  atlas.merges = set.merges;
+  atlas.capped = set.capped;
+  collectSeam(mesh, atlas);
+  atlas.quality = measureAtlas(mesh, atlas.cornerUv, {atlas.width, atlas.height, padding});
+  return atlas;
+}
+
+/// The set's charts that the check found overlapping.
+std::vector<int32_t> overlappingCharts(const ChartSet& set, const AtlasQuality& quality) {
+  std::vector<int32_t> charts;
+  for (const int32_t f : quality.overlappingFaces) charts.push_back(set.chartOfFace[f]);
+  std::sort(charts.begin(), charts.end());
+  charts.erase(std::unique(charts.begin(), charts.end()), charts.end());
+  return charts;
+}
+
 }  // namespace
 
 Expected<Atlas> buildAtlas(const TriMesh& mesh, const AtlasOptions& options, const Progress& progress) {
@@ -50,25 +83,20 @@ Expected<Atlas> buildAtlas(const TriMesh& mesh, const AtlasOptions& options, con
   Expected<ChartSet> set = makeCharts(mesh, options.charts, progress.range(0, 0.85));
   if (!set) return set.error();
   record(options.timings, "charts", lap.lap());
-  Expected<Packing> packing = packCharts(chartShapes(set.value()), options.pack, progress.range(0.85, 0.95));
-  if (!packing) return packing.error();
-  record(options.timings, "pack", lap.lap());
-  if (!progress("measure", 0)) return cancelledError("atlas");
-
   Atlas atlas;
-  atlas.cornerUv = placedCornerUv(mesh, set.value(), packing.value());
-  atlas.chartOfFace = std::move(set.value().chartOfFace);
-  atlas.charts = static_cast<int32_t>(set.value().charts.size());
-  atlas.width = packing.value().width;
-  atlas.height = packing.value().height;
-  atlas.texelsPerUnit = packing.value().texelsPerUnit;
-  atlas.utilization = packing.value().utilization;
-  atlas.splits = set.value().splits;
-  atlas.merges = set.value().merges;
-  atlas.capped = set.value().capped;
-  collectSeam(mesh, atlas);
-  atlas.quality = measureAtlas(mesh, atlas.cornerUv, {atlas.width, atlas.height, options.pack.padding});
-  record(options.timings, "measure", lap.lap());
+  for (int round = 0;; ++round) {
+    Expected<Packing> packing = packCharts(chartShapes(set.value()), options.pack, progress.range(0.85, 0.95));
+    if (!packing) return packing.error();
+    record(options.timings, "pack", lap.lap());
+    if (!progress("measure", 0)) return cancelledError("atlas");
+    atlas = assemble(mesh, set.value(), packing.value(), options.pack.padding);
+    record(options.timings, "measure", lap.lap());
+    if (atlas.quality.overlaps == 0 || round == kRepairRounds) break;
+    Expected<void> split = splitCharts(mesh, set.value(), overlappingCharts(set.value(), atlas.quality), options.charts,
+                                       progress.range(0.85, 0.85));
+    if (!split) return split.error();
+    record(options.timings, "charts", lap.lap());
+  }
   record(options.timings, "total", total.ms());
   if (!progress("measure", 1)) return cancelledError("atlas");
   return atlas;

@@ -45,6 +45,19 @@ double widerMinGap(const std::vector<BoundarySegment>& segments, int32_t charts,
   }
 }
 
+/// The first face of every chart in an overlapping pair or crossing itself, ascending.
+std::vector<int32_t> firstFaces(const UvCharts& charts, const std::vector<uint64_t>& pairs,
+                                const std::vector<uint8_t>& selfCrossing) {
+  std::vector<uint8_t> bad(selfCrossing);
+  for (uint64_t key : pairs) bad[key >> 32] = bad[static_cast<uint32_t>(key)] = 1;
+  std::vector<int32_t> faces;
+  for (int32_t f = 0; f < static_cast<int32_t>(charts.chartOfFace.size()); ++f) {
+    const int32_t c = charts.chartOfFace[f];
+    if (c >= 0 && bad[c]) faces.push_back(f), bad[c] = 0;
+  }
+  return faces;
+}
+
 /// Overlapping chart pairs and self-crossing charts, minimum gap and padding violations.
 void measureOverlapsAndGaps(const TriMesh& mesh, const UvCharts& charts, const WeldedCharts& welded,
                             const QualityOptions& options, AtlasQuality& q) {
@@ -58,6 +71,7 @@ void measureOverlapsAndGaps(const TriMesh& mesh, const UvCharts& charts, const W
   overlapping.erase(std::unique(overlapping.begin(), overlapping.end()), overlapping.end());
   q.overlaps = static_cast<int64_t>(overlapping.size()) +
                std::count(near.selfCrossing.begin(), near.selfCrossing.end(), uint8_t{1});
+  q.overlappingFaces = firstFaces(charts, overlapping, near.selfCrossing);
   for (uint64_t key : overlapping) near.closer[key] = 0;
   double gap = std::numeric_limits<double>::infinity();
   for (const auto& [key, d] : near.closer) {

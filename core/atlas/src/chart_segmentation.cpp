@@ -100,7 +100,34 @@ Expected<ChartSet> charts(const TriMesh& mesh, const ChartOptions& options, cons
   if (!progress("flatten", 1)) return cancelledError("atlas flattening");
   return set;
 }
+Expected<void> resplit(const TriMesh& mesh, ChartSet& set, const std::vector<int32_t>& charts,
+                       const ChartOptions& options, const Progress& progress) {
+  std::vector<uint8_t> chosen(set.charts.size(), 0);
+  for (const int32_t c : charts) chosen.at(c) = 1;
+  std::vector<FlatChart> kept;
+  std::vector<std::vector<int32_t>> pending;
+  for (size_t c = 0; c < set.charts.size(); ++c) {
+    if (!chosen[c] || set.charts[c].faces.size() < 2) {
+      kept.push_back(std::move(set.charts[c]));
+      continue;
+    }
+    for (auto& part : splitChart(mesh, set.charts[c].faces)) pending.push_back(std::move(part));
+    ++set.splits;
+  }
+  ChartPairs knownBad;
+  auto flat = flattenAndSplit(mesh, std::move(pending), options, ChartLimits{options.maxStretch, options.minHullFill},
+                              set, knownBad, progress);
+  if (!flat) return flat.error();
+  for (FlatChart& chart : flat.value()) kept.push_back(std::move(chart));
+  finish(mesh, std::move(kept), set);
+  return {};
+}
 }  // namespace
+
+Expected<void> splitCharts(const TriMesh& mesh, ChartSet& set, const std::vector<int32_t>& charts,
+                           const ChartOptions& options, const Progress& progress) {
+  return guarded([&] { return resplit(mesh, set, charts, options, progress); });
+}
 
 Expected<ChartSet> makeCharts(const TriMesh& mesh, const ChartOptions& options, const Progress& progress) {
   if (!std::isfinite(options.maxStretch) || options.maxStretch < 1)

@@ -40,6 +40,7 @@ struct AtlasQuality {
   int64_t overlaps = 0;        // chart pairs that overlap (boundary edges properly crossing, or a vertex, a
                                // boundary edge's midpoint or a face centroid of one strictly inside a
                                // triangle of the other) + charts whose boundary properly crosses itself
+  std::vector<int32_t> overlappingFaces;  // the first face of each chart counted in overlaps, ascending
   double minGapTexels = std::numeric_limits<double>::infinity();  // smallest distance between two charts
                                                                   // in texels; 0 if any touch or overlap
   int64_t paddingViolations = 0;  // chart pairs closer than options.padding texels (overlapping pairs too)

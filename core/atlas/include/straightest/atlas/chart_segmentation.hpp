@@ -67,4 +67,10 @@ struct ChartSet {
 /// maxChartFaces < 0), Cancelled, TooLarge.
 Expected<ChartSet> makeCharts(const TriMesh& mesh, const ChartOptions& options, const Progress& progress = {});
 
+/// Splits each chart of `charts` (indices into set.charts; a lone face is kept) in two and flattens the parts as
+/// makeCharts does, splitting further any part that is not acceptable; the set is in makeCharts's order again
+/// and its stretch up to date. For charts found to overlap once placed (buildAtlas). Errors: Cancelled.
+Expected<void> splitCharts(const TriMesh& mesh, ChartSet& set, const std::vector<int32_t>& charts,
+                           const ChartOptions& options, const Progress& progress = {});
+
 }  // namespace straightest
