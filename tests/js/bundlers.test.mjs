@@ -3,6 +3,7 @@
 //   - Vite and webpack production builds, served cross-origin isolated, start the threaded module on the
 //     main thread and in straightest/worker; Vite's build with the threaded loader answered by an HTML
 //     page, or left hanging for the workers, still resolves — on one thread, with the reason;
+//   - straightest/single built by Vite and webpack emits one .wasm and none of the threaded assets;
 //   - Parcel builds straightest, straightest/inline and straightest/worker with nothing but the package
 //     exports switch Parcel documents, and without Node polyfills;
 //   - esbuild with straightest/worker (worker-entry bundled, createWorker), `await using` on a worker
@@ -198,6 +199,55 @@ test('webpack: a production build served cross-origin isolated starts threads', 
   page(join(out, 'webpack'), 'threads');
   assertThreads(await load(join(out, 'webpack'), 'threads', { isolated: true }), 'webpack');
 });
+
+/** Every file under `folder`, relative to it. */
+function filesUnder(folder) {
+  return readdirSync(folder, { recursive: true }).map(String);
+}
+
+test(
+  'Vite and webpack: straightest/single emits one .wasm and none of the threaded assets, and runs',
+  { timeout: TIMEOUT },
+  async (t) => {
+    const vite = await import('vite');
+    const viteOut = join(out, 'vite-single');
+    await vite.build({
+      root: app,
+      configFile: false,
+      logLevel: 'warn',
+      build: { outDir: viteOut, emptyOutDir: true, rollupOptions: { input: join(app, 'single.html') } },
+    });
+    const folders = [viteOut];
+    if (!unavailable) {
+      const { default: webpack } = await bundler('webpack');
+      const webpackOut = join(out, 'webpack-single');
+      const config = { mode: 'production', context: app, entry: { single: './single.js' } };
+      const stats = await new Promise((resolve, reject) =>
+        webpack({ ...config, output: { path: webpackOut, clean: true }, performance: { hints: false } }, (e, r) =>
+          e ? reject(e) : resolve(r),
+        ),
+      );
+      assert.equal(stats.hasErrors(), false, stats.toString('errors-only'));
+      page(webpackOut, 'single');
+      folders.push(webpackOut);
+    } else {
+      t.diagnostic(`webpack not checked: ${unavailable}`);
+    }
+    for (const folder of folders) {
+      const files = filesUnder(folder);
+      assert.equal(files.filter((f) => f.endsWith('.wasm')).length, 1, `${folder}: ${files}`);
+      assert.deepEqual(
+        files.filter((f) => /thread|worker/i.test(f)),
+        [],
+        `${folder} holds threaded assets`,
+      );
+      const { result, errors } = await load(folder, 'single', { isolated: true });
+      assert.deepEqual(errors, []);
+      assert.deepEqual([result.threads, result.bijective], [1, true], folder);
+      assert.match(result.threadsUnavailable, /single-threaded module only/);
+    }
+  },
+);
 
 test(
   'Parcel builds straightest, straightest/inline and straightest/worker, without Node polyfills',

@@ -6,6 +6,7 @@ import assert from 'node:assert/strict';
 import { PlaneGeometry } from 'three';
 import { createStraightest, Mesh, Straightest, StraightestError } from '../../wasm/index.js';
 import * as inline from '../../wasm/inline.js';
+import * as single from '../../wasm/single.js';
 import { meshFromBufferGeometry } from '../../wasm/three.js';
 
 const st = await createStraightest();
@@ -113,6 +114,18 @@ test('straightest/inline loads the embedded module with the same API', async () 
   const mesh = embedded.sample('mountain');
   assert.equal(mesh.info().vertices, 2500);
   mesh.delete();
+});
+
+test('straightest/single loads the single-threaded module with the same API, and says so when threads are asked', async () => {
+  const one = await single.createStraightest({ threads: 4 });
+  assert.equal(single.StraightestError, StraightestError);
+  assert.equal(one.threads, 1);
+  assert.match(one.threadsUnavailable, /single-threaded module only/);
+  const mesh = one.sample('mountain');
+  assert.equal(mesh.info().vertices, 2500);
+  assert.equal(mesh.parameterize().bijective, true);
+  mesh.delete();
+  assert.equal((await single.createStraightest({ threads: 1 })).threadsUnavailable, null);
 });
 
 test('a non-indexed geometry welds into one disk; unwelded, the topology error says why', () => {

@@ -63,6 +63,8 @@ test('the tarball holds the module, its types, the inline variant and the licens
     'wasm/dist/straightest-core-embedded.js',
     'wasm/index.d.ts',
     'wasm/inline.js',
+    'wasm/single.js',
+    'wasm/single.d.ts',
     'wasm/three.d.ts',
     'wasm/worker.js',
     'wasm/worker-entry.js',

@@ -34,6 +34,7 @@ import {
   unwrap,
 } from 'straightest/three';
 import * as inline from 'straightest/inline';
+import * as single from 'straightest/single';
 import { createStraightestWorker, type WorkerMesh } from 'straightest/worker';
 import { BufferGeometry } from 'three';
 
@@ -71,6 +72,8 @@ export async function consumer(bytes: Uint8Array, text: string, geometry: Buffer
   await createStraightest({ wasmUrl: '/assets/straightest-core.wasm', wasmBinary: new ArrayBuffer(8) });
   await createStraightest({ locateFile: (name, dir) => dir + name });
   const embedded: Straightest = await inline.createStraightest();
+  const singleThreaded: Straightest = await single.createStraightest({ threads: 1 });
+  singleThreaded.threadsUnavailable satisfies string | null;
   void embedded;
   // straightest/worker: the same calls as promises; a signal cancels.
   const inWorker = await createStraightestWorker({ wasmUrl: '/straightest-core.wasm' });
