@@ -67,10 +67,12 @@ PackOutcome tryScale(Search& search, double scale, std::vector<Placement>& place
   return PackOutcome::DoesNotFit;
 }
 
-/// The search stops when the bracket [fits, fails] is within half a texel on the largest chart, or 0.5 %.
+/// The search stops when the bracket [fits, fails] is within 0.5 % (1 % of utilization at most: below that the
+/// greedy packing's luck at one scale or the next outweighs the step), or within half a texel on the largest
+/// chart when that is wider (a small atlas, where a finer scale moves no texel).
 double searchTolerance(const ChartMeasures& measures, double fittingScale) {
   const double halfTexel = 0.5 / std::max(fittingScale * measures.largestExtent, 1e-300);
-  return std::min(0.005, halfTexel);
+  return std::max(0.005, halfTexel);
 }
 
 /// The next scale to try: down in growing steps until one fits, then up in steps until one fails (never past
