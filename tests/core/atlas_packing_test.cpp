@@ -235,15 +235,17 @@ TEST(AtlasPackPlacement, UtilizationIsTheScaledAreaOverTheAtlas) {
 }
 
 TEST(AtlasPackScale, SingleChartFillsTheAtlas) {
-  // Usable: 1024 − 2 × ceil(2 / 2) = 1022 texels; a conservative raster of a side of s texels takes s + 1 of them.
+  // Usable: 1024 − 2 × ceil(2 / 2) = 1022 texels; a conservative raster of a side of s texels takes s + 1 of them,
+  // so 1021 texels per unit fit; the scale search stops within 0.5 % of the largest that fits.
+  const double best = 1021 / 1.005;
   const auto square = fanChart({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
-  EXPECT_GE(packOrFail({square}, PackOptions{}).texelsPerUnit, 1019.0);
+  EXPECT_GE(packOrFail({square}, PackOptions{}).texelsPerUnit, best);
   const double c = std::cos(0.5), s = std::sin(0.5);  // the same square turned by 0.5 radian
   const auto turned = fanChart({{0, 0}, {c, s}, {c - s, s + c}, {-s, c}});
-  EXPECT_GE(packOrFail({turned}, PackOptions{}).texelsPerUnit, 1019.0);
+  EXPECT_GE(packOrFail({turned}, PackOptions{}).texelsPerUnit, best);
   const auto long_rectangle = fanChart({{0, 0}, {2, 0}, {2, 1}, {0, 1}});
   const Packing packing = packOrFail({long_rectangle}, PackOptions{});
-  EXPECT_GE(packing.texelsPerUnit, 509.0);
+  EXPECT_GE(packing.texelsPerUnit, best / 2);
   EXPECT_LE(packing.texelsPerUnit, 511.0);
   EXPECT_NEAR(packing.utilization, 2 * packing.texelsPerUnit * packing.texelsPerUnit / (1024.0 * 1024.0), 1e-12);
 }
