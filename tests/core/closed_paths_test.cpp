@@ -16,6 +16,7 @@ namespace straightest {
 namespace {
 
 using testing::kPi;
+using testing::polylineLength;
 
 /// The surface point where the ray from the origin along dir leaves the mesh (the face it crosses,
 /// with barycentric coordinates): on an icosphere, the mesh point in the direction dir.
@@ -40,12 +41,6 @@ SurfacePoint pointToward(const TriMesh& mesh, const Vec3& dir) {
 /// dir rotated by angle about the unit axis (Rodrigues).
 Vec3 rotate(const Vec3& dir, const Vec3& axis, double angle) {
   return dir * std::cos(angle) + cross(axis, dir) * std::sin(angle) + axis * (dot(axis, dir) * (1 - std::cos(angle)));
-}
-
-double polylineLength(const std::vector<Vec3>& p) {
-  double sum = 0;
-  for (size_t i = 1; i < p.size(); ++i) sum += norm(p[i] - p[i - 1]);
-  return sum;
 }
 
 double axialRadius(const Vec3& p) { return std::sqrt(p.x * p.x + p.y * p.y); }

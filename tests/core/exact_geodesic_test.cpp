@@ -19,17 +19,12 @@ namespace straightest {
 namespace {
 
 using testing::GridPattern;
+using testing::polylineLength;
 
 ExactGeodesics field(const TriMesh& mesh, const SurfacePoint& source) {
   auto f = exactGeodesics(mesh, source);
   EXPECT_TRUE(f.ok()) << (f.ok() ? "" : f.error().message);
   return std::move(f).value();
-}
-
-double polylineLength(const std::vector<Vec3>& p) {
-  double l = 0;
-  for (size_t i = 1; i < p.size(); ++i) l += norm(p[i] - p[i - 1]);
-  return l;
 }
 
 TEST(ExactGeodesic, PlaneIsEuclideanFromAVertexAnEdgeAndAFacePoint) {

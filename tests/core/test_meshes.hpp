@@ -104,6 +104,13 @@ inline TriMesh lShape(int m) {
 /// An icosphere of radius 1 (subdivisions: 0 → 12 vertices, 3 → 642).
 inline TriMesh icosphere(int subdivisions) { return makeIcosphere(1.0, subdivisions); }
 
+/// The length of a polyline through `points`.
+inline double polylineLength(const std::vector<Vec3>& points) {
+  double length = 0;
+  for (size_t i = 1; i < points.size(); ++i) length += norm(points[i] - points[i - 1]);
+  return length;
+}
+
 /// The boundary surface of a set of unit voxels (cells given by their lowest corner): every voxel side
 /// with no voxel behind it is a square split into two triangles, facing out; lattice points are shared.
 /// The voxels must not touch only along an edge or at a corner (that surface would not be manifold).

@@ -21,7 +21,6 @@ const char* shootStatusName(ShootStatus s) { return nameOf(kShootStatusNames, s)
 namespace {
 
 using shooting::invalid;
-using shooting::kInf;
 using shooting::projected;
 using shooting::Walk;
 
@@ -94,8 +93,8 @@ Expected<GeodesicShot> shootToward(const TriMesh& mesh, const FlatFace* table, c
     if (!tangent) return invalid("the destination is the source, or straight along the base normal from it");
     StraightestPathTracer tracer(mesh, s.value(), TraceOptions{false});
     const StraightestPath& path = tracer.trace(d.value());
-    const double straightest = path.status == TraceStatus::Reached ? path.length : kInf;
-    if (!length && straightest == kInf)
+    const double straightest = path.status == TraceStatus::Reached ? path.length : shooting::kInf;
+    if (!length && straightest == shooting::kInf)
       return invalid(std::string("the cutting plane does not reach the destination (") + traceStatusName(path.status) +
                      "): give the length to shoot");
     GeodesicShot shot;
@@ -103,7 +102,7 @@ Expected<GeodesicShot> shootToward(const TriMesh& mesh, const FlatFace* table, c
     shot.normal = base.normal;
     shot.requestedLength = length ? *length : straightest;
     shot.target = target;
-    if (straightest < kInf) shot.straightestDistance = straightest;
+    if (straightest < shooting::kInf) shot.straightestDistance = straightest;
     auto result = shoot(mesh, table, std::move(shot), *tangent, base.normal, options, progress);
     return result;  // the walk measured missDistance as it went
   });
