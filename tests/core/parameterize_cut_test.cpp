@@ -26,7 +26,8 @@ using Edge = std::pair<int32_t, int32_t>;
 Edge undirected(int32_t a, int32_t b) { return {std::min(a, b), std::max(a, b)}; }
 
 /// parameterize with the free boundary's refinement capped at 50 iterations (failures reported, not thrown).
-Parameterization cappedParam(const TriMesh& mesh, std::optional<BoundaryKind> b, WeightKind w = WeightKind::ShapePreserving) {
+Parameterization cappedParam(const TriMesh& mesh, std::optional<BoundaryKind> b,
+                             WeightKind w = WeightKind::ShapePreserving) {
   ParamOptions o;
   o.boundary = b;
   o.weights = w;
