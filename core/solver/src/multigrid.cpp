@@ -20,7 +20,10 @@
 
 namespace straightest {
 
-namespace {
+// Not in an anonymous namespace: a level of the (header-declared) hierarchy holds one, and a member of an
+// internal-linkage type would make the hierarchy's type differ between translation units (GCC's
+// -Wsubobject-linkage, which a unity build turns on for this file).
+namespace multigrid_detail {
 
 /// The order of a level's Gauss–Seidel sweeps, fixed at setup from the matrix alone. The rows are cut
 /// into blocks (detail::rowPieces: fixed by the row count); a block's inner rows have every column
@@ -52,7 +55,10 @@ SweepOrder sweepOrder(const CsrMatrix& A) {
   return order;
 }
 
-}  // namespace
+}  // namespace multigrid_detail
+
+using multigrid_detail::SweepOrder;
+using multigrid_detail::sweepOrder;
 
 struct AggregationMultigrid::Hierarchy {
   struct Level {
