@@ -238,6 +238,18 @@ TEST(AtlasQuality, GapsAndPaddingAtKnownDistances) {
   EXPECT_NEAR(atlas.measure({2048, 1024, 0}).minGapTexels, std::sqrt(52.0), 1e-9);
 }
 
+TEST(AtlasQuality, PaddingIsJudgedWithinTheGridsRounding) {
+  // A gap of 5 texels less a millionth (under the 2^-24 grid's rounding at 1024: 8.6e-5 texels) is the padding;
+  // a hundredth of a texel less is not.
+  const double t = 1.0 / 1024;
+  for (const auto& [gap, violations] : {std::pair{5 - 1e-6, 0}, std::pair{5 - 1e-2, 1}}) {
+    FlatAtlas atlas;
+    atlas.addRectangle(128 * t, 128 * t, 384 * t, 384 * t);
+    atlas.addRectangle((384 + gap) * t, 128 * t, 600 * t, 384 * t);
+    EXPECT_EQ(atlas.measure({1024, 1024, 5}).paddingViolations, violations) << gap;
+  }
+}
+
 TEST(AtlasQuality, FarApartChartsStillHaveTheirGap) {
   FlatAtlas atlas;
   atlas.addRectangle(0.01, 0.01, 0.02, 0.02);

@@ -73,10 +73,13 @@ void measureOverlapsAndGaps(const TriMesh& mesh, const UvCharts& charts, const W
                std::count(near.selfCrossing.begin(), near.selfCrossing.end(), uint8_t{1});
   q.overlappingFaces = firstFaces(charts, overlapping, near.selfCrossing);
   for (uint64_t key : overlapping) near.closer[key] = 0;
+  // Distances are measured between snapped points, each up to half a grid step (2^-25 of the uv square) per
+  // coordinate from the uv given: a gap within that of the padding cannot be told from it.
+  const double snapSlack = std::sqrt(2.0) / kGridUnitsPerUv * std::max(options.width, options.height);
   double gap = std::numeric_limits<double>::infinity();
   for (const auto& [key, d] : near.closer) {
     gap = std::min(gap, d);
-    q.paddingViolations += d < options.padding;
+    q.paddingViolations += d < options.padding - snapSlack;
   }
   q.minGapTexels = gap < radius || charts.charts < 2 ? gap : widerMinGap(segments, charts.charts, radius);
 }

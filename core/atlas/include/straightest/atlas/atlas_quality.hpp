@@ -43,7 +43,8 @@ struct AtlasQuality {
   std::vector<int32_t> overlappingFaces;  // the first face of each chart counted in overlaps, ascending
   double minGapTexels = std::numeric_limits<double>::infinity();  // smallest distance between two charts
                                                                   // in texels; 0 if any touch or overlap
-  int64_t paddingViolations = 0;  // chart pairs closer than options.padding texels (overlapping pairs too)
+  int64_t paddingViolations = 0;  // chart pairs closer than options.padding texels (overlapping pairs too), less
+                                  // the snapping's rounding (√2 · 2^-24 of the atlas side)
   double utilization = 0;         // Σ |uv triangle area| in [0,1]² units (overlaps count twice)
   int64_t outside = 0;            // finite corners outside [0,1]²
   int64_t nonFinite = 0;          // NaN/inf uv corners (their faces join no chart edge and are not measured)
