@@ -1,18 +1,11 @@
 // The package where the bundler emits no assets (esbuild, Rollup): the .wasm copied next to the bundle
 // and named by wasmUrl (a URL object).
 import { createStraightest } from 'straightest';
-import { report } from './report.js';
+import { capResult, report } from './report.js';
 
 async function run() {
   const st = await createStraightest({ wasmUrl: new URL('./straightest-core.wasm', import.meta.url) });
-  const mesh = st.sample('cap');
-  const result = {
-    threads: st.threads,
-    threadsUnavailable: st.threadsUnavailable,
-    bijective: mesh.parameterize().bijective,
-  };
-  mesh.delete();
-  return result;
+  return capResult(st);
 }
 
 report(run());

@@ -9,3 +9,15 @@ export function report(promise) {
     },
   );
 }
+
+/** Which module runs (threads, and why not more) and whether the cap sample parameterizes bijectively. */
+export function capResult(st) {
+  const mesh = st.sample('cap');
+  const result = {
+    threads: st.threads,
+    threadsUnavailable: st.threadsUnavailable,
+    bijective: mesh.parameterize().bijective,
+  };
+  mesh.delete();
+  return result;
+}

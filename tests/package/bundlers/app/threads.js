@@ -4,18 +4,11 @@
 // threads; with the threaded module's files broken, it falls back to one thread and says why.
 import { createStraightest } from 'straightest';
 import { createStraightestWorker } from 'straightest/worker';
-import { report } from './report.js';
+import { capResult, report } from './report.js';
 
 async function onMainThread() {
   const st = await createStraightest();
-  const mesh = st.sample('cap');
-  const result = {
-    threads: st.threads,
-    threadsUnavailable: st.threadsUnavailable,
-    bijective: mesh.parameterize().bijective,
-  };
-  mesh.delete();
-  return result;
+  return capResult(st);
 }
 
 async function inWorker() {
