@@ -157,6 +157,52 @@ TEST(AtlasPipeline, ZeroAreaFacesGetFiniteCounterClockwiseUv) {
   EXPECT_EQ(atlas.quality.flipped, 0);
 }
 
+/// A flat strip of `quads` unit-wide squares whose bottom edges each carry a needle face `height` high: a
+/// vertex just above the edge's middle (offset along it a little differently in each square, so that the
+/// needles meet the uv grid in different ways).
+TriMesh needleStrip(int32_t quads, double height) {
+  std::vector<Vec3> p;
+  std::vector<Triangle> faces;
+  auto bottom = [](int32_t i) { return 3 * i; };
+  auto top = [](int32_t i) { return 3 * i + 1; };
+  for (int32_t i = 0; i <= quads; ++i) {
+    p.push_back({static_cast<double>(i), 0, 0});
+    p.push_back({static_cast<double>(i), 1, 0});
+    p.push_back({i + 0.5 + 0.0137 * i, height, 0});  // the needle's tip (unused after the last square)
+  }
+  for (int32_t i = 0; i < quads; ++i) {
+    const int32_t tip = 3 * i + 2;
+    faces.push_back({bottom(i), bottom(i + 1), tip});  // the needle
+    faces.push_back({bottom(i), tip, top(i)});
+    faces.push_back({tip, bottom(i + 1), top(i + 1)});
+    faces.push_back({tip, top(i + 1), top(i)});
+  }
+  return testing::buildOrFail(p, faces);
+}
+
+TEST(AtlasPipeline, NeedleFacesWindAsTheirFaceOnTheGridAndInFloat32) {
+  // Needles a thousand times thinner than the check's 2^-24 grid: placed as the chart is turned and moved, the
+  // grid (and a float32 reader) would see some of them turned over. expectSound counts windings from the
+  // double uv, the check on its grid; the test also reads each corner as float32.
+  const TriMesh strip = needleStrip(24, 1e-9);
+  for (const int32_t resolution : {256, 1000, 1024}) {
+    AtlasOptions options;
+    options.pack.width = options.pack.height = resolution;
+    const Atlas atlas = atlasOf(strip, options);
+    SCOPED_TRACE(resolution);
+    expectSound(strip, atlas, options.pack.padding);
+    EXPECT_EQ(atlas.quality.degenerate, 0);
+    int32_t turnedInFloat32 = 0;
+    for (int32_t f = 0; f < strip.numFaces(); ++f) {
+      Vec2 q[3];
+      for (int k = 0; k < 3; ++k)
+        q[k] = {static_cast<float>(atlas.cornerUv[3 * f + k].x), static_cast<float>(atlas.cornerUv[3 * f + k].y)};
+      turnedInFloat32 += cross(q[1] - q[0], q[2] - q[0]) < 0;
+    }
+    EXPECT_EQ(turnedInFloat32, 0);
+  }
+}
+
 TEST(AtlasPipeline, CancelInEveryStageReturnsCancelledAndLeavesNothingBroken) {
   const TriMesh torus = makeSample("torus").value();
   for (const std::string stage : {"segment", "flatten", "pack", "measure"}) {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "grid_windings.hpp"
+
 namespace straightest {
 namespace {
 
@@ -53,6 +55,7 @@ constexpr int kRepairRounds = 4;
 Atlas assemble(const TriMesh& mesh, const ChartSet& set, const Packing& packing, double padding) {
   Atlas atlas;
   atlas.cornerUv = placedCornerUv(mesh, set, packing);
+  atlas_detail::mendGridWindings(mesh, set.chartOfFace, atlas.cornerUv);
   atlas.chartOfFace = set.chartOfFace;
   atlas.charts = static_cast<int32_t>(set.charts.size());
   atlas.width = packing.width;

@@ -48,15 +48,6 @@ void addFaceStretch(const TriMesh& mesh, int32_t f, const Vec2* q, double double
 
 Vec2 inTexels(Vec2 uv, Vec2 texels) { return {uv.x * texels.x, uv.y * texels.y}; }
 
-/// The sign of the double-precision area of uv triangle abc when it exceeds the cross product's rounding
-/// error (a bound a little above Shewchuk's for the orientation determinant), else 0.
-int8_t certainSign(Vec2 a, Vec2 b, Vec2 c) {
-  const double left = (b.x - a.x) * (c.y - a.y), right = (b.y - a.y) * (c.x - a.x);
-  const double det = left - right;
-  const double bound = 1e-15 * (std::fabs(left) + std::fabs(right));
-  return det > bound ? 1 : det < -bound ? -1 : 0;
-}
-
 /// Each finite face's winding: exact on the snapped uv (+1, −1 or 0); where the snapped corners are collinear
 /// but the face has a certain orientation in double precision (a sliver thinner than the grid, e.g. a mesh's
 /// needle face at its true shape), that orientation: the face is mapped, only finer than the grid.

@@ -35,6 +35,15 @@ inline int orientation(const GridPoint& a, const GridPoint& b, const GridPoint& 
   return (det > 0) - (det < 0);
 }
 
+/// The sign of the double-precision area of uv triangle abc when it exceeds the cross product's rounding
+/// error (a bound a little above Shewchuk's for the orientation determinant), else 0.
+inline int8_t certainSign(Vec2 a, Vec2 b, Vec2 c) {
+  const double left = (b.x - a.x) * (c.y - a.y), right = (b.y - a.y) * (c.x - a.x);
+  const double det = left - right;
+  const double bound = 1e-15 * (std::fabs(left) + std::fabs(right));
+  return det > bound ? 1 : det < -bound ? -1 : 0;
+}
+
 /// Segments ab and cd cross at one point interior to both (touching or collinear overlap is no crossing).
 inline bool properlyCross(const GridPoint& a, const GridPoint& b, const GridPoint& c, const GridPoint& d) {
   const int o1 = orientation(a, b, c), o2 = orientation(a, b, d);
