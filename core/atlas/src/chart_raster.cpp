@@ -83,13 +83,16 @@ void findBlocks(ChartMask& mask) {
 /// The runs of set texels of every row, longest first.
 void collectRuns(ChartMask& mask) {
   const TexelMask& texels = mask.texels;
+  double rowSum = 0, count = 0;
   for (int32_t row = 0; row < texels.height(); ++row) {
     for (int32_t start = texels.nextWithBit(row, 0, true); start < texels.width();) {
       const int32_t end = texels.nextWithBit(row, start, false);
       mask.runs.push_back({row, start, end - start});
+      rowSum += (row + 0.5) * (end - start), count += end - start;
       start = texels.nextWithBit(row, end, true);
     }
   }
+  mask.centroidRow = count > 0 ? rowSum / count : 0;
   std::stable_sort(mask.runs.begin(), mask.runs.end(),
                    [](const MaskRun& a, const MaskRun& b) { return a.length > b.length; });
 }

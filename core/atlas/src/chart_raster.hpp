@@ -35,6 +35,7 @@ struct ChartMask {
   double angle = 0;
   Vec2 origin{};              // the texel-space point (rotated and scaled uv) at the mask's corner (0, 0)
   std::vector<MaskRun> runs;  // longest first: the runs most likely to find no room are tested first
+  double centroidRow = 0;     // the mean row of the set texels' centres, from row 0's bottom
   // Per height in kBlockRows, the block of that many consecutive rows with the longest run of columns set in
   // all of them (length 0 when the mask is lower): a place whose rows have no such common free run is no fit,
   // which rules out the thin holes between placed charts in one test.

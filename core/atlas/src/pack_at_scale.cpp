@@ -1,7 +1,10 @@
-// pack_at_scale.cpp — the greedy pass: every rotation's bottom-left first fit, the one whose top edge is lowest
-// kept (then the leftmost), so the atlas fills from the bottom in the tightest orientation.
+// pack_at_scale.cpp — the greedy pass: every rotation's bottom-left first fit, the one whose texels' centre
+// lies lowest kept (then the leftmost), so the atlas fills from the bottom with each chart's bulk as low as
+// it goes: a lowest top edge instead keeps a chart's short side up and leaves its overhangs over empty
+// texels, which later charts rarely fill.
 #include "pack_at_scale.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "atlas_occupancy.hpp"
@@ -13,12 +16,12 @@ namespace {
 struct Choice {
   const ChartMask* mask = nullptr;
   TexelPosition position;
-  int32_t top() const { return position.y + mask->texels.height(); }
+  double centre() const { return position.y + mask->centroidRow; }
 };
 
 bool betterThan(const Choice& a, const std::optional<Choice>& b) {
   if (!b) return true;
-  if (a.top() != b->top()) return a.top() < b->top();
+  if (a.centre() != b->centre()) return a.centre() < b->centre();
   return a.position.x < b->position.x;
 }
 
@@ -31,9 +34,9 @@ std::optional<Choice> bestPlacement(const std::vector<std::optional<ChartMask>>&
   for (size_t k = 0; k < masks.size(); k += step) {
     const auto& mask = masks[k];
     if (!mask) continue;
-    const int32_t h = mask->texels.height();
-    // Only positions whose top can beat (or tie) the best so far are worth scanning.
-    const int32_t highestRow = best ? best->top() - h : std::numeric_limits<int32_t>::max();
+    // Only positions whose centre can beat (or tie) the best so far are worth scanning.
+    const int32_t highestRow = best ? static_cast<int32_t>(std::floor(best->centre() - mask->centroidRow))
+                                    : std::numeric_limits<int32_t>::max();
     const auto position = occupancy.firstFit(*mask, highestRow);
     if (!position) continue;
     const Choice choice{&*mask, *position};
