@@ -9,6 +9,7 @@
 
 #include "chart_growing.hpp"
 #include "chart_mesh.hpp"
+#include "chart_smoothing.hpp"
 #include "face_graph.hpp"
 
 namespace straightest::atlas {
@@ -46,8 +47,10 @@ std::vector<std::vector<int32_t>> splitChart(const TriMesh& mesh, const std::vec
   ChartGrower grower(chart, centroids, cost);
   for (int32_t seed : farApartFaces(chart, centroids)) grower.addSeed(seed);
   grower.grow([](double) { return true; });
+  std::vector<int32_t> labels = grower.labels();
+  smoothChartBorders(chart, labels);
   parts.resize(2);
-  for (int32_t f = 0; f < chart.numFaces(); ++f) parts[grower.labels()[f]].push_back(faces[f]);
+  for (int32_t f = 0; f < chart.numFaces(); ++f) parts[labels[f]].push_back(faces[f]);
   return parts;
 }
 

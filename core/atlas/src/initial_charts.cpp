@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "chart_smoothing.hpp"
 #include "face_graph.hpp"
 
 namespace straightest::atlas {
@@ -137,7 +138,9 @@ Expected<std::vector<int32_t>> initialCharts(const TriMesh& mesh, const std::vec
     for (int32_t s : reseedLeftovers(mesh, centroids, grower.labels())) grower.addSeed(s);
     if (!grower.grow(keepGoing)) return cancelledError("atlas segmentation");
   }
-  return grower.labels();
+  std::vector<int32_t> labels = grower.labels();
+  smoothChartBorders(mesh, labels, cost.maxFaces);
+  return labels;
 }
 
 }  // namespace straightest::atlas
