@@ -392,6 +392,7 @@ const observable = {
   paramError: () => paramStatus().paramError,
   parameterizations: () => paramStatus().parameterizations,
   paramHint: () => paramStatus().paramHint,
+  layoutFilling: () => paramStatus().layoutFilling,
   defaultBoundary: () => paramStatus().defaultBoundary,
   compare: () => paramStatus().compare,
   compareHint: () => paramStatus().compareHint,
