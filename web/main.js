@@ -218,10 +218,13 @@ async function tracePaths() {
   try {
     const reply = await session.request('paths', { source: pathRequest.source, targets: currentTargets() });
     if (current.stale()) return;
+    const prepared = await paths.prepare(reply, () => current.stale()); // (many paths: in slices)
+    if (current.stale()) return;
     traceCount += 1;
     paths.show(
       reply,
       pathRequest.added.map(({ position }) => position),
+      prepared,
     );
     shownPaths = reply;
     const { plain, stride } = paths.shown;
@@ -392,6 +395,7 @@ const observable = {
   paramError: () => paramStatus().paramError,
   parameterizations: () => paramStatus().parameterizations,
   paramHint: () => paramStatus().paramHint,
+  layoutFilling: () => paramStatus().layoutFilling,
   defaultBoundary: () => paramStatus().defaultBoundary,
   compare: () => paramStatus().compare,
   compareHint: () => paramStatus().compareHint,

@@ -22,7 +22,7 @@ import { latest } from './latest.js';
 import { createCompareView } from './compare-view.js';
 import { createStretchView } from './stretch-view.js';
 import { WEIGHT_LABELS, formatCount, formatMetric } from './param-format.js';
-import { drawLayout } from './uv-layout.js';
+import { createLayoutPainter } from './layout-painter.js';
 import { clearStats, cutNote, showStats } from './param-stats.js';
 import { createParamTexture } from './param-texture.js';
 import { isCancelled } from './requests.js';
@@ -128,6 +128,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
   // ---------------------------------------------------------------- the 2D layout
 
   const uvCanvas = $('uv-canvas');
+  const painter = createLayoutPainter(uvCanvas); // a dense layout is filled in slices, then drawn
   let layoutMessage = 'No parameterization yet.';
 
   /** The layout on display as drawLayout takes it (title: for exports), or null. */
@@ -151,7 +152,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
 
   function redrawLayout() {
     const layout = currentLayout();
-    drawLayout(uvCanvas, layout && { ...layout, title: '' }, layoutMessage);
+    painter.draw(layout && { ...layout, title: '' }, layoutMessage);
   }
   new ResizeObserver(() => redrawLayout()).observe(uvCanvas);
 
@@ -448,7 +449,7 @@ export function createParamView({ session, view, surface, pathSource, onShown = 
 
   return {
     /** What is on display (a copy: see `status` above), with the Compare table's rows and hint. */
-    status: () => ({ ...status, compare: compare.rows, compareHint: compare.hint }),
+    status: () => ({ ...status, layoutFilling: painter.filling, compare: compare.rows, compareHint: compare.hint }),
     /** Sets the Boundary menu as the user's choice (a shared link): it no longer follows each mesh's default. */
     chooseBoundary(boundary) {
       fillBoundaryMenu();

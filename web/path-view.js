@@ -9,6 +9,8 @@ import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js
 import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
+import { plainPathGeometry } from './plain-lines.js';
+import { nextTask } from './slices.js';
 
 const PATH_COLOR = 0x1f4fb8; // reached paths
 const OTHER_ARC_COLOR = 0x7f9bd6; // closed surfaces: the other, longer way round the section (dimmed)
@@ -19,14 +21,10 @@ const SOURCE_COLOR = 0xffffff;
 const ADDED_COLOR = 0xc15cff; // destinations added with shift+click
 const BASE_PLANE_COLOR = 0x9cc2ff;
 
-// Above this many path segments the paths are plain 1-pixel LineSegments over the worker's points
-// (fat lines take a quad and 6 floats per segment) and hovering them is off (picking would walk
-// every segment and the surface on each pointer move).
+// Above this many path segments the paths are plain 1-pixel LineSegments over some of the worker's
+// points (plain-lines.js; fat lines take a quad and 6 floats per segment) and hovering them is off
+// (picking would walk every segment and the surface on each pointer move).
 const FAT_LINE_SEGMENTS = 100_000;
-// Plain lines draw at most about this many points: every k-th point of each path (and its last).
-// Beyond that the points are closer than a pixel, and uploading and drawing them would only cost
-// time (a 1M-vertex mesh's boundary paths have ~5M points).
-const PLAIN_LINE_POINTS = 250_000;
 
 // Thin, slightly transparent lines: up to a few hundred paths meet at the source.
 const reachedMaterial = new LineMaterial({
@@ -119,55 +117,12 @@ function segmentCount({ offsets }, paths) {
   return count;
 }
 
-/**
- * Many paths: the geometry of plain LineSegments, one group per [paths, material] entry of `groups`,
- * over one position attribute holding every `stride`-th point of each path and its last (see
- * PLAIN_LINE_POINTS), with an index pair per segment. No picking data. Returns { geometry, materials,
- * stride }.
- */
-function plainPathGeometry(reply, groups) {
-  const { points, offsets, count } = reply;
-  const stride = Math.max(1, Math.ceil(offsets[count] / PLAIN_LINE_POINTS));
-  // start[i]: the first kept point of path i; a path of n ≥ 2 points keeps ⌈(n−1)/stride⌉ + 1.
-  const start = new Uint32Array(count + 1);
-  for (let i = 0; i < count; i++) {
-    const n = offsets[i + 1] - offsets[i];
-    start[i + 1] = start[i] + (n < 2 ? n : Math.ceil((n - 1) / stride) + 1);
-  }
-  const kept = new Float32Array(3 * start[count]);
-  const copy = (from, to) => {
-    kept[3 * to] = points[3 * from];
-    kept[3 * to + 1] = points[3 * from + 1];
-    kept[3 * to + 2] = points[3 * from + 2];
-  };
-  for (let i = 0; i < count; i++) {
-    const [first, end] = [offsets[i], offsets[i + 1]];
-    let to = start[i];
-    for (let j = first; j < end; j += stride) copy(j, to++);
-    if (to < start[i + 1]) copy(end - 1, to); // the last point, when the stride skipped it
-  }
-  const geometry = new THREE.BufferGeometry();
-  geometry.setAttribute('position', new THREE.BufferAttribute(kept, 3));
-  const segmentsOf = (paths) => {
-    let segments = 0;
-    for (const i of paths) segments += Math.max(0, start[i + 1] - start[i] - 1);
-    return segments;
-  };
-  const index = new Uint32Array(2 * groups.reduce((total, [paths]) => total + segmentsOf(paths), 0));
-  const materials = [];
-  let s = 0;
-  for (const [paths, material] of groups) {
-    const first = s;
-    for (const i of paths) {
-      for (let j = start[i]; j + 1 < start[i + 1]; j++) {
-        index[s++] = j;
-        index[s++] = j + 1;
-      }
-    }
-    if (s > first) geometry.addGroup(first, s - first, materials.push(material) - 1);
-  }
-  geometry.setIndex(new THREE.BufferAttribute(index, 1));
-  return { geometry, materials, stride };
+/** The indices of the paths of `reply` that reached their destination, and of those that did not. */
+function byStatus(reply) {
+  const reached = [];
+  const failed = [];
+  reply.statuses.forEach((status, i) => (status === 'reached' ? reached : failed).push(i));
+  return { reached, failed };
 }
 
 /**
@@ -278,27 +233,44 @@ export function createPathView(view, { onClear = () => {} } = {}) {
     shown = null;
   }
 
-  /** Replaces the drawn paths, markers and base plane by a 'paths' reply; added: positions of the added destinations. */
-  function show(reply, added) {
+  /**
+   * What show() draws of a 'paths' reply that takes a while to build, built in slices: the plain
+   * lines' geometry (plain-lines.js) when there are too many segments for fat lines, else null.
+   * Rejects (stops building) once stale() is true.
+   */
+  async function prepare(reply, stale = () => false) {
+    if (segmentCount(reply, reply.statuses.keys()) <= FAT_LINE_SEGMENTS) return null;
+    const { reached, failed } = byStatus(reply);
+    const pause = async () => {
+      await nextTask();
+      if (stale()) throw new Error('a newer trace took over');
+    };
+    const groups = [
+      [reached, plainReachedMaterial],
+      [failed, plainFailedMaterial],
+    ];
+    return { plain: await plainPathGeometry(reply, groups, pause) };
+  }
+
+  /**
+   * Replaces the drawn paths, markers and base plane by a 'paths' reply; added: positions of the
+   * added destinations; prepared: prepare(reply)'s result.
+   */
+  function show(reply, added, prepared) {
     clear();
     const scale = view.scale;
     const source = new THREE.Vector3(...reply.sourcePosition);
     const normal = new THREE.Vector3(...reply.normal).normalize();
-    const reached = [];
-    const failed = [];
-    reply.statuses.forEach((status, i) => (status === 'reached' ? reached : failed).push(i));
+    const { reached, failed } = byStatus(reply);
 
     failedMaterial.dashSize = otherArcMaterial.dashSize = 0.012 * scale;
     failedMaterial.gapSize = otherArcMaterial.gapSize = 0.008 * scale;
     let lines;
     let stride = 1;
     let upload = null; // the plain lines' buffers, filled a slice per frame (gpu-upload.js)
-    const plain = segmentCount(reply, reply.statuses.keys()) > FAT_LINE_SEGMENTS;
+    const built = prepared?.plain ?? null;
+    const plain = built !== null;
     if (plain) {
-      const built = plainPathGeometry(reply, [
-        [reached, plainReachedMaterial],
-        [failed, plainFailedMaterial],
-      ]);
       stride = built.stride;
       upload = view.gpu.upload(built.geometry);
       const object = new THREE.LineSegments(upload.geometry, built.materials);
@@ -407,6 +379,7 @@ export function createPathView(view, { onClear = () => {} } = {}) {
   }
 
   return {
+    prepare,
     show,
     clear,
     highlight,

@@ -70,6 +70,7 @@
 import { createStraightestWorker } from 'straightest/worker';
 import { meshFromBufferGeometry } from 'straightest/three';
 import { geometryFromFile, threeFormatOf } from './mesh-files.js';
+import { inSlices, nextTask } from './slices.js';
 
 export function isCancelled(err) {
   return err?.category === 'cancelled';
@@ -154,6 +155,17 @@ class StageProgress {
   }
 }
 
+/**
+ * `array` as a Float32Array, converted in slices (slices.js): a large mesh's positions take longer
+ * than a task on the page's main thread should. Between slices, step() stops a cancelled request.
+ */
+async function float32(array, step) {
+  const converted = new Float32Array(array.length);
+  const convert = (from, to) => converted.set(array.subarray(from, to), from);
+  await inSlices(array.length, convert, { pause: () => step(nextTask) });
+  return converted;
+}
+
 /** observer (optional): begin(type, payload) → { update(progress), end() } or null (the progress panel). */
 export function createRequests({ observer = null } = {}) {
   let worker = null; // the StraightestWorker, once started
@@ -228,7 +240,7 @@ export function createRequests({ observer = null } = {}) {
         type: 'mesh',
         mesh: made,
         label,
-        positions: new Float32Array(positions),
+        positions: await float32(positions, step), // (WebGL draws no doubles)
         indices,
         normals,
         info: meshInfo,

@@ -3,7 +3,8 @@
 // page computes no uv or stretch itself (the colour scales are colormap.js).
 
 import * as THREE from 'three';
-import { BOUNDARY_COLORS, STRETCH_INFINITE, stretchIndex, stretchRgb, stretchTable } from './colormap.js';
+import { BOUNDARY_COLORS, STRETCH_INFINITE, stretchRgb } from './colormap.js';
+import { drawRaster, rasterFrame, rasterImage, sameFrame } from './uv-raster.js';
 
 /** The seam of a cut mesh, in the layout and on the surface (param-view.js). */
 export const SEAM_COLOR = '#ff4fd8';
@@ -51,8 +52,8 @@ export function checkerboardCanvas(size = 1024, cells = 16) {
 export const MARGIN = 12; // CSS pixels around the unit square
 const LEGEND_HEIGHT = 58; // CSS pixels below it on screen: the boundary legend, a caption and a key
 export const LINE_HEIGHT = 15; // CSS pixels per legend line of an export (wrapped, never cut)
-// Above this many faces the triangles are filled pixel by pixel into the canvas' image instead of
-// stroked one by one: at that density the edges would be a solid fill anyway, and stroking millions
+// Above this many faces the triangles are filled pixel by pixel (uv-raster.js) instead of stroked
+// one by one: at that density the edges would be a solid fill anyway, and stroking millions
 // of sub-pixel triangles would block the page for seconds.
 export const RASTER_FACES = 50_000;
 
@@ -100,21 +101,55 @@ export function layoutKey(faces) {
 }
 
 /**
- * The canvas' backing store: its CSS size (at least 2× for a crisp picture) on screen, or an export's
- * `size` ({ width, height, scale } in CSS pixels and device pixels per CSS pixel).
+ * The canvas' CSS size and its device pixels per CSS pixel: its CSS size on screen (at least 2× for
+ * a crisp picture), or an export's `size` ({ width, height, scale } in CSS pixels and device pixels
+ * per CSS pixel).
  */
-function fitCanvas(canvas, size) {
+function canvasSize(canvas, size) {
   const width = size?.width ?? (canvas.clientWidth || 300);
   const height = size?.height ?? (canvas.clientHeight || Math.round(width + LEGEND_HEIGHT));
   const scale = size?.scale ?? Math.max(window.devicePixelRatio || 1, 2);
+  return { width, height, scale };
+}
+
+/** The canvas' backing store for canvasSize(), and its context scaled to CSS pixels. */
+function fitCanvas(canvas, size) {
+  const { width, height, scale } = canvasSize(canvas, size);
   const [w, h] = [Math.round(width * scale), Math.round(height * scale)];
   if (canvas.width !== w || canvas.height !== h) [canvas.width, canvas.height] = [w, h];
   // A CPU-backed canvas: its thousands of thin strokes draw faster in software than through a
   // (possibly software-emulated) GPU, and the PNG export and the tests read it back.
   const ctx = canvas.getContext('2d', { willReadFrequently: true });
   ctx.setTransform(scale, 0, 0, scale, 0, 0);
-  return { ctx, width, height };
+  return { ctx, width, height, scale };
 }
+
+/**
+ * The uv frame [0,1]² in CSS pixels (x0, y0, side), as large as fits with the aspect ratio kept. An
+ * export's frame takes the whole width (its height was made to fit the legend).
+ */
+function frameSquare(width, height, exported) {
+  const legend = exported ? height - width : LEGEND_HEIGHT;
+  const side = Math.max(10, Math.min(width - 2 * MARGIN, height - legend - 2 * MARGIN));
+  return { x0: (width - side) / 2, y0: MARGIN, side };
+}
+
+/** Whether `layout`'s triangles are filled pixel by pixel (uv-raster.js) rather than stroked. */
+export function isDense(layout) {
+  return layout.cornerUv.length / 6 > RASTER_FACES;
+}
+
+/**
+ * Where drawLayout(canvas, …, options) puts a dense layout's image and the colour it fills the
+ * triangles with: { frame (uv-raster.js's rasterFrame), fill }, to fill the image beforehand.
+ */
+export function layoutRaster(canvas, { size = null, theme = 'dark' } = {}) {
+  const { width, height, scale } = canvasSize(canvas, size);
+  const { x0, y0, side } = frameSquare(width, height, size !== null);
+  return { frame: rasterFrame(scale, x0, y0, side), fill: themeOf(theme).rasterFill };
+}
+
+const themeOf = (theme) => LAYOUT_THEMES[theme] ?? LAYOUT_THEMES.dark;
 
 /**
  * The legend's text lines at `width` (CSS pixels): the title and the caption, and the key (none with
@@ -157,23 +192,21 @@ export function layoutExportSize(layout, width) {
  * mesh was cut open, so the chosen polygon (the disk's boundary) is the seam: drawn in the seam's
  * colour and named so. With `layout` null, draws the empty frame and `message`.
  * options: size (an export: { width, height, scale }, see layoutExportSize; its legend lines wrap
- * instead of being cut) and theme (a LAYOUT_THEMES key).
+ * instead of being cut), theme (a LAYOUT_THEMES key) and raster ({ frame, image }: a dense layout's
+ * triangles filled beforehand, uv-raster.js, for layoutRaster()'s frame; filled here when missing or
+ * made for another frame).
  */
-export function drawLayout(canvas, layout, message = '', { size = null, theme = 'dark' } = {}) {
-  const colors = LAYOUT_THEMES[theme] ?? LAYOUT_THEMES.dark;
-  const { ctx, width, height } = fitCanvas(canvas, size);
+export function drawLayout(canvas, layout, message = '', { size = null, theme = 'dark', raster = null } = {}) {
+  const colors = themeOf(theme);
+  const { ctx, width, height, scale } = fitCanvas(canvas, size);
   ctx.clearRect(0, 0, width, height);
   if (colors.background) {
     ctx.fillStyle = colors.background;
     ctx.fillRect(0, 0, width, height);
   }
 
-  // The uv frame [0,1]², as large as fits with the aspect ratio kept; v points up. An export's frame
-  // takes the whole width (its height was made to fit the legend).
-  const legend = size ? height - width : LEGEND_HEIGHT;
-  const side = Math.max(10, Math.min(width - 2 * MARGIN, height - legend - 2 * MARGIN));
-  const x0 = (width - side) / 2;
-  const y0 = MARGIN;
+  // The uv frame [0,1]² (frameSquare); v points up.
+  const { x0, y0, side } = frameSquare(width, height, size !== null);
   const px = (u) => x0 + u * side;
   const py = (v) => y0 + (1 - v) * side;
 
@@ -205,8 +238,11 @@ export function drawLayout(canvas, layout, message = '', { size = null, theme = 
 
   const { cornerUv, overlays, boundary, seam } = layout;
   const faces = cornerUv.length / 6;
-  if (faces > RASTER_FACES) {
-    rasterize(ctx, layout, x0, y0, side, colors.rasterFill);
+  if (isDense(layout)) {
+    const frame = rasterFrame(scale, x0, y0, side);
+    const filled =
+      raster && sameFrame(raster.frame, frame) ? raster.image : rasterImage(layout, frame, colors.rasterFill);
+    drawRaster(ctx, filled, frame);
   } else {
     drawTriangles(ctx, layout, px, py, colors);
   }
@@ -274,74 +310,14 @@ function drawTriangles(ctx, { cornerUv, faceStretch, heat }, px, py, colors) {
 }
 
 /**
- * Many triangles: fills them into the frame's pixels (device pixels, read back and written once),
- * in their stretch colour when `heat`, else in the colour their dense edges would have. A pixel
- * belongs to the triangles that contain its center, so a tiling leaves no holes however small its
- * triangles are.
- */
-function rasterize(ctx, { cornerUv: uv, faceStretch, heat }, x0, y0, side, fill) {
-  const scale = ctx.getTransform().a; // device pixels per CSS pixel (fitCanvas)
-  const left = Math.floor(x0 * scale);
-  const top = Math.floor(y0 * scale);
-  const size = Math.ceil(side * scale) + 1;
-  const image = ctx.getImageData(left, top, size, size);
-  const { data, width, height } = image;
-  // u, v → pixel coordinates within the image (pixel centers at integer + 0.5).
-  const sx = side * scale;
-  const ox = x0 * scale - left;
-  const oy = y0 * scale - top;
-  const lut = heat ? stretchTable('srgb') : null;
-  const faces = uv.length / 6;
-  for (let f = 0; f < faces; f++) {
-    const a = 3 * f; // corners: uv per face corner
-    const b = 3 * f + 1;
-    const c = 3 * f + 2;
-    const ax = ox + uv[2 * a] * sx;
-    const ay = oy + (1 - uv[2 * a + 1]) * sx;
-    const bx = ox + uv[2 * b] * sx;
-    const by = oy + (1 - uv[2 * b + 1]) * sx;
-    const cx = ox + uv[2 * c] * sx;
-    const cy = oy + (1 - uv[2 * c + 1]) * sx;
-    const area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-    if (!(Math.abs(area) > 0)) continue; // degenerate in uv, or NaN (a face left out)
-    const sign = area > 0 ? 1 : -1;
-    const eps = -1e-7 * Math.abs(area);
-    const x1 = Math.max(0, Math.floor(Math.min(ax, bx, cx)));
-    const x2 = Math.min(width - 1, Math.ceil(Math.max(ax, bx, cx)));
-    const y1 = Math.max(0, Math.floor(Math.min(ay, by, cy)));
-    const y2 = Math.min(height - 1, Math.ceil(Math.max(ay, by, cy)));
-    let [r, g, bl] = fill;
-    if (lut) {
-      const k = 3 * stretchIndex(faceStretch[f]);
-      [r, g, bl] = [lut[k], lut[k + 1], lut[k + 2]];
-    }
-    for (let y = y1; y <= y2; y++) {
-      const py = y + 0.5;
-      for (let x = x1; x <= x2; x++) {
-        const px = x + 0.5;
-        // Edge functions, all ≥ 0 inside (for either orientation, by `sign`).
-        if (sign * ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) < eps) continue;
-        if (sign * ((cx - bx) * (py - by) - (cy - by) * (px - bx)) < eps) continue;
-        if (sign * ((ax - cx) * (py - cy) - (ay - cy) * (px - cx)) < eps) continue;
-        const p = 4 * (y * width + x);
-        data[p] = r;
-        data[p + 1] = g;
-        data[p + 2] = bl;
-        data[p + 3] = 255;
-      }
-    }
-  }
-  ctx.putImageData(image, left, top);
-}
-
-/**
  * A dense layout's triangles alone, filled into a transparent canvas of side × side CSS pixels at
  * `scale` (the SVG export embeds it: a million triangles would make an unreadable file).
  */
 export function rasterLayer(layout, side, scale, theme = 'dark') {
   const canvas = document.createElement('canvas');
   const { ctx } = fitCanvas(canvas, { width: side, height: side, scale });
-  rasterize(ctx, layout, 0, 0, side, (LAYOUT_THEMES[theme] ?? LAYOUT_THEMES.dark).rasterFill);
+  const frame = rasterFrame(scale, 0, 0, side);
+  drawRaster(ctx, rasterImage(layout, frame, themeOf(theme).rasterFill), frame);
   return canvas;
 }
 

@@ -743,6 +743,10 @@ describe('a 200k-vertex mesh in the worker', () => {
       assert(param.bijective && Number.isFinite(param.l2), `parameterization: ${JSON.stringify(param)}`);
       assert(await page.isHidden('#progress-panel'), 'the progress panel stays visible when idle');
       assert(await page.isHidden('#error-panel'), 'error panel is visible');
+      // Its layout, filled in slices (too many faces to stroke), is drawn once they are all in.
+      await page.waitForFunction(() => !window.__straightest.layoutFilling, null, { timeout: BIG_WAIT_TIMEOUT_MS });
+      const layout = await uvLayoutCoverage(page);
+      assert(layout.fraction > 0.1, `only ${(layout.fraction * 100).toFixed(1)}% of the uv canvas is drawn on`);
     },
   );
 
