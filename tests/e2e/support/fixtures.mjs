@@ -11,8 +11,8 @@ import http from 'node:http';
 import { after, before, test } from 'node:test';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../../scripts/serve.mjs';
+import { CHROMIUM_PATH } from '../../package/chromium.mjs';
 
-const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const CHROMIUM_ARGS = [
   '--no-sandbox',
   '--disable-background-networking',
@@ -80,7 +80,7 @@ export function useBrowser({ onExit = () => {} } = {}) {
       run.port = run.server.address().port;
       run.baseUrl = `http://127.0.0.1:${run.port}`;
       run.browser = await chromium.launch({
-        executablePath: CHROMIUM,
+        executablePath: CHROMIUM_PATH,
         headless: true,
         args: CHROMIUM_ARGS,
         timeout: 20_000,
