@@ -5,7 +5,7 @@
 # sample meshes, used by `npm run results`).
 set -euo pipefail
 
-packages=(cmake ninja-build g++ make clang libclang-rt-14-dev clang-format emscripten libeigen3-dev libfast-float-dev nlohmann-json3-dev googletest chromium nodejs "$@")
+packages=(cmake ninja-build g++ make clang libclang-rt-14-dev clang-format emscripten libeigen3-dev libfast-float-dev nlohmann-json3-dev googletest chromium chromium-headless-shell nodejs "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -97,6 +97,9 @@ describe('camera', () => {
     {},
     async ({ page }) => {
       await loadQuarterCylinder(page);
+      // The wheel goes to whatever is under the mouse: the progress panel covers the view while the new
+      // mesh's parameterization runs.
+      await expectReady(page, 'window.__straightest.param && !window.__straightest.progress.busy');
       const opening = await cameraWhen(page, (c) => c.upAxis === 'y');
       const { center, radius } = await boundingSphere(page);
       // Zoom far in with the mouse wheel: the sphere no longer fits.

@@ -45,15 +45,14 @@ describe('default per mesh and state in the URL', () => {
     },
   );
 
+  const viewQuery = '?sample=cap&source=v40&dest=v300-f20_0.2_0.3_0.5&boundary=circle&weights=uniform&targets=0&wire=1';
   pageTest(
     'a link restores the sample, source, destinations, boundary, weights and view options; changes go back into the URL',
     {
-      ready: idle,
+      query: viewQuery,
+      ready: `(${idle}) && window.__straightest.param.boundary === 'circle'`,
     },
     async ({ page }) => {
-      const query = '?sample=cap&source=v40&dest=v300-f20_0.2_0.3_0.5&boundary=circle&weights=uniform&targets=0&wire=1';
-      await page.goto(`${page.url().split('?')[0]}${query}`);
-      await expectReady(page, `(${idle}) && window.__straightest.param.boundary === 'circle'`);
       const { paths, param, lastInfo } = await hooks(page);
       assert((await page.inputValue('#sample-select')) === 'cap', 'not the cap sample');
       assert(lastInfo.vertices > 0 && paths.source?.vertex === 40, `source ${JSON.stringify(paths.source)}`);
@@ -63,7 +62,7 @@ describe('default per mesh and state in the URL', () => {
         (await page.isChecked('#wireframe-toggle')) && !(await page.isChecked('#boundary-toggle')),
         'view options',
       );
-      assert(new URL(page.url()).search === query, `the URL became ${new URL(page.url()).search}`);
+      assert(new URL(page.url()).search === viewQuery, `the URL became ${new URL(page.url()).search}`);
 
       // A click moves the source: the URL follows, and a reload shows the same.
       const box = await page.locator('#view-canvas').boundingBox();
@@ -85,16 +84,14 @@ describe('default per mesh and state in the URL', () => {
     },
   );
 
+  const fileQuery = '?file=icosphere.obj&source=v3&dest=v20&flat=1';
   pageTest(
     'a link to a file asks for it by name and restores its points once it is opened',
-    { ready: idle },
+    { query: fileQuery, ready: idle },
     async ({ page }) => {
-      const query = '?file=icosphere.obj&source=v3&dest=v20&flat=1';
-      await page.goto(`${page.url().split('?')[0]}${query}`);
-      await expectReady(page, idle);
       const wanted = await page.textContent('#file-wanted');
       assert((await page.isVisible('#file-wanted')) && wanted.includes('icosphere.obj'), `asks '${wanted}'`);
-      assert(new URL(page.url()).search === query, 'the link was overwritten before its file came');
+      assert(new URL(page.url()).search === fileQuery, 'the link was overwritten before its file came');
       assert(await page.isChecked('#flat-toggle'), 'the view option was not applied');
       await page.setInputFiles('#file-input', {
         name: 'icosphere.obj',
@@ -112,13 +109,12 @@ describe('default per mesh and state in the URL', () => {
     },
   );
 
+  const atlasQuery =
+    '?sample=torus&mode=atlas&atlasstretch=1.1&atlasfill=0.5&atlasres=512&atlaspad=4&atlasshow=checker&seams=0';
   pageTest(
     'a link restores the Atlas mode and its options; changing them and the mode goes back into the URL',
-    { timeout: BIG_TEST_TIMEOUT_MS },
+    { query: atlasQuery, timeout: BIG_TEST_TIMEOUT_MS },
     async ({ page }) => {
-      const query =
-        '?sample=torus&mode=atlas&atlasstretch=1.1&atlasfill=0.5&atlasres=512&atlaspad=4&atlasshow=checker&seams=0';
-      await page.goto(`${page.url().split('?')[0]}${query}`);
       const atlasShown = (more) =>
         page.waitForFunction(`window.__straightest.atlas && !window.__straightest.progress.busy && ${more}`, null, {
           timeout: BIG_WAIT_TIMEOUT_MS,
@@ -138,7 +134,7 @@ describe('default per mesh and state in the URL', () => {
       assert((await page.inputValue('#atlas-padding')) === '4', 'padding field');
       assert((await page.inputValue('#atlas-display')) === 'checker', 'show menu');
       assert(!(await page.isChecked('#atlas-seams-toggle')), 'seams toggle');
-      assert(new URL(page.url()).search === query, `the URL became ${new URL(page.url()).search}`);
+      assert(new URL(page.url()).search === atlasQuery, `the URL became ${new URL(page.url()).search}`);
 
       // A changed option makes the atlas again and goes into the URL; a reload keeps it.
       const atlases = (await hooks(page)).atlases;

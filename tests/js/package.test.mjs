@@ -16,6 +16,7 @@ import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
 import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { launchChromium } from '../package/chromium.mjs';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
 // The facts the consumers must find: the repository's own build, loaded directly.
@@ -194,13 +195,8 @@ test(
     });
     assert.deepEqual(warnings, [], 'Vite warned');
 
-    const { chromium } = await import('playwright-core');
     const servers = { vite: await serve(join(out, 'vite')), esbuild: await serve(join(out, 'esbuild')) };
-    const browser = await chromium.launch({
-      executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-      headless: true,
-      args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run'],
-    });
+    const browser = await launchChromium();
     try {
       const results = {};
       for (const page of ['vite/index.html', 'esbuild/esbuild-main.html', 'esbuild/inline-main.html']) {

@@ -11,8 +11,8 @@ import http from 'node:http';
 import { after, before, test } from 'node:test';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../../scripts/serve.mjs';
+import { CHROMIUM_PATH } from '../../package/chromium.mjs';
 
-const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const CHROMIUM_ARGS = [
   '--no-sandbox',
   '--disable-background-networking',
@@ -80,7 +80,7 @@ export function useBrowser({ onExit = () => {} } = {}) {
       run.port = run.server.address().port;
       run.baseUrl = `http://127.0.0.1:${run.port}`;
       run.browser = await chromium.launch({
-        executablePath: CHROMIUM,
+        executablePath: CHROMIUM_PATH,
         headless: true,
         args: CHROMIUM_ARGS,
         timeout: 20_000,
@@ -117,10 +117,11 @@ export function counted(name, { timeout = TEST_TIMEOUT_MS } = {}, fn) {
 }
 
 /**
- * Opens the page in a fresh context and records console errors and uncaught page errors.
- * setup(context), if given, runs before the page loads (e.g. to route requests).
+ * Opens the page (with `query`, e.g. '?sample=cap', as a link would) in a fresh context and records
+ * console errors and uncaught page errors. setup(context), if given, runs before the page loads (e.g.
+ * to route requests).
  */
-async function openPage(setup = null) {
+async function openPage(setup = null, query = '') {
   const context = await run.browser.newContext({ viewport: VIEWPORT });
   await setup?.(context);
   const page = await context.newPage();
@@ -131,18 +132,19 @@ async function openPage(setup = null) {
   });
   page.on('pageerror', (err) => problems.push(`page error: ${err.message}`));
   page.on('requestfailed', (req) => problems.push(`request failed: ${req.url()} (${req.failure()?.errorText})`));
-  await page.goto(`${run.baseUrl}/web/index.html`);
+  await page.goto(`${run.baseUrl}/web/index.html${query}`);
   return { page, context, problems };
 }
 
 /**
- * A test of the page: opens it (setup(context) first, if given), waits until it is ready with the
- * `ready` predicate true (page JavaScript over window.__straightest), runs fn({ page, loaded }) —
+ * A test of the page: opens it (setup(context) first, if given; at `query`, if given, so a test of a
+ * link opens the link instead of the default page and then the link), waits until it is ready with
+ * the `ready` predicate true (page JavaScript over window.__straightest), runs fn({ page, loaded }) —
  * loaded: what settled() returned — and then expects no console error, page error or failed request.
  */
-export function pageTest(name, { ready = 'true', setup = null, timeout = TEST_TIMEOUT_MS } = {}, fn) {
+export function pageTest(name, { query = '', ready = 'true', setup = null, timeout = TEST_TIMEOUT_MS } = {}, fn) {
   counted(name, { timeout }, async () => {
-    const { page, context, problems } = await openPage(setup);
+    const { page, context, problems } = await openPage(setup, query);
     try {
       const loaded = await expectReady(page, ready);
       await fn({ page, loaded });
