@@ -124,10 +124,10 @@ describe('layout', () => {
           }); // a slow network: the module comes late
           await route.continue();
         }),
+      open: false, // opened below, to look for the indicator from the start
     },
-    async ({ page }) => {
-      // (ready: 'true' waits for the state to leave 'loading': the indicator is checked on a reload.)
-      await page.reload({ waitUntil: 'commit' });
+    async ({ page, url }) => {
+      await page.goto(url, { waitUntil: 'commit' });
       await page.waitForSelector('#view-loading', { state: 'visible', timeout: 2000 });
       const box = await page.locator('#view-loading').boundingBox();
       const view = await page.locator('#viewport').boundingBox();

@@ -121,7 +121,7 @@ export function counted(name, { timeout = TEST_TIMEOUT_MS } = {}, fn) {
  * console errors and uncaught page errors. setup(context), if given, runs before the page loads (e.g.
  * to route requests).
  */
-async function openPage(setup = null, query = '') {
+async function openPage(setup = null, query = '', open = true) {
   const context = await run.browser.newContext({ viewport: VIEWPORT });
   await setup?.(context);
   const page = await context.newPage();
@@ -132,22 +132,29 @@ async function openPage(setup = null, query = '') {
   });
   page.on('pageerror', (err) => problems.push(`page error: ${err.message}`));
   page.on('requestfailed', (req) => problems.push(`request failed: ${req.url()} (${req.failure()?.errorText})`));
-  await page.goto(`${run.baseUrl}/web/index.html${query}`);
-  return { page, context, problems };
+  const url = `${run.baseUrl}/web/index.html${query}`;
+  if (open) await page.goto(url);
+  return { page, context, problems, url };
 }
 
 /**
  * A test of the page: opens it (setup(context) first, if given; at `query`, if given, so a test of a
  * link opens the link instead of the default page and then the link), waits until it is ready with
- * the `ready` predicate true (page JavaScript over window.__straightest), runs fn({ page, loaded }) —
- * loaded: what settled() returned — and then expects no console error, page error or failed request.
+ * the `ready` predicate true (page JavaScript over window.__straightest), runs fn({ page, loaded, url })
+ * — loaded: what settled() returned, url: the page's — and then expects no console error, page error
+ * or failed request. With `open: false` the page is left blank (loaded null) for fn to open at `url`
+ * itself, e.g. to watch it load.
  */
-export function pageTest(name, { query = '', ready = 'true', setup = null, timeout = TEST_TIMEOUT_MS } = {}, fn) {
+export function pageTest(
+  name,
+  { query = '', ready = 'true', setup = null, open = true, timeout = TEST_TIMEOUT_MS } = {},
+  fn,
+) {
   counted(name, { timeout }, async () => {
-    const { page, context, problems } = await openPage(setup, query);
+    const { page, context, problems, url } = await openPage(setup, query, open);
     try {
-      const loaded = await expectReady(page, ready);
-      await fn({ page, loaded });
+      const loaded = open ? await expectReady(page, ready) : null;
+      await fn({ page, loaded, url });
       expectNoProblems(problems);
     } finally {
       await context.close();
