@@ -12,6 +12,11 @@
 #   js       — node --test on the npm API (tests/js), including installing the packed package
 #   browser  — the page in headless Chromium (tests/e2e)
 # Exits non-zero if any layer fails. Set LAYERS="native wasm" to run a subset.
+#
+# The js layer keeps about one of two cores busy (node --test runs its files one at a time): when the
+# sanitize or tsan layer comes after the module is built, js runs in the background beside them (their
+# builds and tests have no time limits) and is waited for before fuzz and browser, whose seconds of
+# fuzzing and page timeouts want the machine to themselves. Its output is printed when it ends.
 source "$(dirname "$0")/common.sh"
 LAYERS="${LAYERS:-lint native wasm sanitize tsan fuzz js browser}"
 LOG_DIR="$ROOT/build/test-logs"
@@ -51,8 +56,59 @@ run_layer() {  # name command... ; output to console and log; sets LAST_RC
   set -e
 }
 
+js_counts() {  # -> "pass fail" from node --test's totals in js.log (LAST_RC: its exit status)
+  local p f
+  p=$(grep -E '^# pass [0-9]+' "$LOG_DIR/js.log" | tail -1 | awk '{print $3}')
+  f=$(grep -E '^# fail [0-9]+' "$LOG_DIR/js.log" | tail -1 | awk '{print $3}')
+  p=${p:-0}; f=${f:-1}
+  if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
+  echo "$p $f"
+}
+
+js_pid=""
+start_js_in_background() {
+  echo
+  echo "=== js (in the background; its output comes when it ends) ==="
+  js_start=$(now_ms)
+  rm -f "$LOG_DIR/js.end"
+  # Its exit status and the seconds it took (not until it is waited for), for the summary.
+  { set +e; node --test tests/js/ >"$LOG_DIR/js.log" 2>&1; echo "$? $(elapsed "$js_start")" >"$LOG_DIR/js.end"; } &
+  js_pid=$!
+}
+
+finish_js() {
+  [ -n "$js_pid" ] || return 0
+  wait "$js_pid" || true
+  js_pid=""
+  local seconds
+  read -r LAST_RC seconds <"$LOG_DIR/js.end" || { LAST_RC=1; seconds=$(elapsed "$js_start"); }
+  echo
+  echo "=== js (ran in the background) ==="
+  cat "$LOG_DIR/js.log"
+  read -r p f < <(js_counts)
+  record js "$p" "$f" "$seconds"
+}
+
+# Whether js runs in the background: a sanitize or tsan layer comes after wasm and before js.
+js_background=false
+seen_wasm=false
+beside=false
+for layer in $LAYERS; do
+  case "$layer" in
+    wasm) seen_wasm=true ;;
+    sanitize|tsan) if $seen_wasm; then beside=true; fi ;;
+    js) if $beside; then js_background=true; fi ;;
+  esac
+done
+
+wasm_done=false
 for layer in $LAYERS; do
   t=$(now_ms)
+  case "$layer" in
+    sanitize|tsan) if $js_background && $wasm_done && [ -z "${js_start:-}" ]; then start_js_in_background; fi ;;
+    fuzz|browser) finish_js ;;
+  esac
+  if [ "$layer" = wasm ]; then wasm_done=true; fi
   case "$layer" in
     native|wasm|sanitize|tsan)
       run_layer "$layer-build" bash scripts/build.sh "$layer"
@@ -64,11 +120,9 @@ for layer in $LAYERS; do
       record "$layer" "$p" "$f" "$(elapsed "$t")"
       ;;
     js)
+      if $js_background; then finish_js; continue; fi
       run_layer js node --test tests/js/
-      p=$(grep -E '^# pass [0-9]+' "$LOG_DIR/js.log" | tail -1 | awk '{print $3}')
-      f=$(grep -E '^# fail [0-9]+' "$LOG_DIR/js.log" | tail -1 | awk '{print $3}')
-      p=${p:-0}; f=${f:-1}
-      if [ "$LAST_RC" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
+      read -r p f < <(js_counts)
       record js "$p" "$f" "$(elapsed "$t")"
       ;;
     lint|fuzz|browser)
@@ -88,6 +142,8 @@ for layer in $LAYERS; do
     *) echo "unknown layer '$layer'" >&2; exit 2 ;;
   esac
 done
+
+finish_js
 
 echo
 echo "=== summary ==="
