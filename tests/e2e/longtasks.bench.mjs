@@ -42,13 +42,31 @@ try {
       null,
       { timeout, polling: 200 },
     );
+  // Until the page has drawn no frame and had no long task for `ms`: what a phase leaves behind (the
+  // uploads, the first frames; the opening sample's textured frame, which compiles a shader and
+  // uploads the checkerboard, can come after its parameterization is shown) is counted in that phase,
+  // not the next. Gives up quietly after a while (a page that keeps drawing).
+  const settle = (ms = 1500) =>
+    page
+      .waitForFunction(
+        (quietMs) => {
+          const now = performance.now();
+          const renders = window.__straightest.renders;
+          if (window.__settle?.renders !== renders) window.__settle = { renders, since: now };
+          const last = window.__longTasks.at(-1);
+          return now - Math.max(window.__settle.since, last ? last.start + last.duration : 0) > quietMs;
+        },
+        ms,
+        { polling: 100, timeout: 30_000 },
+      )
+      .catch(() => {});
   await idle('window.__straightest.param');
   const phases = [];
   const phase = async (name, run) => {
     const from = await page.evaluate(() => performance.now());
     const started = Date.now();
     await run();
-    await page.waitForTimeout(1000); // what the last reply leaves behind (uploads, the first frames)
+    await settle();
     const tasks = await page.evaluate((t) => window.__longTasks.filter((e) => e.start >= t), from);
     phases.push({ name, seconds: (Date.now() - started) / 1000, tasks });
   };
@@ -61,7 +79,8 @@ try {
   await phase('parameterize (measured)', async () => {
     const before = await page.evaluate(() => window.__straightest.parameterizations);
     await page.click('#param-button');
-    await idle(`window.__straightest.parameterizations > ${before}`);
+    // (and its layout drawn: a dense one is filled in slices after the parameterization is shown)
+    await idle(`window.__straightest.parameterizations > ${before} && !window.__straightest.layoutFilling`);
   });
   for (const { name, seconds, tasks } of phases) {
     const durations = tasks.map((t) => t.duration).sort((a, b) => b - a);
