@@ -62,6 +62,65 @@ function requestTitle(type, payload) {
   }
 }
 
+/**
+ * One request's group in the progress list: its title and a row per stage, added as the stages are
+ * announced; markActive() shows which stage runs.
+ */
+function progressGroup(list, title) {
+  const group = document.createElement('li');
+  group.className = 'progress-group running';
+  const heading = document.createElement('span');
+  heading.className = 'progress-title';
+  heading.textContent = title;
+  const stages = document.createElement('ol');
+  group.append(heading, stages);
+  list.append(group);
+  const rows = new Map(); // stage -> { item, bar, pct, fraction, started }
+
+  function row(stage) {
+    let entry = rows.get(stage);
+    if (entry) return entry;
+    const item = document.createElement('li');
+    item.className = 'stage pending';
+    item.dataset.stage = stage;
+    const name = document.createElement('span');
+    name.className = 'stage-name';
+    name.textContent = STAGE_LABELS[stage] ?? stage;
+    const bar = document.createElement('progress');
+    bar.max = 1;
+    bar.value = 0;
+    const pct = document.createElement('span');
+    pct.className = 'stage-pct';
+    pct.textContent = '0%';
+    item.append(name, bar, pct);
+    stages.append(item);
+    entry = { item, bar, pct, fraction: 0, started: false };
+    rows.set(stage, entry);
+    return entry;
+  }
+
+  /** The running stage is the first started one not finished; it moves while at 0%. */
+  function markActive() {
+    let found = false;
+    for (const entry of rows.values()) {
+      const running = !found && entry.started && entry.fraction < 1;
+      if (running) found = true;
+      entry.item.className = `stage ${entry.fraction >= 1 ? 'done' : running ? 'active' : entry.started ? 'started' : 'pending'}`;
+      if (running && entry.fraction === 0)
+        entry.bar.removeAttribute('value'); // indeterminate
+      else entry.bar.value = entry.fraction;
+    }
+  }
+
+  /** The request ended: what did not finish shows as stopped. */
+  function stop() {
+    group.classList.remove('running');
+    for (const entry of rows.values()) if (entry.fraction < 1) entry.item.className = 'stage stopped';
+  }
+
+  return { row, markActive, stop };
+}
+
 /** onCancel(): the Cancel button was pressed. */
 export function createProgressView({ onCancel }) {
   const panel = $('progress-panel');
@@ -99,76 +158,36 @@ export function createProgressView({ onCancel }) {
     progress.busy = false;
   }
 
+  /** The worker was idle: a new job, its panel shown if it lasts. */
+  function startJob() {
+    jobStart = performance.now();
+    list.replaceChildren();
+    progress.stages = {};
+    progress.times = {};
+    progress.jobs += 1;
+    showTimer = setTimeout(show, SHOW_DELAY_MS);
+  }
+
   /** A request starts: a new job if the worker was idle, else another group of the same one. */
   function begin(type, payload) {
     const title = requestTitle(type, payload);
     if (!title) return null;
     clearTimeout(hideTimer);
     hideTimer = 0;
-    if (!jobStart) {
-      jobStart = performance.now();
-      list.replaceChildren();
-      progress.stages = {};
-      progress.times = {};
-      progress.jobs += 1;
-      showTimer = setTimeout(show, SHOW_DELAY_MS);
-    }
+    if (!jobStart) startJob();
     progress.busy = true;
     active += 1;
     cancelButton.disabled = false;
 
-    const group = document.createElement('li');
-    group.className = 'progress-group running';
-    const heading = document.createElement('span');
-    heading.className = 'progress-title';
-    heading.textContent = title;
-    const stages = document.createElement('ol');
-    group.append(heading, stages);
-    list.append(group);
-    const rows = new Map(); // stage -> { row, bar, pct, fraction }
-
-    function row(stage) {
-      let entry = rows.get(stage);
-      if (entry) return entry;
-      const item = document.createElement('li');
-      item.className = 'stage pending';
-      item.dataset.stage = stage;
-      const name = document.createElement('span');
-      name.className = 'stage-name';
-      name.textContent = STAGE_LABELS[stage] ?? stage;
-      const bar = document.createElement('progress');
-      bar.max = 1;
-      bar.value = 0;
-      const pct = document.createElement('span');
-      pct.className = 'stage-pct';
-      pct.textContent = '0%';
-      item.append(name, bar, pct);
-      stages.append(item);
-      entry = { item, bar, pct, fraction: 0, started: false };
-      rows.set(stage, entry);
-      return entry;
-    }
-
-    /** The running stage is the first started one not finished; it moves while at 0%. */
-    function markActive() {
-      let found = false;
-      for (const entry of rows.values()) {
-        const running = !found && entry.started && entry.fraction < 1;
-        if (running) found = true;
-        entry.item.className = `stage ${entry.fraction >= 1 ? 'done' : running ? 'active' : entry.started ? 'started' : 'pending'}`;
-        if (running && entry.fraction === 0)
-          entry.bar.removeAttribute('value'); // indeterminate
-        else entry.bar.value = entry.fraction;
-      }
-    }
+    const group = progressGroup(list, title);
 
     let ended = false;
     return {
       update({ stage, fraction, stages: planned }) {
         if (ended) return;
         progress.messages += 1;
-        for (const name of planned ?? []) row(name);
-        const entry = row(stage);
+        for (const name of planned ?? []) group.row(name);
+        const entry = group.row(stage);
         entry.started = true;
         entry.fraction = Math.max(entry.fraction, fraction);
         entry.pct.textContent = `${Math.floor(100 * entry.fraction)}%`;
@@ -177,13 +196,12 @@ export function createProgressView({ onCancel }) {
         const now = Math.round(performance.now() - jobStart);
         const times = (progress.times[key] ??= [now, null]);
         if (entry.fraction >= 1) times[1] ??= now;
-        markActive();
+        group.markActive();
       },
       end() {
         if (ended) return;
         ended = true;
-        group.classList.remove('running');
-        for (const entry of rows.values()) if (entry.fraction < 1) entry.item.className = 'stage stopped';
+        group.stop();
         active -= 1;
         if (active > 0) return;
         cancelButton.disabled = true; // the finished bars linger: nothing left to cancel
