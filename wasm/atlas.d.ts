@@ -25,7 +25,7 @@ export interface AtlasOptions {
    * does not fit throws 'too_large'.
    */
   texelsPerUnit?: number;
-  /** Turn charts (default true): each chart's minimum-area rotation and its right angles, 16 turns for a chart spanning a quarter of the atlas or more; never a mirror. */
+  /** Turn charts (default true): 16 turns of each chart from its minimum-area rotation (its right angles among them); never a mirror. */
   rotate?: boolean;
   /** Stages 'segment', 'flatten', 'pack', 'measure'; return false to cancel (throws 'cancelled'; the mesh stays usable). */
   onProgress?: ProgressCallback;

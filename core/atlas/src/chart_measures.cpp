@@ -14,11 +14,10 @@ namespace straightest::atlas_detail {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// A chart whose longest side would span this fraction of the atlas at the fill scale is "large": its place
-// decides the layout, and a long one may only fit along the diagonal, so it is tried at more rotations
-// (the small ones fill in between at the right angles of their minimum rectangle).
-constexpr double kLargeChartSide = 0.25;
-constexpr int kTurnsOfLargeCharts = 16;
+// Each chart is tried at 16 turns from its minimum rectangle's angle (the right angles among them): a long
+// chart may only fit along the diagonal, and an odd one nests into its neighbours' outlines at a turn
+// between the right angles; fewer turns for the small charts pack less (docs/BENCHMARKS.md).
+constexpr int kTurns = 16;
 
 double chartArea(const std::vector<Vec2>& triangles) {
   double area = 0;
@@ -79,8 +78,7 @@ ChartMeasures measureCharts(const std::vector<ChartShape>& charts, bool rotate, 
   measures.fillScale = measures.totalArea > 0 ? std::sqrt(usable.x * usable.y / measures.totalArea) : kInfinity;
   measures.scaleUpperBound = measures.fillScale;
   for (size_t i = 0; i < count; ++i) {
-    const bool large = longestSide[i] * measures.fillScale > kLargeChartSide * std::min(usable.x, usable.y);
-    measures.angles.push_back(rotate ? turnsOf(baseAngle[i], large ? kTurnsOfLargeCharts : 4) : std::vector<double>{0});
+    measures.angles.push_back(rotate ? turnsOf(baseAngle[i], kTurns) : std::vector<double>{0});
     measures.beyondRightAngles = measures.beyondRightAngles || measures.angles.back().size() > 4;
     double fits = 0;
     for (const double angle : measures.angles.back())

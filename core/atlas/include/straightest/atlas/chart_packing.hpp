@@ -35,7 +35,7 @@ struct PackOptions {
   int32_t width = 0, height = 0;  // both 0 (use resolution) or both positive
   double padding = 2;             // texels between any two charts; ceil(padding / 2) from the atlas border
   double texelsPerUnit = 0;       // 0: the largest scale at which everything fits
-  bool rotate = true;             // turn charts: the minimum-area rectangle's right angles (16 turns for large charts)
+  bool rotate = true;  // turn charts: 16 turns from the minimum-area rectangle's angle (its right angles among them)
 };
 
 /// One chart: 3 uv points per triangle, in 3D units (the flattening's scale), counter-clockwise.
