@@ -137,16 +137,15 @@ function runOurs(mesh, padding, n, threadCounts = [1, 2]) {
 }
 
 /**
- * WASM HOOK — ours through the npm module (WebAssembly in Node, like xatlasjs), timed as a whole process.
- * It needs a built module (npm run build:wasm) whose Mesh has atlas(options) returning the CLI's fields
- * (result_fields are shared with the bindings); until then it returns null and the table says n/a.
+ * Ours through the npm module on one thread (WebAssembly in Node, like xatlasjs), REPEATS whole-process
+ * runs, each recorded; null (the table says n/a) when the module is not built (npm run build:wasm).
  */
 function runOursWasm(mesh, padding) {
   if (env.WASM === '0') return null;
   const script = `
     import { readFileSync } from 'node:fs';
     const { createStraightest } = await import(${JSON.stringify(join(root, 'wasm/index.js'))});
-    const st = await createStraightest();
+    const st = await createStraightest({ threads: 1 });
     const mesh = st.loadMesh(readFileSync(${JSON.stringify(mesh)}));
     if (typeof mesh.atlas !== 'function') process.exit(3);
     const result = mesh.atlas({ padding: ${padding} });
@@ -156,9 +155,13 @@ function runOursWasm(mesh, padding) {
     const r = timed(process.execPath, ['--no-experimental-fetch', '--input-type=module', '-e', script]);
     if (r.status !== 0) return null;
     times.push(r.seconds);
+    record({ tool: 'ours-wasm', mesh, padding, seconds: r.seconds });
   }
-  return { min: Math.min(...times), median: median(times), runs: times.length };
+  return wasmSeconds(times);
 }
+
+const wasmSeconds = (times) =>
+  times.length ? { min: Math.min(...times), median: median(times), runs: times.length } : null;
 
 /** xatlas (xatlasjs 0.2.0, WASM in Node, one thread): one whole-process run, measured by atlas_compare. */
 function runXatlas(mesh, padding) {
@@ -335,8 +338,9 @@ its default options and the padding given, one run (bench/atlas/xatlas-run.mjs).
 (start-up, loading the mesh and writing the result included). Every quality column is measureAtlas's
 (core/atlas/include/straightest/atlas/atlas_quality.hpp): the CLI's own fields for ours, build/native/atlas_compare on
 xatlas's per-corner uv for xatlas, so charts are counted from the uv alone (a cluster of degenerate faces is a chart).
-**Not WASM against WASM yet:** ours is native; the WASM column stays n/a until the npm module's \`mesh.atlas\`
-exists (scripts/bench-atlas.mjs's runOursWasm is the hook). Degenerate faces are faces xatlas leaves unmapped (all corners
+The last column is WebAssembly against WebAssembly: ours through the npm module in Node on one thread
+(\`createStraightest({ threads: 1 })\`, \`st.loadMesh(bytes)\`, \`mesh.atlas({ padding })\`), a whole process like xatlas's,
+${machine.repeats} runs (min / median). Degenerate faces are faces xatlas leaves unmapped (all corners
 at one uv point): they make its L2/L∞ infinite and its min gap 0.
 
 ${table(small, vertexCounts)}
@@ -406,6 +410,10 @@ if (process.argv.includes('--report')) {
     .filter(Boolean)
     .map((l) => JSON.parse(l));
   const rows = lines.filter((l) => (l.tool === 'ours' || l.tool === 'xatlas') && typeof l.seconds === 'object');
+  for (const row of rows.filter((r) => r.tool === 'ours')) {
+    const runs = lines.filter((l) => l.tool === 'ours-wasm' && l.mesh === row.mesh && l.padding === row.padding);
+    row.wasm = wasmSeconds(runs.map((l) => l.seconds));
+  }
   report(rows, { ...machineOf(lines), ...lines.find((l) => l.tool === 'machine') });
   process.exit(0);
 }
