@@ -299,6 +299,46 @@ function targetLines(rows) {
     .join('\n');
 }
 
+const meshName = (mesh) => mesh.replace(/^.*\//, '').replace(/\.off$/, '');
+
+/**
+ * The issue's targets over the set of meshes xatlas also runs on: ours at the default padding (2) against
+ * xatlas at its default (0) — L2 no higher, utilization ≥ 0.70, and WebAssembly at least 10× faster.
+ */
+function setTargetLines(rows) {
+  const pairs = [];
+  for (const ours of rows.filter((r) => r.tool === 'ours' && r.padding === 2 && r.result)) {
+    const xatlas = rows.find((r) => r.tool === 'xatlas' && r.mesh === ours.mesh && !r.error);
+    if (xatlas) pairs.push({ name: meshName(ours.mesh), ours, xatlas });
+  }
+  if (pairs.length === 0) return '- not run';
+  // (atlas_compare writes an infinite L2 — degenerate faces — as text)
+  const theirL2 = (row) => (typeof fields(row).l2 === 'number' ? fields(row).l2 : Infinity);
+  const l2Miss = pairs.filter((p) => !(p.ours.result.stretch.l2 <= theirL2(p.xatlas)));
+  const util = pairs.map((p) => p.ours.result.utilization);
+  const utilMiss = pairs.filter((p) => p.ours.result.utilization < 0.7);
+  const timed = pairs.filter((p) => p.ours.wasm);
+  const ratios = timed.map((p) => ({ name: p.name, ratio: p.xatlas.seconds.t1.min / p.ours.wasm.min }));
+  const slower = ratios.filter((r) => r.ratio < 1);
+  const tenfold = ratios.filter((r) => r.ratio >= 10);
+  const names = (list) => list.map((p) => p.name).join(', ');
+  const lines = [
+    `- L2 ≤ xatlas's on every mesh: ${l2Miss.length ? `**miss** on ${names(l2Miss)}` : 'met'} (${pairs.length} meshes)`,
+    `- utilization ≥ 0.70 at padding 2 on every mesh: ${utilMiss.length ? '**miss**' : 'met'} — ` +
+      `${pairs.length - utilMiss.length} of ${pairs.length} (${Math.min(...util).toFixed(3)}–${Math.max(...util).toFixed(3)})`,
+  ];
+  if (ratios.length) {
+    const range = ratios.map((r) => r.ratio);
+    lines.push(
+      `- ≥ 10× faster than xatlasjs, WebAssembly against WebAssembly: ${tenfold.length === ratios.length ? 'met' : '**miss**'} — ` +
+        `${tenfold.length} of ${ratios.length} meshes; xatlas's seconds over ours ${Math.min(...range).toFixed(2)}–` +
+        `${Math.max(...range).toFixed(1)}×` +
+        (slower.length ? `; ours slower on ${names(slower)}` : ''),
+    );
+  }
+  return lines.join('\n');
+}
+
 /** Our rows that break the atlas's promises (no overlap, every chart a disk, no fold, no mirror, padding kept). */
 function oursMisses(rows) {
   const misses = [];
@@ -356,6 +396,7 @@ ${table(big, vertexCounts)}
 
 The issue's targets:
 
+${setTargetLines(small)}
 ${targetLines(big)}
 
 Our atlases that break its promises (overlap, non-disk chart, fold, mirror or padding violation, as measureAtlas finds them):
