@@ -6,7 +6,7 @@ export interface AtlasOptions {
   /** Largest Sander L2 stretch of a chart (≥ 1, default 1.02): a chart above it is split. */
   maxStretch?: number;
   /**
-   * Least fraction of its convex hull a chart's uv fills (0..1, default 0.7): a chart below it (an L, a body
+   * Least fraction of its convex hull a chart's uv fills (0..1, default 0.75): a chart below it (an L, a body
    * with its legs) is split, so the charts pack tighter for a little more seam; 0 keeps any shape.
    */
   minHullFill?: number;

@@ -35,7 +35,7 @@ const RERUN_DELAY_MS = 300; // an option's change makes the atlas again once the
 const CHECKER_CELLS = 32; // the checkerboard over the whole atlas: every chart at one texel density, so equal squares
 
 /** The options in the panel, or { error, field } when one is not a value the atlas takes. */
-export function readAtlasOptions({ maxStretch, minHullFill = '0.7', resolution, padding }) {
+export function readAtlasOptions({ maxStretch, minHullFill = '0.75', resolution, padding }) {
   const given = (text) => (String(text).trim() ? `“${text}”` : 'empty or not a number');
   const stretch = Number(maxStretch);
   if (!(String(maxStretch).trim() && stretch > 1 && stretch <= 10)) {
@@ -47,7 +47,7 @@ export function readAtlasOptions({ maxStretch, minHullFill = '0.7', resolution, 
   const fill = Number(minHullFill);
   if (!(String(minHullFill).trim() && fill >= 0 && fill <= 1)) {
     return {
-      error: `Min hull fill must be from 0 to 1 (0.7 splits concave charts so they pack tighter); it is ${given(minHullFill)}.`,
+      error: `Min hull fill must be from 0 to 1 (0.75 splits concave charts so they pack tighter); it is ${given(minHullFill)}.`,
       field: 'atlas-min-hull-fill',
     };
   }

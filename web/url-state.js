@@ -30,7 +30,7 @@ export const OPTIONS = {
   checker: { id: 'checker-cells', fallback: '16' },
   // The Atlas mode's options and view (atlas-mode.js); its fields are text the mode checks itself.
   atlasstretch: { id: 'atlas-max-stretch', fallback: '1.02' },
-  atlasfill: { id: 'atlas-min-hull-fill', fallback: '0.7' },
+  atlasfill: { id: 'atlas-min-hull-fill', fallback: '0.75' },
   atlasres: { id: 'atlas-resolution', fallback: '1024' },
   atlaspad: { id: 'atlas-padding', fallback: '2' },
   atlasshow: { id: 'atlas-display', fallback: 'charts' },

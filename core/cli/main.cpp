@@ -100,7 +100,7 @@ std::string otherCommandsUsage() {
          std::to_string(ChartOptions{}.maxStretch).substr(0, 4) +
          ")\n"
          "      --min-hull-fill F      split charts filling less than F of their convex hull (default " +
-         std::to_string(ChartOptions{}.minHullFill).substr(0, 3) +
+         std::to_string(ChartOptions{}.minHullFill).substr(0, 4) +
          ")\n"
          "      --max-charts N         stop splitting at N charts (default: no cap)\n"
          "      --resolution R         atlas side in texels (default " +

@@ -21,7 +21,7 @@ import { decodePng } from './support/images.mjs';
 import { SIZES, misplacedBoxes } from './layout.tests.mjs';
 
 const SAMPLE = 'torus'; // closed, genus 1: the atlas must cut it into disks
-const OPTIONS = { maxStretch: 1.02, minHullFill: 0.7, resolution: 1024, padding: 2 }; // the page's defaults
+const OPTIONS = { maxStretch: 1.02, minHullFill: 0.75, resolution: 1024, padding: 2 }; // the page's defaults
 const STATS = '#atlas-stats dt, #atlas-stats dd, #results-summary .summary-item, #results-summary dd';
 
 /** Opens the sample and the Atlas tab; resolves with the atlas's hook once it is shown. */
@@ -229,7 +229,7 @@ describe('atlas mode', () => {
       await page.click('#atlas-button');
       assert.match(await text(page, 'atlas-message'), /Min hull fill must be from 0 to 1/);
       assert.equal(await page.getAttribute('#atlas-min-hull-fill', 'aria-invalid'), 'true');
-      await page.fill('#atlas-min-hull-fill', '0.7');
+      await page.fill('#atlas-min-hull-fill', '0.75');
       await page.fill('#atlas-padding', '2.5');
       await page.click('#atlas-button');
       assert.match(await text(page, 'atlas-message'), /Padding must be a whole number/);

@@ -37,7 +37,7 @@ struct ChartOptions {
   // The least fraction of its uv's convex hull a chart may fill (0: any shape). A chart below it (an L, a
   // piece of a ring, a body with its legs) is split like a stretched one: convex pieces pack with few gaps,
   // so the atlas's texels go further, for a little more seam. Splits for shape count toward maxCharts.
-  double minHullFill = 0.7;
+  double minHullFill = 0.75;
   // The most faces a chart grows to or merges into (0: no cap). Without it a large smooth mesh becomes a few
   // huge charts whose refinement solves dominate and run one at a time; with it a big developable region
   // becomes several charts, which costs a texture a little seam and keeps every solve small and parallel.
