@@ -10,6 +10,7 @@ import { BIG_TEST_TIMEOUT_MS, pageTest } from './support/fixtures.mjs';
 
 export const SIZES = [
   { width: 1280, height: 800 },
+  { width: 1920, height: 1080 },
   { width: 390, height: 844 },
 ];
 
