@@ -85,6 +85,9 @@ function subdivided(name, levels) {
 
 // ---------------------------------------------------------------- runs
 /** Runs a command as one process and times it from outside (wall clock around spawn → exit). */
+/** A mesh's name: its file name without the .off. */
+const meshName = (mesh) => mesh.replace(/^.*\//, '').replace(/\.off$/, '');
+
 function timed(cmd, args) {
   const start = process.hrtime.bigint();
   const r = spawnSync(cmd, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
@@ -165,7 +168,7 @@ const wasmSeconds = (times) =>
 
 /** xatlas (xatlasjs 0.2.0, WASM in Node, one thread): one whole-process run, measured by atlas_compare. */
 function runXatlas(mesh, padding) {
-  const json = join(outDir, `xatlas-${mesh.replace(/^.*\//, '').replace(/\.off$/, '')}-p${padding}.json`);
+  const json = join(outDir, `xatlas-${meshName(mesh)}-p${padding}.json`);
   const r = timed(process.execPath, [
     join(root, 'bench/atlas/xatlas-run.mjs'),
     mesh,
@@ -237,7 +240,7 @@ function table(rows, vertexCounts) {
     '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|',
   ];
   for (const row of rows) {
-    const name = row.mesh.replace(/^.*\//, '').replace(/\.off$/, '');
+    const name = meshName(row.mesh);
     const label = `${row.tool === 'ours' ? 'ours (native)' : 'xatlas (WASM)'}, ${row.padding}`;
     if (row.error) {
       lines.push(
@@ -283,7 +286,7 @@ const targets = [
 function targetLines(rows) {
   return targets
     .map((t) => {
-      const row = rows.find((r) => r.tool === 'ours' && r.mesh.replace(/^.*\//, '').replace(/\.off$/, '') === t.mesh);
+      const row = rows.find((r) => r.tool === 'ours' && meshName(r.mesh) === t.mesh);
       if (!row) return `- ${t.what}: not run`;
       if (row.error) return `- ${t.what}: **miss** (${row.error})`;
       const fastest = Math.min(...Object.values(row.seconds).map((s) => s.median));
@@ -298,8 +301,6 @@ function targetLines(rows) {
     })
     .join('\n');
 }
-
-const meshName = (mesh) => mesh.replace(/^.*\//, '').replace(/\.off$/, '');
 
 /**
  * The issue's targets over the set of meshes xatlas also runs on: ours at the default padding (2) against
@@ -355,7 +356,7 @@ function oursMisses(rows) {
       .map(([k, n]) => `${n} ${k}`);
     if (what.length)
       misses.push(
-        `- ${r.mesh.replace(/^.*\//, '').replace(/\.off$/, '')}, padding ${r.padding}: ${what.join(', ')} (min gap ${q.min_gap_texels.toFixed(2)} texels)`,
+        `- ${meshName(r.mesh)}, padding ${r.padding}: ${what.join(', ')} (min gap ${q.min_gap_texels.toFixed(2)} texels)`,
       );
   }
   return misses.length ? misses.join('\n') : '- none';
