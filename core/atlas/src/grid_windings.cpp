@@ -24,6 +24,9 @@ constexpr double kThinSteps = 2;
 
 bool finite(Vec2 uv) { return std::isfinite(uv.x) && std::isfinite(uv.y); }
 
+/// The atlas's uv stay in [0, 1]²: a corner on its border is never moved out of it.
+bool inUnitSquare(Vec2 uv) { return uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1; }
+
 Vec2 gridPoint(Vec2 uv, const int step[2]) {
   const GridPoint p = snap(uv);
   return {static_cast<double>(p.x + step[0]) / kGridUnitsPerUv, static_cast<double>(p.y + step[1]) / kGridUnitsPerUv};
@@ -86,6 +89,7 @@ class Mender {
       const Vec2 home = uv_[3 * f + k];
       for (const auto& step : kSteps) {
         const Vec2 moved = gridPoint(home, step);
+        if (!inUnitSquare(moved)) continue;
         for (const int32_t c : corners) uv_[c] = moved;
         if (std::all_of(corners.begin(), corners.end(), [&](int32_t c) { return woundRight(c / 3); })) return;
       }
