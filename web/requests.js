@@ -59,9 +59,10 @@
 // parameterization costs several times its later ones (in Node at 22.5k vertices: 851 ms of CPU
 // against 125) — and a page user often makes exactly one. So once the worker has been idle for
 // WARM_UP_IDLE_MS (after the page's first mesh and its paths, while the user looks or picks a file),
-// it parameterizes a small built-in sample a few times, unobserved (no progress panel). A request
-// sent meanwhile waits for it (the worker serves requests in order; a fraction of a second); one that
-// fails or is cancelled is dropped. It runs once per worker (not again after a cancel).
+// it parameterizes a small built-in sample a few times and makes an atlas of another (the charts' growth
+// and the packer are code a parameterization never runs), unobserved (no progress panel). A request
+// sent meanwhile waits for the call under way (the worker serves requests in order; a fraction of a
+// second); one that fails or is cancelled is dropped. It runs once per worker (not again after a cancel).
 //
 // Cancelling: the work runs inside synchronous WASM calls, so the helper terminates its worker and
 // starts a new one; pending calls reject as 'cancelled', and a request that was between two calls
@@ -85,16 +86,24 @@ const THROTTLE_MS = 50; // at most one intermediate progress update per 50 ms an
 
 const WARM_UP_SAMPLE = 'mountain'; // a 2500-vertex height field: every hot loop of a parameterization
 const WARM_UP_CALLS = 3; // measured-boundary parameterizations of it (one left most functions in baseline code)
+const WARM_UP_ATLAS_SAMPLE = 'sphere'; // closed: grown into several charts, split and packed
+const WARM_UP_ATLAS_CALLS = 2; // atlases of it (after one, the packer still ran partly in baseline code)
 const WARM_UP_IDLE_MS = 300;
 
-/** Parameterizes the warm-up sample in `target` (a StraightestWorker) and frees it. */
-async function warmUp(target) {
-  const made = await target.sample(WARM_UP_SAMPLE);
+/** Runs `calls` times `work(mesh)` on the built-in sample `name` in `target`, then frees the mesh. */
+async function onSample(target, name, calls, work) {
+  const made = await target.sample(name);
   try {
-    for (let k = 0; k < WARM_UP_CALLS; k++) await made.parameterize({ boundary: 'measured' });
+    for (let k = 0; k < calls; k++) await work(made);
   } finally {
     made.delete().catch(() => {});
   }
+}
+
+/** Parameterizes one warm-up sample and makes atlases of another in `target` (a StraightestWorker). */
+async function warmUp(target) {
+  await onSample(target, WARM_UP_SAMPLE, WARM_UP_CALLS, (made) => made.parameterize({ boundary: 'measured' }));
+  await onSample(target, WARM_UP_ATLAS_SAMPLE, WARM_UP_ATLAS_CALLS, (made) => made.atlas());
 }
 
 /**
