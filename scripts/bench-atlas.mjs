@@ -141,7 +141,8 @@ function runOurs(mesh, padding, n, threadCounts = [1, 2]) {
 
 /**
  * Ours through the npm module on one thread (WebAssembly in Node, like xatlasjs), REPEATS whole-process
- * runs, each recorded; null (the table says n/a) when the module is not built (npm run build:wasm).
+ * runs, each recorded with the atlas call's own seconds (the process's first call, as xatlas's is); null
+ * (the table says n/a) when the module is not built (npm run build:wasm).
  */
 function runOursWasm(mesh, padding) {
   if (env.WASM === '0') return null;
@@ -151,20 +152,28 @@ function runOursWasm(mesh, padding) {
     const st = await createStraightest({ threads: 1 });
     const mesh = st.loadMesh(readFileSync(${JSON.stringify(mesh)}));
     if (typeof mesh.atlas !== 'function') process.exit(3);
+    const started = performance.now();
     const result = mesh.atlas({ padding: ${padding} });
-    process.stdout.write(JSON.stringify({ charts: result.charts, l2: result.stretch?.l2 }) + '\\n');`;
-  const times = [];
+    const call = (performance.now() - started) / 1000;
+    process.stdout.write(JSON.stringify({ charts: result.charts, l2: result.stretch?.l2, call }) + '\\n');`;
+  const runs = [];
   for (let k = 0; k < repeats; ++k) {
     const r = timed(process.execPath, ['--no-experimental-fetch', '--input-type=module', '-e', script]);
     if (r.status !== 0) return null;
-    times.push(r.seconds);
-    record({ tool: 'ours-wasm', mesh, padding, seconds: r.seconds });
+    const { call } = JSON.parse(r.stdout.trim().split('\n').pop());
+    runs.push(record({ tool: 'ours-wasm', mesh, padding, seconds: r.seconds, call }));
   }
-  return wasmSeconds(times);
+  return wasmSeconds(runs);
 }
 
-const wasmSeconds = (times) =>
-  times.length ? { min: Math.min(...times), median: median(times), runs: times.length } : null;
+/** The whole process's seconds and the call's over some runs of ours in WebAssembly (min, median). */
+function wasmSeconds(runs) {
+  if (runs.length === 0) return null;
+  const times = runs.map((r) => r.seconds);
+  const calls = runs.map((r) => r.call).filter((c) => typeof c === 'number');
+  const call = calls.length ? { min: Math.min(...calls), median: median(calls), runs: calls.length } : null;
+  return { min: Math.min(...times), median: median(times), runs: times.length, call };
+}
 
 /** xatlas (xatlasjs 0.2.0, WASM in Node, one thread): one whole-process run, measured by atlas_compare. */
 function runXatlas(mesh, padding) {
@@ -181,11 +190,13 @@ function runXatlas(mesh, padding) {
     maxBuffer: 1 << 26,
   });
   const result = JSON.parse(c.stdout.trim().split('\n').pop());
+  const call = existsSync(json) ? JSON.parse(readFileSync(json, 'utf8')).seconds : undefined;
   const row = {
     tool: 'xatlas',
     mesh,
     padding,
     seconds: { t1: { min: r.seconds, median: r.seconds, runs: 1 } },
+    call: typeof call === 'number' ? { min: call, median: call, runs: 1 } : null,
     result,
   };
   if (result.error) row.error = result.error;
@@ -236,25 +247,26 @@ const secs = (s) => (s ? `${num(s.min, s.min < 10 ? 2 : 1)} / ${num(s.median, s.
 
 function table(rows, vertexCounts) {
   const lines = [
-    '| mesh | vertices | tool, padding | charts | L2 | L∞ | utilization | flipped | degenerate | mirrored charts | overlaps | non-disk charts | min gap (texels) | size | s, 1 thread (min / median) | s, 2 threads | s, WASM 1 thread |',
-    '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|',
+    '| mesh | vertices | tool, padding | charts | L2 | L∞ | utilization | flipped | degenerate | mirrored charts | overlaps | non-disk charts | min gap (texels) | size | s, 1 thread (min / median) | s, 2 threads | s, WASM 1 thread | s, WASM call |',
+    '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|',
   ];
   for (const row of rows) {
     const name = meshName(row.mesh);
     const label = `${row.tool === 'ours' ? 'ours (native)' : 'xatlas (WASM)'}, ${row.padding}`;
     if (row.error) {
       lines.push(
-        `| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${String(row.error).replace(/\|/g, '\\|')} |||||||||||||`,
+        `| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${String(row.error).replace(/\|/g, '\\|')} ||||||||||||||`,
       );
       continue;
     }
     const f = fields(row);
     const wasm = row.tool === 'xatlas' ? secs(row.seconds.t1) : row.wasm ? secs(row.wasm) : 'n/a';
+    const call = row.tool === 'xatlas' ? secs(row.call) : row.wasm ? secs(row.wasm.call) : 'n/a';
     lines.push(
       `| ${name} | ${vertexCounts[row.mesh] ?? ''} | ${label} | ${f.charts} | ${num(f.l2, 4)} | ${num(f.linf, 2)} | ` +
         `${num(f.utilization, 3)} | ${f.flipped} | ${f.degenerate} | ${f.mirrored}${f.charts ? ` (${Math.round((100 * f.mirrored) / f.charts)} %)` : ''} | ` +
         `${f.overlaps} | ${f.nonDisk} | ${num(f.gap, 2)} | ${f.size} | ` +
-        `${row.tool === 'ours' ? secs(row.seconds.t1) : '—'} | ${row.tool === 'ours' ? secs(row.seconds.t2) : '—'} | ${wasm} |` +
+        `${row.tool === 'ours' ? secs(row.seconds.t1) : '—'} | ${row.tool === 'ours' ? secs(row.seconds.t2) : '—'} | ${wasm} | ${call} |` +
         (row.nondeterministic ? ' ⚠ runs differ' : ''),
     );
   }
@@ -322,6 +334,9 @@ function setTargetLines(rows) {
   const ratios = timed.map((p) => ({ name: p.name, ratio: p.xatlas.seconds.t1.min / p.ours.wasm.min }));
   const slower = ratios.filter((r) => r.ratio < 1);
   const tenfold = ratios.filter((r) => r.ratio >= 10);
+  const callRatios = timed
+    .filter((p) => p.ours.wasm.call && p.xatlas.call)
+    .map((p) => ({ name: p.name, ratio: p.xatlas.call.min / p.ours.wasm.call.min }));
   const names = (list) => list.map((p) => p.name).join(', ');
   const lines = [
     `- L2 ≤ xatlas's on every mesh: ${l2Miss.length ? `**miss** on ${names(l2Miss)}` : 'met'} (${pairs.length} meshes)`,
@@ -335,6 +350,16 @@ function setTargetLines(rows) {
         `${tenfold.length} of ${ratios.length} meshes; xatlas's seconds over ours ${Math.min(...range).toFixed(2)}–` +
         `${Math.max(...range).toFixed(1)}×` +
         (slower.length ? `; ours slower on ${names(slower)}` : ''),
+    );
+  }
+  if (callRatios.length) {
+    const range = callRatios.map((r) => r.ratio);
+    const callSlower = callRatios.filter((r) => r.ratio < 1);
+    lines.push(
+      `- the same, the atlas call alone (each process's first, after the module's start and the mesh's load): ` +
+        `${callRatios.filter((r) => r.ratio >= 10).length} of ${callRatios.length} meshes at ≥ 10×; xatlas's seconds over ` +
+        `ours ${Math.min(...range).toFixed(2)}–${Math.max(...range).toFixed(1)}×` +
+        (callSlower.length ? `; ours slower on ${names(callSlower)}` : ''),
     );
   }
   return lines.join('\n');
@@ -379,9 +404,11 @@ its default options and the padding given, one run (bench/atlas/xatlas-run.mjs).
 (start-up, loading the mesh and writing the result included). Every quality column is measureAtlas's
 (core/atlas/include/straightest/atlas/atlas_quality.hpp): the CLI's own fields for ours, build/native/atlas_compare on
 xatlas's per-corner uv for xatlas, so charts are counted from the uv alone (a cluster of degenerate faces is a chart).
-The last column is WebAssembly against WebAssembly: ours through the npm module in Node on one thread
+The last two columns are WebAssembly against WebAssembly: ours through the npm module in Node on one thread
 (\`createStraightest({ threads: 1 })\`, \`st.loadMesh(bytes)\`, \`mesh.atlas({ padding })\`), a whole process like xatlas's,
-${machine.repeats} runs (min / median). Degenerate faces are faces xatlas leaves unmapped (all corners
+${machine.repeats} runs (min / median); then the atlas call alone in that process (its first, so in part before V8's
+optimizing tier: the module's start and the mesh's load left out) and xatlas's (its own timer around its calls,
+bench/atlas/xatlas-run.mjs). Degenerate faces are faces xatlas leaves unmapped (all corners
 at one uv point): they make its L2/L∞ infinite and its min gap 0.
 
 ${table(small, vertexCounts)}
@@ -454,7 +481,7 @@ if (process.argv.includes('--report')) {
   const rows = lines.filter((l) => (l.tool === 'ours' || l.tool === 'xatlas') && typeof l.seconds === 'object');
   for (const row of rows.filter((r) => r.tool === 'ours')) {
     const runs = lines.filter((l) => l.tool === 'ours-wasm' && l.mesh === row.mesh && l.padding === row.padding);
-    row.wasm = wasmSeconds(runs.map((l) => l.seconds));
+    row.wasm = wasmSeconds(runs);
   }
   report(rows, { ...machineOf(lines), ...lines.find((l) => l.tool === 'machine') });
   process.exit(0);
