@@ -43,7 +43,8 @@ export interface UnwrapOptions extends AtlasOptions, MeshFromBufferGeometryOptio
 }
 
 /**
- * Unwraps a geometry into a texture atlas (Mesh.atlas). weld defaults to true for a non-indexed geometry.
+ * Unwraps a geometry into a texture atlas (Mesh.atlas). weld defaults to true (here only): the atlas's charts may
+ * cross the geometry's uv and normal seams, where its vertices repeat; the new geometry keeps its own vertices.
  * The new geometry is split along the atlas's seams (one vertex per distinct geometry vertex and uv), keeps
  * every other attribute, morph target, group and the triangles' order, and has the atlas uv on `channel`;
  * userData.vertexOrigin maps each of its vertices to the geometry's.

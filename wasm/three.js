@@ -1,5 +1,6 @@
 // straightest/three — three.js helpers, kept apart so the core package does not require three.
 import { BufferAttribute, BufferGeometry } from 'three';
+import { StraightestError } from './straightest-error.js';
 
 /**
  * Builds a straightest Mesh from a three.js BufferGeometry (indexed or not). options.weld merges
@@ -9,8 +10,27 @@ import { BufferAttribute, BufferGeometry } from 'three';
  * looked at. Welded meshes have fewer vertices than the geometry: use toBufferGeometry for the result.
  */
 export function meshFromBufferGeometry(st, geometry, { weld = false } = {}) {
-  const { positions, indices } = meshArrays(geometry, weld, 'meshFromBufferGeometry');
-  return st.meshFromArrays(positions, indices);
+  return meshOfArrays(st, meshArrays(geometry, weld, 'meshFromBufferGeometry'), weld);
+}
+
+const TOPOLOGY_ERRORS = ['non_manifold_edge', 'non_manifold_vertex'];
+
+/**
+ * The Mesh of meshArrays' arrays. A topology error gets a sentence on welding: whether the geometry's
+ * vertices are joined by position decides which surfaces touch where (three's CylinderGeometry and
+ * ConeGeometry repeat a cap's centre once per segment: as they are, the cap's triangles only touch there).
+ */
+function meshOfArrays(st, { positions, indices }, weld) {
+  try {
+    return st.meshFromArrays(positions, indices);
+  } catch (e) {
+    if (!TOPOLOGY_ERRORS.includes(e?.category)) throw e;
+    const welded = weld !== false && weld !== null && weld !== undefined;
+    const hint = welded
+      ? 'the vertices were welded by position: weld: false keeps the geometry’s own'
+      : 'weld: true joins the geometry’s vertices that share a position (as three’s cylinder and cone caps need)';
+    throw new StraightestError(`${e.message} (${hint})`, e.category, { cause: e });
+  }
 }
 
 /**
@@ -169,15 +189,16 @@ const UV_CHANNELS = ['uv', 'uv1'];
 /**
  * Unwraps a geometry into a texture atlas (mesh.atlas): returns { geometry, atlas }, a new geometry split
  * along the atlas's seams with the atlas uv on `channel` ('uv', default, or 'uv1', e.g. for a lightmap), and
- * the Atlas itself. options: channel, weld (as meshFromBufferGeometry's; default true for a non-indexed
- * geometry, whose triangles would otherwise each be a chart) and mesh.atlas's options. See splitGeometry
- * for what the new geometry keeps.
+ * the Atlas itself. options: channel, weld (as meshFromBufferGeometry's, default true: the charts are the
+ * atlas's own, so they may cross the geometry's uv and normal seams, where its vertices are repeated; the
+ * new geometry still keeps the geometry's own vertices) and mesh.atlas's options. See splitGeometry for
+ * what the new geometry keeps.
  */
 export function unwrap(st, geometry, options = {}) {
-  const { channel = 'uv', weld = geometry.getIndex() === null, ...atlasOptions } = options;
+  const { channel = 'uv', weld = true, ...atlasOptions } = options;
   checkedChannel(channel, 'unwrap');
   const arrays = meshArrays(geometry, weld, 'unwrap');
-  const mesh = st.meshFromArrays(arrays.positions, arrays.indices);
+  const mesh = meshOfArrays(st, arrays, weld);
   try {
     const atlas = mesh.atlas(atlasOptions);
     return { geometry: splitGeometry(geometry, arrays, mesh.indices(), atlas.cornerUv, channel), atlas };
@@ -193,12 +214,12 @@ export function unwrap(st, geometry, options = {}) {
  */
 export function packAtlas(st, geometries, options = {}) {
   if (!Array.isArray(geometries)) throw new TypeError('packAtlas: expects an array of BufferGeometry');
-  const { channel = 'uv', weld, ...atlasOptions } = options;
+  const { channel = 'uv', weld = true, ...atlasOptions } = options;
   checkedChannel(channel, 'packAtlas');
-  const arrays = geometries.map((g) => meshArrays(g, weld ?? g.getIndex() === null, 'packAtlas'));
+  const arrays = geometries.map((g) => meshArrays(g, weld, 'packAtlas'));
   const meshes = [];
   try {
-    for (const a of arrays) meshes.push(st.meshFromArrays(a.positions, a.indices));
+    for (const a of arrays) meshes.push(meshOfArrays(st, a, weld));
     const atlas = st.atlas(meshes, atlasOptions);
     return {
       geometries: geometries.map((g, i) =>

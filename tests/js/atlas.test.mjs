@@ -398,3 +398,32 @@ test('straightest/three unwrap finds each corner by its vertex where the core re
   }
   mesh.delete();
 });
+
+test('straightest/three unwrap takes three’s own primitives as they come (their seams and caps welded)', async () => {
+  const { BoxGeometry, ConeGeometry, CylinderGeometry, SphereGeometry } = await import('three');
+  for (const geometry of [
+    new CylinderGeometry(1, 1, 2, 24, 1),
+    new ConeGeometry(1, 2, 16),
+    new BoxGeometry(1, 2, 3),
+    new SphereGeometry(1, 16, 12),
+  ]) {
+    const { geometry: split, atlas } = unwrap(st, geometry);
+    assert.equal(atlas.flipped + atlas.mirrored + atlas.overlaps, 0, geometry.type);
+    assert.equal(split.getIndex().count, geometry.getIndex().count, geometry.type);
+    // Welded, each is one closed surface (its uv and normal seams joined), which the atlas cuts itself.
+    const welded = meshFromBufferGeometry(st, geometry, { weld: true });
+    assert.equal(welded.info().boundaryLoops.length, 0, `${geometry.type} welded is closed`);
+    welded.delete();
+    if (geometry.type === 'BoxGeometry')
+      assert.ok(Math.abs(atlas.stretch.l2 - 1) < 1e-6, 'a box flattens isometrically');
+  }
+  // Kept apart, a cylinder's cap triangles only touch at its centre: the error says how to weld.
+  assert.throws(
+    () => unwrap(st, new CylinderGeometry(1, 1, 2, 24, 1), { weld: false }),
+    (e) => e.category === 'non_manifold_vertex' && /weld: true/.test(e.message),
+  );
+  assert.throws(
+    () => meshFromBufferGeometry(st, new ConeGeometry(1, 2, 16)),
+    (e) => e.category === 'non_manifold_vertex' && /weld: true/.test(e.message),
+  );
+});
