@@ -10,7 +10,11 @@ export interface AtlasOptions {
    * with its legs) is split, so the charts pack tighter for a little more seam; 0 keeps any shape.
    */
   minHullFill?: number;
-  /** Most charts (an integer; default 0: no cap); reaching it stops splitting for stretch or shape (Atlas.capped); a chart with no flat map is split anyway. */
+  /**
+   * Most charts (an integer; default 0: no cap), where the surface allows: splits for stretch or shape stop at it and
+   * more charts are merged down to it whatever their stretch (Atlas.capped). A chart with no flat map is split
+   * anyway and merges only make disks, so a closed surface keeps two or more.
+   */
   maxCharts?: number;
   /** Side of the square atlas in texels (1..16384, default 1024) when width and height are 0. */
   resolution?: number;
@@ -78,7 +82,7 @@ export interface Atlas {
   splits: number;
   /** Pairs of neighbouring charts merged because the union stayed under maxStretch. */
   merges: number;
-  /** maxCharts stopped a split: some chart may exceed maxStretch. */
+  /** maxCharts stopped a split or merged charts: some chart may exceed maxStretch. */
   capped: boolean;
   /** Milliseconds per stage: charts (segment and flatten), pack, measure, total. */
   timings: { charts: number; pack: number; measure: number; total: number };

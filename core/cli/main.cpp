@@ -3,9 +3,12 @@
 // usage (message on stderr, or {"error", "category"} on stdout with --json-errors; a usage error is
 // category invalid_argument, as in JS), 1 internal failure. Never a signal for bad input.
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -13,6 +16,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -102,7 +106,8 @@ std::string otherCommandsUsage() {
          "      --min-hull-fill F      split charts filling less than F of their convex hull (default " +
          std::to_string(ChartOptions{}.minHullFill).substr(0, 4) +
          ")\n"
-         "      --max-charts N         stop splitting at N charts (default: no cap)\n"
+         "      --max-charts N         at most N charts where the surface allows: merged whatever their\n"
+         "                             stretch (default 0: no cap)\n"
          "      --resolution R         atlas side in texels (default " +
          std::to_string(PackOptions{}.resolution) +
          ")\n"
@@ -164,39 +169,60 @@ int fail(const Options& o, const Error& error) {
   return error.code == ErrorCode::Internal ? 1 : 2;
 }
 
-int64_t parseCount(const std::string& flag, const char* value) {
-  char* end = nullptr;
-  const long long v = std::strtoll(value, &end, 10);
-  if (!*value || *end || v <= 0) throw UsageError{flag + " expects a positive integer, got '" + value + "'"};
+/// The whole of `value` as a number of type T in decimal (no hex, no blanks, no '+'), or nothing.
+template <typename T>
+std::optional<T> decimal(const char* value) {
+  T v{};
+  const char* last = value + std::strlen(value);
+  const auto [end, error] = std::from_chars(value, last, v);
+  if (!*value || error != std::errc{} || end != last) return std::nullopt;
   return v;
+}
+
+int64_t parseCount(const std::string& flag, const char* value) {
+  const auto v = decimal<int64_t>(value);
+  if (!v || *v <= 0) throw UsageError{flag + " expects a positive integer, got '" + value + "'"};
+  return *v;
 }
 
 double parsePositive(const std::string& flag, const char* value) {
-  char* end = nullptr;
-  const double v = std::strtod(value, &end);
-  if (!*value || *end || !(v > 0) || !std::isfinite(v))
-    throw UsageError{flag + " expects a positive number, got '" + value + "'"};
-  return v;
+  const auto v = decimal<double>(value);
+  if (!v || !(*v > 0) || !std::isfinite(*v)) throw UsageError{flag + " expects a positive number, got '" + value + "'"};
+  return *v;
 }
 
 double parseFraction(const std::string& flag, const char* value) {
-  char* end = nullptr;
-  const double v = std::strtod(value, &end);
-  if (!*value || *end || !(v >= 0 && v <= 1))
-    throw UsageError{flag + " expects a number in [0, 1], got '" + value + "'"};
-  return v;
+  const auto v = decimal<double>(value);
+  if (!v || !(*v >= 0 && *v <= 1)) throw UsageError{flag + " expects a number in [0, 1], got '" + value + "'"};
+  return *v;
 }
 
 double parseNonNegative(const std::string& flag, const char* value) {
-  char* end = nullptr;
-  const double v = std::strtod(value, &end);
-  if (!*value || *end || !(v >= 0) || !std::isfinite(v))
-    throw UsageError{flag + " expects a number >= 0, got '" + value + "'"};
-  return v;
+  const auto v = decimal<double>(value);
+  if (!v || !(*v >= 0) || !std::isfinite(*v)) throw UsageError{flag + " expects a number >= 0, got '" + value + "'"};
+  return *v;
 }
 
 int32_t parseCount32(const std::string& flag, const char* value) {
   return static_cast<int32_t>(std::min<int64_t>(parseCount(flag, value), std::numeric_limits<int32_t>::max()));
+}
+
+/// A count where 0 means "none" (no cap).
+int32_t parseCountOrZero32(const std::string& flag, const char* value) {
+  const auto v = decimal<int64_t>(value);
+  if (!v || *v < 0) throw UsageError{flag + " expects an integer >= 0, got '" + value + "'"};
+  return static_cast<int32_t>(std::min<int64_t>(*v, std::numeric_limits<int32_t>::max()));
+}
+
+/// -o's file: the CLI writes OBJ only, so another extension (a .glb, say) would get OBJ text under a wrong name.
+std::string parseObjPath(const std::string& flag, const char* value) {
+  std::string path = value;
+  std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".obj")
+    throw UsageError{flag + " writes an OBJ file: give a name ending in .obj, got '" + path + "'"};
+  return path;
 }
 
 /// --progress: a line on stderr when a stage starts and at every further tenth of it.
@@ -245,12 +271,12 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--progress") o.progress = true;
     else if (a == "--max-stretch") o.atlas.charts.maxStretch = parsePositive(a, value());
     else if (a == "--min-hull-fill") o.atlas.charts.minHullFill = parseFraction(a, value());
-    else if (a == "--max-charts") o.atlas.charts.maxCharts = parseCount32(a, value());
+    else if (a == "--max-charts") o.atlas.charts.maxCharts = parseCountOrZero32(a, value());
     else if (a == "--resolution") o.atlas.pack.resolution = parseCount32(a, value());
     else if (a == "--padding") o.atlas.pack.padding = parseNonNegative(a, value());
     else if (a == "--threads")
       o.threads = static_cast<int>(std::min<int64_t>(parseCount(a, value()), std::numeric_limits<int>::max()));
-    else if (a == "-o" || a == "--output") o.output = value();
+    else if (a == "-o" || a == "--output") o.output = parseObjPath(a, value());
     else if (a == "-h" || a == "--help") o.command = "help";
     else if (a == "--version") o.command = "version";
     else if (a.size() > 1 && a[0] == '-') throw UsageError{"unknown option '" + a + "'"};
@@ -517,8 +543,11 @@ int main(int argc, char** argv) {
       o.jsonErrors = o.jsonErrors || std::string(argv[i]) == "--json-errors";
       o.pretty = o.pretty || std::string(argv[i]) == "--pretty";
     }
-    if (!o.jsonErrors) std::cerr << usage() << "\n";
-    return fail(o, Error{ErrorCode::InvalidArgument, e.message});
+    // With no command at all the whole usage helps; otherwise the one line that says what was wrong.
+    if (!o.jsonErrors && argc < 2) std::cerr << usage() << "\n";
+    const int code = fail(o, Error{ErrorCode::InvalidArgument, e.message});
+    if (!o.jsonErrors && argc >= 2) std::cerr << "straightest --help lists the commands and their options\n";
+    return code;
   }
   if (o.command == "help") {
     std::cout << usage();

@@ -194,6 +194,23 @@ TEST(AtlasCharts, MaxChartsStopsSplittingAndSaysSo) {
   EXPECT_GT(set.overStretch, 0);
 }
 
+TEST(AtlasCharts, MaxChartsMergesDownToTheCap) {
+  // A torus's segmentation makes more charts than the cap asks for: merging brings them down to it, each
+  // still a flat, unfolded disk (the stretch is what the fewer charts cost).
+  const TriMesh torus = makeTorus(1, 0.4, 32, 16);
+  const ChartSet uncapped = chartsOf(torus);
+  ASSERT_GT(uncapped.charts.size(), 5u);
+  for (const int32_t cap : {5, 4}) {
+    ChartOptions options;
+    options.maxCharts = cap;
+    const ChartSet set = chartsOf(torus, options);
+    expectValidCharts(torus, set, options.maxStretch);
+    EXPECT_LE(set.charts.size(), static_cast<size_t>(cap));
+    EXPECT_TRUE(set.capped);
+    EXPECT_GT(set.merges, 0);
+  }
+}
+
 TEST(AtlasCharts, MaxChartFacesCapsEveryChart) {
   // One near-flat region of 6962 faces: nothing in its shape asks for a cut, so only the cap divides it.
   const TriMesh sheet = testing::almostFlatGrid(60, 1e-3);

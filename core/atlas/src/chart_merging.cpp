@@ -4,6 +4,7 @@
 #include "chart_merging.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -31,9 +32,18 @@ Vec3 averageNormal(const TriMesh& mesh, const FlatChart& chart) {
   return length > 0 ? n / length : n;
 }
 
-/// Adjacent pairs worth a trial, best first, each chart in at most one; none whose union exceeds maxFaces.
+/// What a merge must keep: the union's limits, its size, and whether charts facing apart are tried.
+struct MergeRule {
+  ChartLimits limits;
+  int32_t maxFaces = 0;      // 0: any size
+  bool facingApart = false;  // try pairs whose average normals are more than 90° apart too
+  size_t fewestCharts = 0;   // stop merging at this many charts
+};
+
+/// Adjacent pairs worth a trial, best first, each chart in at most one; none whose union exceeds the rule's
+/// size.
 std::vector<MergeTrial> chooseTrials(const TriMesh& mesh, const std::vector<FlatChart>& charts,
-                                     const ChartPairs& knownBad, int32_t maxFaces) {
+                                     const ChartPairs& knownBad, const MergeRule& rule) {
   std::vector<int32_t> label(mesh.numFaces());
   std::vector<Vec3> normal(charts.size());
   for (size_t c = 0; c < charts.size(); ++c) {
@@ -49,8 +59,9 @@ std::vector<MergeTrial> chooseTrials(const TriMesh& mesh, const std::vector<Flat
   std::vector<MergeTrial> candidates;
   for (const auto& [pair, length] : shared) {
     const auto& [a, b] = pair;
-    if (dot(normal[a], normal[b]) < 0) continue;
-    if (maxFaces > 0 && charts[a].faces.size() + charts[b].faces.size() > static_cast<size_t>(maxFaces)) continue;
+    if (!rule.facingApart && dot(normal[a], normal[b]) < 0) continue;
+    if (rule.maxFaces > 0 && charts[a].faces.size() + charts[b].faces.size() > static_cast<size_t>(rule.maxFaces))
+      continue;
     if (knownBad.count(chartPair(chartKey(charts[a].faces), chartKey(charts[b].faces)))) continue;
     candidates.push_back({a, b, std::min(charts[a].faces.size(), charts[b].faces.size()), length});
   }
@@ -74,14 +85,16 @@ std::vector<int32_t> unionOf(const std::vector<int32_t>& a, const std::vector<in
   std::merge(a.begin(), a.end(), b.begin(), b.end(), faces.begin());
   return faces;
 }
-}  // namespace
-
-Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
-                              const ChartOptions& options, const ChartLimits& limits, const Progress& progress) {
+/// Rounds of disjoint merge trials under `rule`, until none is left, the budget is spent or the rule's
+/// fewest charts is reached.
+Expected<int32_t> mergeRounds(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
+                              const MergeRule& rule, const FreeBoundaryOptions& free, const Progress& progress) {
   int32_t merges = 0;
   int64_t budget = kTrialFacesPerFace * static_cast<int64_t>(mesh.numFaces());
-  while (budget > 0) {
-    std::vector<MergeTrial> trials = chooseTrials(mesh, charts, knownBad, options.maxChartFaces);
+  while (budget > 0 && charts.size() > rule.fewestCharts) {
+    std::vector<MergeTrial> trials = chooseTrials(mesh, charts, knownBad, rule);
+    // Each merge takes one chart away: no more trials than charts above the fewest.
+    if (rule.fewestCharts > 0) trials.resize(std::min(trials.size(), charts.size() - rule.fewestCharts));
     std::vector<std::vector<int32_t>> unions;
     for (const MergeTrial& t : trials) {
       if (budget <= 0) break;  // the trials are best first: the ones left out matter least
@@ -90,7 +103,7 @@ Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& chart
     }
     if (unions.empty()) break;
     trials.resize(unions.size());
-    auto flattened = flattenCharts(mesh, std::move(unions), limits, options.free, progress);
+    auto flattened = flattenCharts(mesh, std::move(unions), rule.limits, free, progress);
     if (!flattened) return flattened.error();
     std::vector<uint8_t> gone(charts.size(), 0);
     int32_t merged = 0;
@@ -114,6 +127,20 @@ Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& chart
     merges += merged;
   }
   return merges;
+}
+
+}  // namespace
+
+Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
+                              const ChartOptions& options, const ChartLimits& limits, const Progress& progress) {
+  return mergeRounds(mesh, charts, knownBad, MergeRule{limits, options.maxChartFaces}, options.free, progress);
+}
+
+Expected<int32_t> mergeDownTo(const TriMesh& mesh, std::vector<FlatChart>& charts, size_t count,
+                              const FreeBoundaryOptions& free, const Progress& progress) {
+  ChartPairs knownBad;  // pairs that failed the stricter limits may pass these
+  const MergeRule anyBijective{ChartLimits{std::numeric_limits<double>::infinity(), 0}, 0, true, count};
+  return mergeRounds(mesh, charts, knownBad, anyBijective, free, progress);
 }
 
 }  // namespace straightest::atlas

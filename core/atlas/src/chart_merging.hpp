@@ -24,4 +24,10 @@ inline std::array<ChartKey, 2> chartPair(ChartKey a, ChartKey b) { return a < b 
 Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
                               const ChartOptions& options, const ChartLimits& limits, const Progress& progress);
 
+/// Merges pairs of adjacent charts as mergeCharts does, whatever their stretch, shape, size or normals, as long
+/// as the union is a disk that flattens bijectively, until at most `count` charts are left (ChartOptions::
+/// maxCharts) or no pair merges. Returns the merge count. Progress stage "flatten"; Cancelled.
+Expected<int32_t> mergeDownTo(const TriMesh& mesh, std::vector<FlatChart>& charts, size_t count,
+                              const FreeBoundaryOptions& free, const Progress& progress);
+
 }  // namespace straightest::atlas

@@ -93,10 +93,20 @@ Expected<ChartSet> charts(const TriMesh& mesh, const ChartOptions& options, cons
   const ChartLimits limits{options.maxStretch, options.minHullFill};
   auto flat = flattenAndSplit(mesh, facesPerChart(labels.value()), options, limits, set, knownBad, progress);
   if (!flat) return flat.error();
-  auto merges = mergeCharts(mesh, flat.value(), knownBad, options, limits, progress.range(0.8, 1));
+  auto merges = mergeCharts(mesh, flat.value(), knownBad, options, limits, progress.range(0.8, 0.9));
   if (!merges) return merges.error();
   set.merges = merges.value();
-  finish(mesh, std::move(flat.value()), set);
+  std::vector<FlatChart>& charts = flat.value();
+  if (options.maxCharts > 0 && charts.size() > static_cast<size_t>(options.maxCharts)) {
+    // The cap asks for fewer charts than the segmentation made: merge further, whatever the stretch.
+    auto more = mergeDownTo(mesh, charts, options.maxCharts, options.free, progress.range(0.9, 1));
+    if (!more) return more.error();
+    set.merges += more.value();
+    set.capped = true;
+    set.overStretch = static_cast<int32_t>(
+        std::count_if(charts.begin(), charts.end(), [&](const FlatChart& c) { return c.l2 > options.maxStretch; }));
+  }
+  finish(mesh, std::move(charts), set);
   if (!progress("flatten", 1)) return cancelledError("atlas flattening");
   return set;
 }

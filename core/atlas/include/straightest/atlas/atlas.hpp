@@ -34,7 +34,7 @@ struct Atlas {
   std::vector<std::array<int32_t, 2>> seam;  // mesh edges whose two sides have different uv (vertex pairs)
   double seamLength = 0;                     // their 3D length
   int32_t splits = 0, merges = 0;            // segmentation's bookkeeping
-  bool capped = false;                       // maxCharts stopped a split (some chart may exceed maxStretch)
+  bool capped = false;                       // maxCharts stopped a split or merged charts (some may exceed maxStretch)
   AtlasQuality quality;                      // the independent measurement of cornerUv (l2, linf, flipped,
                                              // mirroredCharts, overlaps, minGapTexels, paddingViolations, …)
 };

@@ -32,8 +32,10 @@ namespace straightest {
 
 struct ChartOptions {
   double maxStretch = 1.02;  // per-chart Sander L2 target after flattening (>= 1); charts above it are split
-  int32_t maxCharts = 0;     // 0: no cap; otherwise splitting for stretch stops at this many charts (ChartSet::capped);
-                             // a chart with no flat map is split anyway, so the count can pass it
+  // 0: no cap. Otherwise at most this many charts where the surface allows: splits for stretch or shape stop at
+  // it, and a segmentation with more charts is merged down to it whatever the stretch (ChartSet::capped). A chart
+  // with no flat map is split anyway, and merges only make disks, so a closed surface keeps two or more.
+  int32_t maxCharts = 0;
   // The least fraction of its uv's convex hull a chart may fill (0: any shape). A chart below it (an L, a
   // piece of a ring, a body with its legs) is split like a stretched one: convex pieces pack with few gaps,
   // so the atlas's texels go further, for a little more seam. Splits for shape count toward maxCharts.
@@ -59,8 +61,8 @@ struct ChartSet {
   std::vector<int32_t> chartOfFace;  // per mesh face
   int32_t splits = 0, merges = 0;    // charts split in two, pairs of charts merged
   double l2 = 1, linf = 1;           // the whole atlas's Sander stretch, every chart at its 3D scale
-  int32_t overStretch = 0;           // charts left above maxStretch (only when maxCharts stopped the splits)
-  bool capped = false;               // maxCharts stopped a split
+  int32_t overStretch = 0;           // charts left above maxStretch (only when maxCharts applied)
+  bool capped = false;               // maxCharts stopped a split or merged charts
 };
 
 /// Errors: InvalidArgument (maxStretch < 1 or not finite, minHullFill outside [0, 1], maxCharts < 0,
