@@ -229,7 +229,7 @@ import type {
  * The stages progress reports: straightestPaths 'trace'; parameterize 'source', 'trace', 'weights',
  * 'solve', 'refine', 'metrics'; boundaryPolygons 'trace'; compareParameterizations 'compare';
  * shootGeodesic 'shoot'; exactShortestPaths 'distances'; atlas 'segment', 'flatten', 'pack', 'measure'.
- * Other names may come with new versions.
+ * Each stage reports its own fraction, from 0 to 1. Other names may come with new versions.
  */
 export type ProgressStage =
   | 'source'

@@ -133,7 +133,7 @@ std::string otherCommandsUsage() {
          "  --pretty         indent the JSON output\n"
          "  --json-errors    report errors as {\"error\": ..., \"category\": ...} on stdout\n"
          "  --max-vertices N, --max-faces N   refuse larger meshes (defaults 50M / 100M)\n"
-         "  --progress       progress lines on stderr: STAGE PERCENT (param and paths)\n"
+         "  --progress       progress lines on stderr: STAGE PERCENT, each stage from 0 to 100 (param, paths, atlas)\n"
          "  --threads N      threads to use (default: every core; 1 = the single-threaded path)\n"
          "  -h, --help       this text\n"
          "  --version        print the version (package.json's) and exit\n"

@@ -3,6 +3,7 @@
 // by the test's own winding and round-trip checks, never by the packer's bookkeeping.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -211,6 +212,31 @@ TEST(AtlasPipeline, CancelInEveryStageReturnsCancelledAndLeavesNothingBroken) {
     EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled) << stage;
   }
   expectSound(torus, atlasOf(torus), PackOptions{}.padding);
+}
+
+TEST(AtlasPipeline, EachStageReportsItsOwnRisingFractionFromZeroToOne) {
+  // The stages in order, each from 0 to 1 and never back (a progress bar per stage never jumps back); a
+  // torus whose segmentation is merged down to a cap runs every part of the flatten stage.
+  const TriMesh torus = makeSample("torus").value();
+  AtlasOptions options;
+  options.charts.maxCharts = 5;
+  std::vector<std::pair<std::string, std::vector<double>>> stages;
+  const Expected<Atlas> atlas = buildAtlas(torus, options, [&](const char* stage, double fraction) {
+    if (stages.empty() || stages.back().first != stage) stages.push_back({stage, {}});
+    stages.back().second.push_back(fraction);
+    return true;
+  });
+  ASSERT_TRUE(atlas.ok()) << atlas.error().message;
+  ASSERT_EQ(stages.size(), 4u);
+  const char* order[] = {"segment", "flatten", "pack", "measure"};
+  for (size_t k = 0; k < stages.size(); ++k) {
+    const auto& [name, fractions] = stages[k];
+    EXPECT_EQ(name, order[k]);
+    EXPECT_EQ(fractions.front(), 0) << name;
+    EXPECT_EQ(fractions.back(), 1) << name;
+    const auto falls = std::is_sorted_until(fractions.begin(), fractions.end());
+    EXPECT_TRUE(falls == fractions.end()) << name << " falls back to " << *falls << " from " << *(falls - 1);
+  }
 }
 
 TEST(AtlasPipeline, BadOptionsAreInvalidArguments) {

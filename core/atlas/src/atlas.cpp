@@ -83,12 +83,14 @@ std::vector<int32_t> overlappingCharts(const ChartSet& set, const AtlasQuality& 
 
 Expected<Atlas> buildAtlas(const TriMesh& mesh, const AtlasOptions& options, const Progress& progress) {
   Stopwatch total, lap;
-  Expected<ChartSet> set = makeCharts(mesh, options.charts, progress.range(0, 0.85));
+  // Each stage reports its own 0..1 (progress.hpp). A re-split after packing finds overlaps (rare) is flatten
+  // work after flatten finished (reported at its end), and packs again: the pack stage then runs once more.
+  Expected<ChartSet> set = makeCharts(mesh, options.charts, progress);
   if (!set) return set.error();
   record(options.timings, "charts", lap.lap());
   Atlas atlas;
   for (int round = 0;; ++round) {
-    Expected<Packing> packing = packCharts(chartShapes(set.value()), options.pack, progress.range(0.85, 0.95));
+    Expected<Packing> packing = packCharts(chartShapes(set.value()), options.pack, progress);
     if (!packing) return packing.error();
     record(options.timings, "pack", lap.lap());
     if (!progress("measure", 0)) return cancelledError("atlas");
@@ -96,7 +98,7 @@ Expected<Atlas> buildAtlas(const TriMesh& mesh, const AtlasOptions& options, con
     record(options.timings, "measure", lap.lap());
     if (atlas.quality.overlaps == 0 || round == kRepairRounds) break;
     Expected<void> split = splitCharts(mesh, set.value(), overlappingCharts(set.value(), atlas.quality), options.charts,
-                                       progress.range(0.85, 0.85));
+                                       progress.range(1, 1));
     if (!split) return split.error();
     record(options.timings, "charts", lap.lap());
   }

@@ -85,17 +85,24 @@ std::vector<int32_t> unionOf(const std::vector<int32_t>& a, const std::vector<in
   std::merge(a.begin(), a.end(), b.begin(), b.end(), faces.begin());
   return faces;
 }
+
 /// Rounds of disjoint merge trials under `rule`, until none is left, the budget is spent or the rule's
 /// fewest charts is reached.
 Expected<int32_t> mergeRounds(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
                               const MergeRule& rule, const FreeBoundaryOptions& free, const Progress& progress) {
   int32_t merges = 0;
-  int64_t budget = kTrialFacesPerFace * static_cast<int64_t>(mesh.numFaces());
+  const int64_t fullBudget = kTrialFacesPerFace * static_cast<int64_t>(mesh.numFaces());
+  int64_t budget = fullBudget;
+  // Progress is the budget spent, so it only grows from round to round.
+  auto spent = [&] {
+    return std::min(1.0, static_cast<double>(fullBudget - budget) / static_cast<double>(fullBudget));
+  };
   while (budget > 0 && charts.size() > rule.fewestCharts) {
     std::vector<MergeTrial> trials = chooseTrials(mesh, charts, knownBad, rule);
     // Each merge takes one chart away: no more trials than charts above the fewest.
     if (rule.fewestCharts > 0) trials.resize(std::min(trials.size(), charts.size() - rule.fewestCharts));
     std::vector<std::vector<int32_t>> unions;
+    const double roundBegins = spent();
     for (const MergeTrial& t : trials) {
       if (budget <= 0) break;  // the trials are best first: the ones left out matter least
       unions.push_back(unionOf(charts[t.a].faces, charts[t.b].faces));
@@ -103,7 +110,7 @@ Expected<int32_t> mergeRounds(const TriMesh& mesh, std::vector<FlatChart>& chart
     }
     if (unions.empty()) break;
     trials.resize(unions.size());
-    auto flattened = flattenCharts(mesh, std::move(unions), rule.limits, free, progress);
+    auto flattened = flattenCharts(mesh, std::move(unions), rule.limits, free, progress.range(roundBegins, spent()));
     if (!flattened) return flattened.error();
     std::vector<uint8_t> gone(charts.size(), 0);
     int32_t merged = 0;

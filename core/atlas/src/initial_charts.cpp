@@ -126,6 +126,7 @@ std::vector<int32_t> reseedLeftovers(const TriMesh& mesh, const std::vector<Vec3
 Expected<std::vector<int32_t>> initialCharts(const TriMesh& mesh, const std::vector<Vec3>& centroids, GrowthCost cost,
                                              const Progress& progress) {
   ThrottledProgress throttled(progress, "segment");
+  if (!throttled(0)) return cancelledError("atlas segmentation");
   const std::vector<int32_t> seeds = initialSeeds(mesh, centroids, cost.maxFaces);
   double area = 0;
   for (int32_t f = 0; f < mesh.numFaces(); ++f) area += mesh.faceArea(f);
@@ -140,6 +141,7 @@ Expected<std::vector<int32_t>> initialCharts(const TriMesh& mesh, const std::vec
   }
   std::vector<int32_t> labels = grower.labels();
   smoothChartBorders(mesh, labels, cost.maxFaces);
+  if (!progress("segment", 1)) return cancelledError("atlas segmentation");
   return labels;
 }
 

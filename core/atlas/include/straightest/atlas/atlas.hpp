@@ -39,7 +39,8 @@ struct Atlas {
                                              // mirroredCharts, overlaps, minGapTexels, paddingViolations, …)
 };
 
-/// Progress stages "segment", "flatten", "pack", "measure"; cancelling returns a Cancelled error. Errors:
+/// Progress stages "segment", "flatten", "pack", "measure", each from 0 to 1 (pack once more after a re-split of
+/// charts that overlapped once placed); cancelling returns a Cancelled error. Errors:
 /// makeCharts' and packCharts' (InvalidArgument for bad options), Cancelled.
 Expected<Atlas> buildAtlas(const TriMesh& mesh, const AtlasOptions& options = {}, const Progress& progress = {});
 
