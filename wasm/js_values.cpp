@@ -42,6 +42,8 @@ namespace {
 
 std::string describe(const val& v) {
   if (v.isUndefined()) return "undefined";
+  // JSON would write NaN and the infinities as null.
+  if (v.typeOf().as<std::string>() == "number") return val::global("String")(v).as<std::string>();
   const val text = val::global("JSON").call<val>("stringify", v);
   return text.isString() ? text.as<std::string>() : "undefined";
 }

@@ -166,6 +166,12 @@ TEST(ObjReader, AForwardIndexPastTheLastVertexNamesItsLine) {
   EXPECT_EQ(e.message, "line 2: face 0 refers to vertex 4 (1-based), but the file has 3 vertices");
 }
 
+TEST(ObjReader, AVertexIsNamedAsTheFileCountsIt) {
+  EXPECT_EQ(objError("v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nf 1 2 3\n").message,
+            "line 4: vertex 4 (1-based) has a non-finite coordinate 'nan'");
+  EXPECT_EQ(objError("v 0 0 0\nv 1 0\n").message, "line 2: vertex 2 (1-based) has 2 coordinates, expected at least 3");
+}
+
 TEST(ObjReader, ErrorsComeInFileOrderLineErrorsFirst) {
   // A malformed line anywhere wins over a missing vertex, which is only known at the end of the file.
   const Error e = objError("f 1 2 9\nv 0 0 0\nv 1 0 0\nv nan 0 0\n");

@@ -135,7 +135,7 @@ Expected<Packing> packChecked(const std::vector<ChartShape>& charts, const PackO
     if (outcome == PackOutcome::Cancelled) return cancelledError("packing");
     if (outcome == PackOutcome::DoesNotFit)
       return Error{ErrorCode::TooLarge, "pack: the charts do not fit in " + std::to_string(frame.width) + " x " +
-                                            std::to_string(frame.height) + " texels at " + std::to_string(scale) +
+                                            std::to_string(frame.height) + " texels at " + numberText(scale) +
                                             " texels per unit (texelsPerUnit 0 finds the largest that fits)"};
   } else {
     auto found = largestFittingScale(search, placements);

@@ -142,10 +142,10 @@ Expected<void> splitCharts(const TriMesh& mesh, ChartSet& set, const std::vector
 Expected<ChartSet> makeCharts(const TriMesh& mesh, const ChartOptions& options, const Progress& progress) {
   if (!std::isfinite(options.maxStretch) || options.maxStretch < 1)
     return Error{ErrorCode::InvalidArgument,
-                 "maxStretch must be a finite number >= 1, not " + std::to_string(options.maxStretch)};
+                 "maxStretch must be a finite number >= 1, not " + numberText(options.maxStretch)};
   if (!(options.minHullFill >= 0 && options.minHullFill <= 1))
     return Error{ErrorCode::InvalidArgument,
-                 "minHullFill must be a number in [0, 1], not " + std::to_string(options.minHullFill)};
+                 "minHullFill must be a number in [0, 1], not " + numberText(options.minHullFill)};
   if (options.maxCharts < 0)
     return Error{ErrorCode::InvalidArgument,
                  "maxCharts must be 0 (no cap) or positive, not " + std::to_string(options.maxCharts)};

@@ -26,13 +26,13 @@ std::optional<Error> checkSize(const PackOptions& options) {
 
 std::optional<Error> checkScaleAndPadding(const PackOptions& options) {
   if (!std::isfinite(options.padding) || options.padding < 0)
-    return invalid("pack: padding must be a finite number of texels >= 0, got " + std::to_string(options.padding));
+    return invalid("pack: padding must be a finite number of texels >= 0, got " + numberText(options.padding));
   if (!std::isfinite(options.texelsPerUnit) || options.texelsPerUnit < 0)
     return invalid("pack: texelsPerUnit must be finite and >= 0 (0: the largest that fits), got " +
-                   std::to_string(options.texelsPerUnit));
+                   numberText(options.texelsPerUnit));
   const AtlasFrame frame = atlasFrame(options);
   if (2 * static_cast<double>(frame.border) >= std::min(frame.width, frame.height))
-    return invalid("pack: a padding of " + std::to_string(options.padding) + " texels leaves no room in a " +
+    return invalid("pack: a padding of " + numberText(options.padding) + " texels leaves no room in a " +
                    std::to_string(frame.width) + " x " + std::to_string(frame.height) + " atlas");
   return std::nullopt;
 }
@@ -45,8 +45,8 @@ std::optional<Error> checkChart(const ChartShape& chart, size_t index) {
   for (size_t i = 0; i < chart.triangles.size(); ++i) {
     const Vec2 p = chart.triangles[i];
     if (!isFinite(p) || std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate)
-      return invalid(name + ", triangle " + std::to_string(i / 3) + ": point (" + std::to_string(p.x) + ", " +
-                     std::to_string(p.y) + ") is not finite (or beyond 1e50)");
+      return invalid(name + ", triangle " + std::to_string(i / 3) + ": point (" + numberText(p.x) + ", " +
+                     numberText(p.y) + ") is not finite (or beyond 1e50)");
   }
   return std::nullopt;
 }

@@ -1,6 +1,8 @@
-// error.cpp — the error codes' user-visible names and the one mapping of a caught exception to an Error.
+// error.cpp — the error codes' user-visible names, numbers as messages write them, and the one mapping of a
+// caught exception to an Error.
 #include "straightest/base/error.hpp"
 
+#include <cstdio>
 #include <exception>
 #include <new>
 
@@ -34,6 +36,12 @@ std::vector<std::string> errorCodeNames() {
   for (int c = 0; c <= static_cast<int>(ErrorCode::Internal); ++c)
     names.push_back(errorCodeName(static_cast<ErrorCode>(c)));
   return names;
+}
+
+std::string numberText(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
 }
 
 Error errorFromCurrentException() {

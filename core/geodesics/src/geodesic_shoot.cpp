@@ -29,7 +29,7 @@ Expected<SurfacePoint> prepare(const TriMesh& mesh, const SurfacePoint& source, 
   auto valid = validateSurfacePoint(mesh, source);
   if (!valid) return valid.error();
   if (needLength && !(length > 0 && std::isfinite(length)))
-    return invalid("the length must be a positive finite number, got " + std::to_string(length));
+    return invalid("the length must be a positive finite number, got " + numberText(length));
   return canonical(mesh, valid.value(), kSnapSource);
 }
 

@@ -197,20 +197,21 @@ class ObjReader {
   std::optional<Error> readVertexStrictly(std::string_view raw, size_t keyword, int64_t line) {
     if (longExponent(raw)) return parseError(line, "a number has an exponent with more than 4 digits");
     text::tokenize(text::stripComment(raw.substr(keyword + 2)), tokens_, 4);
-    const int64_t vertex = static_cast<int64_t>(soup_.positions.size());
+    // Named as the file counts its vertices (from 1), as the faces' indices are.
+    const std::string vertex = std::to_string(soup_.positions.size() + 1) + " (1-based)";
     if (tokens_.count < 3)
-      return parseError(line, "vertex " + std::to_string(vertex) + " has " + std::to_string(tokens_.count) +
+      return parseError(line, "vertex " + vertex + " has " + std::to_string(tokens_.count) +
                                   " coordinates, expected at least 3");
     double c[3];
     for (int k = 0; k < 3; ++k) {
       const std::string_view token = tokens_.items[k];
       const NumberStatus status = text::parseDouble(token, c[k]);
       if (status == NumberStatus::NonFinite)
-        return Error{ErrorCode::NonFinite, "line " + std::to_string(line) + ": vertex " + std::to_string(vertex) +
+        return Error{ErrorCode::NonFinite, "line " + std::to_string(line) + ": vertex " + vertex +
                                                " has a non-finite coordinate " + quoted(token)};
       if (status != NumberStatus::Ok || !text::isPlainDecimal(token))
-        return parseError(line, "vertex " + std::to_string(vertex) + ": coordinate " + quoted(token) +
-                                    " is not a plain decimal number");
+        return parseError(line,
+                          "vertex " + vertex + ": coordinate " + quoted(token) + " is not a plain decimal number");
     }
     soup_.positions.push_back({c[0], c[1], c[2]});
     return std::nullopt;

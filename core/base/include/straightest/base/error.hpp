@@ -74,6 +74,10 @@ class Expected<void> {
   std::optional<Error> error_;
 };
 
+/// A number as an error message shows it: six significant digits at most, no trailing zeros ("0.5", "2",
+/// "1e+300", "inf", "nan"), where std::to_string would write "0.500000" or three hundred digits.
+std::string numberText(double x);
+
 /// The error for the exception being handled (call inside a catch block): allocation failure is
 /// TooLarge ("… too large for the available memory"), anything else Internal. The CLI and the
 /// bindings both end their work in this one mapping.
