@@ -16,7 +16,10 @@ export interface AtlasOptions {
    * anyway and merges only make disks, so a closed surface keeps two or more.
    */
   maxCharts?: number;
-  /** Side of the square atlas in texels (1..16384, default 1024) when width and height are 0. */
+  /**
+   * Side of the square atlas in texels (1..16384, default 1024) when width and height are 0. Above 4096 the
+   * charts are packed on a grid k = ceil(side / 4096) times coarser and placed k times larger.
+   */
   resolution?: number;
   /** Atlas width in texels (1..16384; default 0: resolution); set with height. */
   width?: number;

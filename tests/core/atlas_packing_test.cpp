@@ -167,6 +167,29 @@ TEST(AtlasPackOverlap, RectangularAtlasWithoutRotation) {
   expectPaddingKept(testCharts(40, 3), options);
 }
 
+TEST(AtlasPackOverlap, AnAtlasWiderThan4096IsPackedOnACoarserGridAndScaledUp) {
+  // Past 4096 texels a side the packer works on a grid k times coarser (its cost grows with the texels): a
+  // 4100-texel atlas is the 2050-texel packing at twice the scale, its gaps and border twice as wide, so the
+  // padding asked for is kept (and more).
+  const auto charts = testCharts(20, 6);
+  PackOptions wide;
+  wide.resolution = 4100;
+  wide.padding = 3;
+  expectPaddingKept(charts, wide);
+  PackOptions half = wide;
+  half.resolution = 2050;
+  half.padding = 1.5;
+  const Packing big = packOrFail(charts, wide), small = packOrFail(charts, half);
+  EXPECT_EQ(big.width, 4100);
+  EXPECT_DOUBLE_EQ(big.texelsPerUnit, 2 * small.texelsPerUnit);
+  EXPECT_DOUBLE_EQ(big.utilization, small.utilization);
+  for (size_t c = 0; c < charts.size(); ++c) {
+    EXPECT_EQ(big.placements[c].angle, small.placements[c].angle);
+    EXPECT_EQ(big.placements[c].offset.x, 2 * small.placements[c].offset.x);
+    EXPECT_EQ(big.placements[c].offset.y, 2 * small.placements[c].offset.y);
+  }
+}
+
 TEST(AtlasPackOverlap, ZeroPaddingChartsNeverOverlap) {
   PackOptions options;
   options.resolution = 128;

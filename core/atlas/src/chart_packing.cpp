@@ -2,6 +2,7 @@
 // the greedy packing fits (or the one packing at the density asked for), and the placement formula.
 #include "straightest/atlas/chart_packing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -17,6 +18,11 @@ using atlas_detail::ChartMeasures;
 using atlas_detail::PackOutcome;
 
 constexpr const char* kStage = "pack";
+// A packing's time and memory grow with the atlas's texels (its bitmaps, every chart's masks at every turn).
+// Past this side the charts are packed on a grid k times coarser and placed k times larger: the same
+// charts, with gaps and borders at least as wide (a coarse texel is k × k fine ones), for a few hundredths
+// of utilization.
+constexpr int32_t kFinestPackingSide = 4096;
 // The scale search expects about this many packings (progress is reported against it).
 constexpr double kExpectedTrials = 12;
 // Below this the search gives up: the charts need more padded texels than the atlas has.
@@ -146,12 +152,40 @@ Expected<Packing> packChecked(const std::vector<ChartShape>& charts, const PackO
   return finishedPacking(frame, scale, std::move(placements), measures.totalArea);
 }
 
+/// packChecked, on a coarser grid when the atlas is wider than kFinestPackingSide.
+Expected<Packing> packOnFinestGrid(const std::vector<ChartShape>& charts, const PackOptions& options,
+                                   const Progress& progress) {
+  const AtlasFrame frame = atlas_detail::atlasFrame(options);
+  const int32_t k = (std::max(frame.width, frame.height) + kFinestPackingSide - 1) / kFinestPackingSide;
+  if (k <= 1) return packChecked(charts, options, progress);
+  PackOptions coarse = options;
+  coarse.width = std::max(frame.width / k, 1);
+  coarse.height = std::max(frame.height / k, 1);
+  coarse.padding = options.padding / k;
+  coarse.texelsPerUnit = options.texelsPerUnit / k;
+  Expected<Packing> packed = packChecked(charts, coarse, progress);
+  if (!packed) {
+    if (packed.error().code != ErrorCode::TooLarge || options.texelsPerUnit <= 0) return packed;
+    return Error{ErrorCode::TooLarge, "pack: the charts do not fit in " + std::to_string(frame.width) + " x " +
+                                          std::to_string(frame.height) + " texels at " +
+                                          numberText(options.texelsPerUnit) + " texels per unit"};
+  }
+  Packing packing = std::move(packed.value());
+  const double coarseTexels = static_cast<double>(packing.width) * packing.height;
+  packing.width = frame.width;
+  packing.height = frame.height;
+  packing.texelsPerUnit *= k;
+  for (Placement& placement : packing.placements) placement.offset = placement.offset * static_cast<double>(k);
+  packing.utilization *= coarseTexels * k * k / (static_cast<double>(frame.width) * frame.height);
+  return packing;
+}
+
 }  // namespace
 
 Expected<Packing> packCharts(const std::vector<ChartShape>& charts, const PackOptions& options,
                              const Progress& progress) {
   if (auto error = atlas_detail::checkPackInput(charts, options)) return *error;
-  return guarded([&] { return packChecked(charts, options, progress); });
+  return guarded([&] { return packOnFinestGrid(charts, options, progress); });
 }
 
 Vec2 placeInTexels(const Packing& packing, int32_t chart, Vec2 uv) {

@@ -31,7 +31,9 @@ namespace straightest {
 inline constexpr int32_t kMaxAtlasSide = 16384;
 
 struct PackOptions {
-  int32_t resolution = 1024;      // square atlas side in texels when width and height are 0
+  // Square atlas side in texels when width and height are 0. An atlas wider than 4096 texels is packed on a grid
+  // k = ceil(side / 4096) times coarser and placed k times larger (so its gaps are multiples of k texels).
+  int32_t resolution = 1024;
   int32_t width = 0, height = 0;  // both 0 (use resolution) or both positive
   double padding = 2;             // texels between any two charts; ceil(padding / 2) from the atlas border
   double texelsPerUnit = 0;       // 0: the largest scale at which everything fits
