@@ -114,6 +114,9 @@ std::string otherCommandsUsage() {
          "      --padding P            texels between charts (default " +
          std::to_string(static_cast<int>(PackOptions{}.padding)) +
          ")\n"
+         "      --width W --height H   a W x H atlas instead of the square (both given)\n"
+         "      --texels-per-unit T    this texel density (default: the largest at which the charts fit)\n"
+         "      --no-rotate            keep each chart's orientation (default: turned to pack tighter)\n"
          "      -o OUT.obj             write the mesh with a vt per distinct corner uv (f v/vt)\n"
          "  distances MESH   geodesic distances from a source to vertices\n"
          "      --source auto|N        source vertex (default auto)\n"
@@ -274,6 +277,10 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--max-charts") o.atlas.charts.maxCharts = parseCountOrZero32(a, value());
     else if (a == "--resolution") o.atlas.pack.resolution = parseCount32(a, value());
     else if (a == "--padding") o.atlas.pack.padding = parseNonNegative(a, value());
+    else if (a == "--width") o.atlas.pack.width = parseCount32(a, value());
+    else if (a == "--height") o.atlas.pack.height = parseCount32(a, value());
+    else if (a == "--texels-per-unit") o.atlas.pack.texelsPerUnit = parsePositive(a, value());
+    else if (a == "--no-rotate") o.atlas.pack.rotate = false;
     else if (a == "--threads")
       o.threads = static_cast<int>(std::min<int64_t>(parseCount(a, value()), std::numeric_limits<int>::max()));
     else if (a == "-o" || a == "--output") o.output = parseObjPath(a, value());
