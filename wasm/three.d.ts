@@ -47,7 +47,8 @@ export interface UnwrapOptions extends AtlasOptions, MeshFromBufferGeometryOptio
  * cross the geometry's uv and normal seams, where its vertices repeat; the new geometry keeps its own vertices.
  * The new geometry is split along the atlas's seams (one vertex per distinct geometry vertex and uv), keeps
  * every other attribute, morph target, group and the triangles' order, and has the atlas uv on `channel`;
- * userData.vertexOrigin maps each of its vertices to the geometry's.
+ * userData.vertexOrigin maps each of its vertices to the geometry's. Every triangle of the geometry is unwrapped
+ * (drawRange is not looked at).
  */
 export function unwrap(
   st: Straightest,

@@ -91,6 +91,11 @@ class WorkerMesh {
 }
 
 function defaultWorker() {
+  if (typeof Worker !== 'function')
+    throw new TypeError(
+      'createStraightestWorker needs Web Workers (a browser, or Deno), which Node lacks: in Node call ' +
+        'createStraightest, or pass createWorker that makes a Worker-like object',
+    );
   return new Worker(new URL('./worker-entry.js', import.meta.url), { type: 'module' });
 }
 

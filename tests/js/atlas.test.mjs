@@ -399,6 +399,14 @@ test('straightest/three unwrap finds each corner by its vertex where the core re
   mesh.delete();
 });
 
+test('createStraightestWorker without Web Workers (Node) says what to use instead', async () => {
+  assert.equal(typeof globalThis.Worker, 'undefined', 'this test runs where Worker is missing');
+  await assert.rejects(
+    createStraightestWorker(),
+    (e) => e instanceof TypeError && /createStraightest\b/.test(e.message),
+  );
+});
+
 test('straightest/three unwrap takes three’s own primitives as they come (their seams and caps welded)', async () => {
   const { BoxGeometry, ConeGeometry, CylinderGeometry, SphereGeometry } = await import('three');
   for (const geometry of [
