@@ -6,8 +6,7 @@
 //
 //   node tests/e2e/first-atlas.bench.mjs MESH...      (IDLE_MS=5000)
 
-import { chromium } from 'playwright-core';
-import { startServer } from '../../scripts/serve.mjs';
+import { startBenchBrowser, whenIdle } from './support/fixtures.mjs';
 
 const files = process.argv.slice(2);
 if (files.length === 0) {
@@ -15,22 +14,12 @@ if (files.length === 0) {
   process.exit(2);
 }
 const idleMs = Number(process.env.IDLE_MS ?? 5000);
-const server = await startServer({ port: 0 });
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-});
+const { browser, pageUrl, close } = await startBenchBrowser();
 try {
   for (const file of files) {
     const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-    await page.goto(`http://127.0.0.1:${server.address().port}/web/index.html`);
-    const idle = (predicate) =>
-      page.waitForFunction(
-        `document.body.dataset.state === 'ready' && !window.__straightest.progress.busy && (${predicate})`,
-        null,
-        { timeout: 300_000, polling: 100 },
-      );
+    await page.goto(pageUrl);
+    const idle = (predicate) => whenIdle(page, predicate, 300_000);
     await idle('window.__straightest.param');
     await page.waitForTimeout(idleMs);
     await page.setInputFiles('#file-input', file);
@@ -44,6 +33,5 @@ try {
     await page.close();
   }
 } finally {
-  await browser.close();
-  server.close();
+  await close();
 }

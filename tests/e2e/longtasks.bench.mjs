@@ -10,8 +10,7 @@
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { chromium } from 'playwright-core';
-import { startServer } from '../../scripts/serve.mjs';
+import { startBenchBrowser, whenIdle } from './support/fixtures.mjs';
 import { heightFieldObj } from './support/meshes.mjs';
 
 const n = Number(process.argv[2] ?? 1000);
@@ -19,12 +18,7 @@ const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'straightest-longtasks-'));
 const file = path.join(dir, `heightfield-${n}.obj`);
 fs.writeFileSync(file, heightFieldObj(n));
 
-const server = await startServer({ port: 0 });
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-});
+const { browser, pageUrl, close } = await startBenchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   // Every long task from the first script on, with its start (ms since navigation) and duration.
@@ -35,13 +29,8 @@ try {
         window.__longTasks.push({ start: entry.startTime, duration: entry.duration });
     }).observe({ type: 'longtask', buffered: true });
   });
-  await page.goto(`http://127.0.0.1:${server.address().port}/web/index.html`);
-  const idle = (predicate, timeout = 600_000) =>
-    page.waitForFunction(
-      `document.body.dataset.state === 'ready' && !window.__straightest.progress.busy && (${predicate})`,
-      null,
-      { timeout, polling: 200 },
-    );
+  await page.goto(pageUrl);
+  const idle = (predicate) => whenIdle(page, predicate);
   // Until the page has drawn no frame and had no long task for `ms`: what a phase leaves behind (the
   // uploads, the first frames; the opening sample's textured frame, which compiles a shader and
   // uploads the checkerboard, can come after its parameterization is shown) is counted in that phase,
@@ -96,8 +85,6 @@ try {
     );
   }
 } finally {
-  await browser.close();
-  server.closeAllConnections();
-  server.close();
+  await close();
   fs.rmSync(dir, { recursive: true, force: true });
 }

@@ -162,6 +162,33 @@ export function pageTest(
   });
 }
 
+/**
+ * For a bench script (not a test): the static server and a Chromium launched as the tests launch it.
+ * Resolves with { browser, pageUrl, close }; close() stops both.
+ */
+export async function startBenchBrowser() {
+  const server = await startServer({ port: 0 });
+  const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, headless: true, args: CHROMIUM_ARGS });
+  return {
+    browser,
+    pageUrl: `http://127.0.0.1:${server.address().port}/web/index.html`,
+    async close() {
+      await browser.close();
+      server.closeAllConnections();
+      server.close();
+    },
+  };
+}
+
+/** Waits (up to `timeout` ms) until the page is ready, no work is under way and `predicate` holds. */
+export function whenIdle(page, predicate, timeout = 600_000) {
+  return page.waitForFunction(
+    `document.body.dataset.state === 'ready' && !window.__straightest.progress.busy && (${predicate})`,
+    null,
+    { timeout, polling: 100 },
+  );
+}
+
 /** Waits until the page has finished loading something and returns its state and hooks. */
 export async function settled(page, predicate = 'true') {
   try {
