@@ -15,6 +15,9 @@ export function meshFromBufferGeometry(st, geometry, { weld = false } = {}) {
 
 const TOPOLOGY_ERRORS = ['non_manifold_edge', 'non_manifold_vertex'];
 
+/** Whether the weld option asks for welding (true or a distance; false, null and undefined do not). */
+const welds = (weld) => weld !== false && weld !== null && weld !== undefined;
+
 /**
  * The Mesh of meshArrays' arrays. A topology error gets a sentence on welding: whether the geometry's
  * vertices are joined by position decides which surfaces touch where (three's CylinderGeometry and
@@ -25,8 +28,7 @@ function meshOfArrays(st, { positions, indices }, weld) {
     return st.meshFromArrays(positions, indices);
   } catch (e) {
     if (!TOPOLOGY_ERRORS.includes(e?.category)) throw e;
-    const welded = weld !== false && weld !== null && weld !== undefined;
-    const hint = welded
+    const hint = welds(weld)
       ? 'the vertices were welded by position: weld: false keeps the geometry’s own'
       : 'weld: true joins the geometry’s vertices that share a position (as three’s cylinder and cone caps need)';
     throw new StraightestError(`${e.message} (${hint})`, e.category, { cause: e });
@@ -49,7 +51,7 @@ function meshArrays(geometry, weld, call) {
   const index = geometry.getIndex();
   const corners = index ? Uint32Array.from(index.array) : Uint32Array.from({ length: position.count }, (_, i) => i);
   let indices = corners;
-  if (weld !== false && weld !== null && weld !== undefined) {
+  if (welds(weld)) {
     ({ positions, indices } = weldVertices(positions, indices, weldTolerance(positions, weld)));
   }
   return { positions, indices, corners };
