@@ -29,19 +29,21 @@ std::vector<int32_t> paddingReach(double padding) {
 AtlasOccupancy::AtlasOccupancy(int32_t width, int32_t height, int32_t border, double padding)
     : longestFreeRun_(height, 0), dilationReach_(paddingReach(padding)) {
   for (TexelMask& spans : spans_) spans = TexelMask(width, height);
-  summaryWords_ = (free_.wordsPerRow() + 63) / 64;
+  summaryWords_ = (freeTexels().wordsPerRow() + 63) / 64;
   for (auto& summary : wordSummary_) summary.assign(static_cast<size_t>(summaryWords_) * height, 0);
-  for (int32_t y = border; y < height - border; ++y) free_.assignSpan(y, border, width - border - 1, true);
-  for (int32_t y = 0; y < height; ++y) updateRow(y);
+  for (int32_t y = border; y < height - border; ++y) freeTexels().assignSpan(y, border, width - border - 1, true);
+  const WordRange everyWord{0, freeTexels().wordsPerRow() - 1};
+  for (int32_t y = 0; y < height; ++y) updateRow(y, everyWord);
   freeInFourRows_ = TexelMask(width, height);
   freeInSixteenRows_ = TexelMask(width, height);
   for (auto& runs : longestFreeBlockRun_) runs.assign(height, 0);
-  updateBlocks(0, height - 1);
+  for (auto& lowest : lowestBlockRow_) lowest.assign(width + 1, 0);
+  updateBlocks(0, height - 1, everyWord);
 }
 
-void AtlasOccupancy::updateBlocks(int32_t firstRow, int32_t lastRow) {
+void AtlasOccupancy::updateBlocks(int32_t firstRow, int32_t lastRow, WordRange changed) {
   static_assert(kBlockRows[0] == 4 && kBlockRows[1] == 16, "blocks of 16 rows are four blocks of 4");
-  const int32_t words = free_.wordsPerRow();
+  const int32_t words = freeTexels().wordsPerRow();
   // Rows whose blocks reach into [firstRow, lastRow]: blocks of 4 first, as the blocks of 16 are made of them.
   for (int32_t y = std::max(0, firstRow - 3); y <= lastRow; ++y) {
     uint64_t* four = freeInFourRows_.row(y);
@@ -50,9 +52,9 @@ void AtlasOccupancy::updateBlocks(int32_t firstRow, int32_t lastRow) {
       longestFreeBlockRun_[0][y] = 0;
       continue;
     }
-    std::copy(free_.row(y), free_.row(y) + words, four);
-    for (int32_t i = 1; i < 4; ++i)
-      for (int32_t k = 0; k < words; ++k) four[k] &= free_.row(y + i)[k];
+    for (int32_t k = changed.first; k <= changed.last; ++k)
+      four[k] = freeTexels().row(y)[k] & freeTexels().row(y + 1)[k] & freeTexels().row(y + 2)[k] &
+                freeTexels().row(y + 3)[k];
     longestFreeBlockRun_[0][y] = longestRunOfBits(four, width());
   }
   for (int32_t y = std::max(0, firstRow - 15); y <= lastRow; ++y) {
@@ -62,11 +64,24 @@ void AtlasOccupancy::updateBlocks(int32_t firstRow, int32_t lastRow) {
       longestFreeBlockRun_[1][y] = 0;
       continue;
     }
-    for (int32_t k = 0; k < words; ++k)
+    for (int32_t k = changed.first; k <= changed.last; ++k)
       sixteen[k] = freeInFourRows_.row(y)[k] & freeInFourRows_.row(y + 4)[k] & freeInFourRows_.row(y + 8)[k] &
                    freeInFourRows_.row(y + 12)[k];
     longestFreeBlockRun_[1][y] = longestRunOfBits(sixteen, width());
   }
+}
+
+int32_t AtlasOccupancy::lowestRowForBlocks(const ChartMask& mask) const {
+  int32_t lowest = 0;
+  for (int b = 0; b < 2; ++b) {
+    const BlockRun& block = mask.blocks[b];
+    if (block.length == 0) continue;
+    // Texels are only ever taken, so the lowest row with a free run this long only moves up.
+    int32_t& row = lowestBlockRow_[b][block.length];
+    while (row < height() && longestFreeBlockRun_[b][row] < block.length) ++row;
+    lowest = std::max(lowest, row - block.row);
+  }
+  return lowest;
 }
 
 bool AtlasOccupancy::blocksFitAtRow(const ChartMask& mask, int32_t y) const {
@@ -77,32 +92,38 @@ bool AtlasOccupancy::blocksFitAtRow(const ChartMask& mask, int32_t y) const {
   return true;
 }
 
-void AtlasOccupancy::updateRow(int32_t y) {
+void AtlasOccupancy::updateRow(int32_t y, WordRange changed) {
   int32_t longest = 0;
-  for (int32_t x = free_.nextWithBit(y, 0, true); x < width();) {
-    const int32_t end = free_.nextWithBit(y, x, false);
+  for (int32_t x = freeTexels().nextWithBit(y, 0, true); x < width();) {
+    const int32_t end = freeTexels().nextWithBit(y, x, false);
     longest = std::max(longest, end - x);
-    x = free_.nextWithBit(y, end, true);
+    x = freeTexels().nextWithBit(y, end, true);
   }
   longestFreeRun_[y] = longest;
-  updateSpans(y);
+  updateSpans(y, changed);
 }
 
-void AtlasOccupancy::updateSpans(int32_t y) {
-  const int32_t count = free_.wordsPerRow();
-  for (int32_t level = 1, span = 1; level < kLevels; ++level) {
+void AtlasOccupancy::updateSpans(int32_t y, WordRange changed) {
+  const int32_t count = freeTexels().wordsPerRow();
+  // A span's bit at p reads the free texels p … p + 63, so the words before the change's first one move too.
+  const WordRange moved{std::max(changed.first - 1, 0), changed.last};
+  for (int32_t level = 1, span = 1; level < kLevels; ++level, span *= 4) {
+    // Spans of 4s texels from spans of s: bits p, p + s, p + 2s and p + 3s.
+    const uint64_t* shorter = spans_[level - 1].row(y);
     uint64_t* words = spans_[level].row(y);
-    std::copy(spans_[level - 1].row(y), spans_[level - 1].row(y) + count, words);
-    // Spans of 2s texels from spans of s: bit p and bit p + s. Forward in place: word k reads words ≥ k only.
-    for (const int32_t target = span * 4; span < target; span *= 2) {
-      for (int32_t k = 0; k < count; ++k) words[k] &= TexelMask::bitsFromWords(words, count, 64 * k + span);
+    for (int32_t k = moved.first; k <= moved.last; ++k) {
+      uint64_t all = ~uint64_t{0};
+      for (int32_t i = 0; i < 4; ++i) all &= TexelMask::bitsFromWords(shorter, count, 64 * k + i * span);
+      words[k] = all;
     }
   }
   for (int32_t level = 0; level < kLevels; ++level) {
     uint64_t* summary = wordSummary_[level].data() + static_cast<size_t>(y) * summaryWords_;
-    std::fill(summary, summary + summaryWords_, 0);
     const uint64_t* words = spans_[level].row(y);
-    for (int32_t k = 0; k < count; ++k) summary[k >> 6] |= uint64_t{words[k] != 0} << (k & 63);
+    for (int32_t k = moved.first; k <= moved.last; ++k) {
+      const uint64_t bit = uint64_t{1} << (k & 63);
+      summary[k >> 6] = words[k] != 0 ? summary[k >> 6] | bit : summary[k >> 6] & ~bit;
+    }
   }
 }
 
@@ -202,7 +223,7 @@ std::optional<TexelPosition> AtlasOccupancy::firstFit(const ChartMask& mask, int
   if (lastX < 0) return std::nullopt;
   prepareSpanTests(mask);
   lastEmptyingTest_ = 0;
-  for (int32_t y = 0; y <= lastY; ++y) {
+  for (int32_t y = lowestRowForBlocks(mask); y <= lastY; ++y) {
     if (!blocksFitAtRow(mask, y) || !runsFitAtRow(mask, y)) continue;
     if (const auto x = leftmostFitInRow(y, lastX)) return TexelPosition{*x, y};
   }
@@ -215,13 +236,16 @@ void AtlasOccupancy::claim(const ChartMask& mask, TexelPosition position) {
     const int32_t x0 = position.x + run.start, x1 = x0 + run.length - 1, y = position.y + run.row;
     for (int32_t dy = -reach; dy <= reach; ++dy) {
       const int32_t dx = dilationReach_[std::abs(dy)];
-      free_.assignSpan(y + dy, x0 - dx, x1 + dx, false);
+      freeTexels().assignSpan(y + dy, x0 - dx, x1 + dx, false);
     }
   }
   const int32_t firstRow = std::max(0, position.y - reach);
   const int32_t lastRow = std::min(height() - 1, position.y + mask.texels.height() - 1 + reach);
-  for (int32_t y = firstRow; y <= lastRow; ++y) updateRow(y);
-  updateBlocks(firstRow, lastRow);
+  const int32_t reachX = dilationReach_[0];
+  const WordRange changed{std::max(position.x - reachX, 0) >> 6,
+                          std::min(position.x + mask.texels.width() - 1 + reachX, width() - 1) >> 6};
+  for (int32_t y = firstRow; y <= lastRow; ++y) updateRow(y, changed);
+  updateBlocks(firstRow, lastRow, changed);
 }
 
 }  // namespace straightest::atlas_detail

@@ -14,6 +14,11 @@ struct TexelPosition {
   int32_t x = 0, y = 0;
 };
 
+/// Words [first, last] of a row (inclusive).
+struct WordRange {
+  int32_t first = 0, last = 0;
+};
+
 class AtlasOccupancy {
  public:
   /// An atlas of width × height texels whose outer `border` texels are never free; charts are kept
@@ -30,8 +35,8 @@ class AtlasOccupancy {
   /// free is at least `padding` away from this one, continuous geometry included.
   void claim(const ChartMask& mask, TexelPosition position);
 
-  int32_t width() const { return free_.width(); }
-  int32_t height() const { return free_.height(); }
+  int32_t width() const { return freeTexels().width(); }
+  int32_t height() const { return freeTexels().height(); }
 
   /// The levels of free spans kept per row: spans of 1 (the free texels themselves), 4, 16 and 64 texels.
   static constexpr int kLevels = 4;
@@ -42,12 +47,15 @@ class AtlasOccupancy {
   bool wordsThatMayFit(int32_t y, int32_t lastX) const;
   std::optional<int32_t> leftmostFitInRow(int32_t y, int32_t lastX) const;
   uint64_t blockColumnsFree(int32_t y, int32_t word) const;
-  void updateRow(int32_t y);
-  void updateBlocks(int32_t firstRow, int32_t lastRow);
+  void updateRow(int32_t y, WordRange changed);
+  void updateBlocks(int32_t firstRow, int32_t lastRow, WordRange changed);
+  int32_t lowestRowForBlocks(const ChartMask& mask) const;
   bool blocksFitAtRow(const ChartMask& mask, int32_t y) const;
-  void updateSpans(int32_t y);
+  void updateSpans(int32_t y, WordRange changed);
+  // The free texels: the spans of 1 (a function, not a reference member, so that an occupancy copies).
+  TexelMask& freeTexels() { return spans_[0]; }
+  const TexelMask& freeTexels() const { return spans_[0]; }
 
-  TexelMask& free_ = spans_[0];
   // spans_[level] bit p: the 4^level texels from p are all free, kept per row so that any run is tested at 64
   // columns at once with at most four shifted words.
   TexelMask spans_[kLevels];
@@ -61,6 +69,9 @@ class AtlasOccupancy {
   // 4 rows from y kept as a bitmap, so that a block of 16 rows is four of them.
   std::vector<int32_t> longestFreeBlockRun_[2];
   TexelMask freeInFourRows_;
+  // Per block height and run length, a row at or below the lowest row whose free block run is that long
+  // (scratch of firstFit, raised as it finds rows that are too full).
+  mutable std::vector<int32_t> lowestBlockRow_[2];
   // The free texels of every 16 rows from y: a place must find the mask's block of 16 rows free there, tested
   // at a few of the block's columns on 64 columns at once before the mask's own runs (blockColumns_, scratch
   // of firstFit, mask coordinates).

@@ -39,6 +39,7 @@ struct Search {
   const ChartMeasures& measures;
   const AtlasFrame& frame;
   const Progress& progress;
+  atlas_detail::PackingSpace space{frame};
   int trials = 0;
 };
 
@@ -66,7 +67,7 @@ PackOutcome tryScale(Search& search, double scale, std::vector<Placement>& place
     const Progress part = trialPart(search, done, 0.5 + 0.5 * k / packings, 0.5 + 0.5 * (k + 1) / packings);
     ThrottledProgress throttled(part, kStage);
     const PackOutcome outcome = atlas_detail::packMasks(*masks, orders[k / rotationSets.size()],
-                                                        rotationSets[k % rotationSets.size()], search.frame, throttled,
+                                                        rotationSets[k % rotationSets.size()], search.space, throttled,
                                                         placements);
     if (outcome != PackOutcome::DoesNotFit) return outcome;
   }

@@ -80,6 +80,30 @@ void findBlocks(ChartMask& mask) {
   }
 }
 
+/// Transposes the 64 × 64 bit matrix `rows` (bit j of row i ↔ bit i of row j) by swapping its off-diagonal
+/// blocks of 32 × 32 bits, then within each quarter those of 16 × 16, and so on down to single bits.
+void transpose64(uint64_t (&rows)[64]) {
+  uint64_t lowHalves = 0x00000000FFFFFFFFull;  // per block of 2j columns, its j low ones
+  for (int32_t j = 32; j != 0; j >>= 1, lowHalves ^= lowHalves << j) {
+    for (int32_t k = 0; k < 64; k = ((k | j) + 1) & ~j) {
+      const uint64_t swapped = ((rows[k] >> j) ^ rows[k | j]) & lowHalves;
+      rows[k] ^= swapped << j;
+      rows[k | j] ^= swapped;
+    }
+  }
+}
+
+/// The runs by decreasing length, runs of one length in their order (a counting sort: lengths are at most the
+/// mask's width).
+void sortLongestFirst(std::vector<MaskRun>& runs, int32_t width) {
+  std::vector<int32_t> firstOfLength(width + 2, 0);
+  for (const MaskRun& run : runs) ++firstOfLength[width - run.length + 1];
+  for (int32_t i = 1; i <= width + 1; ++i) firstOfLength[i] += firstOfLength[i - 1];
+  std::vector<MaskRun> sorted(runs.size());
+  for (const MaskRun& run : runs) sorted[firstOfLength[width - run.length]++] = run;
+  runs.swap(sorted);
+}
+
 /// The runs of set texels of every row, longest first.
 void collectRuns(ChartMask& mask) {
   const TexelMask& texels = mask.texels;
@@ -93,8 +117,7 @@ void collectRuns(ChartMask& mask) {
     }
   }
   mask.centroidRow = count > 0 ? rowSum / count : 0;
-  std::stable_sort(mask.runs.begin(), mask.runs.end(),
-                   [](const MaskRun& a, const MaskRun& b) { return a.length > b.length; });
+  sortLongestFirst(mask.runs, texels.width());
 }
 
 }  // namespace
@@ -134,10 +157,19 @@ std::optional<ChartMask> quarterTurned(const ChartMask& mask, double angle, int3
   // grid whose corner is (−o.y − H, o.x).
   turned.origin = {-mask.origin.y - from.height(), mask.origin.x};
   turned.texels = TexelMask(from.height(), from.width());
-  for (const MaskRun& run : mask.runs) {
-    const int32_t column = from.height() - 1 - run.row;
-    const uint64_t bit = uint64_t{1} << (column & 63);
-    for (int32_t i = run.start; i < run.start + run.length; ++i) turned.texels.row(i)[column >> 6] |= bit;
+  // So turned row i, bit x is texel (i, H − 1 − x): blocks of 64 × 64 texels of the rows read top down, transposed.
+  const int32_t height = from.height();
+  for (int32_t block = 0; 64 * block < height; ++block) {
+    for (int32_t word = 0; 64 * word < from.width(); ++word) {
+      uint64_t bits[64];
+      for (int32_t i = 0; i < 64; ++i) {
+        const int32_t row = height - 1 - (64 * block + i);
+        bits[i] = row >= 0 ? from.row(row)[word] : 0;
+      }
+      transpose64(bits);
+      for (int32_t i = 0; i < 64 && 64 * word + i < from.width(); ++i)
+        turned.texels.row(64 * word + i)[block] = bits[i];
+    }
   }
   collectRuns(turned);
   findBlocks(turned);

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 
-#include "atlas_occupancy.hpp"
 #include "straightest/base/parallel_for.hpp"
 
 namespace straightest::atlas_detail {
@@ -68,9 +67,9 @@ std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, co
 }
 
 PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, Rotations rotations,
-                      const AtlasFrame& frame, const std::function<bool(double)>& keepGoing,
+                      PackingSpace& space, const std::function<bool(double)>& keepGoing,
                       std::vector<Placement>& placements) {
-  AtlasOccupancy occupancy(frame.width, frame.height, frame.border, frame.padding);
+  AtlasOccupancy& occupancy = space.emptied();
   placements.assign(masks.size(), Placement{});
   for (size_t i = 0; i < order.size(); ++i) {
     if (!keepGoing(static_cast<double>(i) / order.size())) return PackOutcome::Cancelled;

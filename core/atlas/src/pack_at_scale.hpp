@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "atlas_occupancy.hpp"
 #include "chart_raster.hpp"
 #include "straightest/atlas/chart_packing.hpp"
 
@@ -15,6 +16,22 @@ namespace straightest::atlas_detail {
 struct AtlasFrame {
   int32_t width = 0, height = 0, border = 0;
   double padding = 0;
+};
+
+/// The atlas packings place charts in: each packing starts from a copy of the empty atlas assigned into the
+/// storage of the last one, as building the empty atlas's spans and blocks, or allocating fresh bitmaps, for
+/// every packing costs more than the copy.
+class PackingSpace {
+ public:
+  explicit PackingSpace(const AtlasFrame& frame)
+      : empty_(frame.width, frame.height, frame.border, frame.padding), work_(empty_) {}
+  AtlasOccupancy& emptied() {
+    work_ = empty_;
+    return work_;
+  }
+
+ private:
+  AtlasOccupancy empty_, work_;
 };
 
 /// Per chart, the rotations worth trying: turns evenly spread over the full turn from the minimum-area
@@ -35,11 +52,11 @@ enum class PackOutcome { Packed, DoesNotFit, Cancelled };
 std::optional<ChartMasks> rasterizeAll(const std::vector<ChartShape>& charts, const ChartAngles& angles,
                                        double texelsPerUnit, const AtlasFrame& frame, const Progress& progress);
 
-/// Places every chart, in `order`, from its masks (those of `rotations`); `placements` (one per chart, input
-/// order) is complete only when the outcome is Packed. `keepGoing(fraction)` is asked as the charts go; false
-/// cancels.
+/// Places every chart, in `order`, from its masks (those of `rotations`) into the emptied `space`; `placements`
+/// (one per chart, input order) is complete only when the outcome is Packed. `keepGoing(fraction)` is asked as
+/// the charts go; false cancels.
 PackOutcome packMasks(const ChartMasks& masks, const std::vector<int32_t>& order, Rotations rotations,
-                      const AtlasFrame& frame, const std::function<bool(double)>& keepGoing,
+                      PackingSpace& space, const std::function<bool(double)>& keepGoing,
                       std::vector<Placement>& placements);
 
 }  // namespace straightest::atlas_detail
