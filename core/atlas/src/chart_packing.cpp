@@ -1,5 +1,5 @@
-// chart_packing.cpp — packCharts: the input's checks, then the search for the largest texel density at which
-// the greedy packing fits (or the one packing at the density asked for), and the placement formula.
+// chart_packing.cpp — packCharts: the input's checks, the grid the charts are packed on (the atlas's, a finer
+// one to refine the scale found, or a coarser one for a huge atlas), and the placement formula.
 #include "straightest/atlas/chart_packing.hpp"
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include "chart_measures.hpp"
 #include "chart_raster.hpp"
 #include "pack_input.hpp"
+#include "scale_search.hpp"
 
 namespace straightest {
 namespace {
@@ -23,99 +24,46 @@ constexpr const char* kStage = "pack";
 // charts, with gaps and borders at least as wide (a coarse texel is k × k fine ones), for a few hundredths
 // of utilization.
 constexpr int32_t kFinestPackingSide = 4096;
-// The scale search expects about this many packings (progress is reported against it).
-constexpr double kExpectedTrials = 12;
-// Below this the search gives up: the charts need more padded texels than the atlas has.
-constexpr int kMaxShrinks = 80;
 // The first scale tried fills this fraction of the atlas with chart area; greedy packings of real chart sets
-// reach about this, so the search brackets the answer within a step or two.
-constexpr double kExpectedFill = 0.7;
-// Steps of the search before it has a bracket: fine near the estimate, coarse when the charts are far from
-// fitting (more charts than padded texels).
-constexpr double kFineStep = 0.96, kCoarseShrink = 0.8;
+// reach about this, so the search brackets the answer within a step or two, climbing 4 % a step.
+constexpr double kExpectedFill = 0.7, kClimb = 1 / 0.96;
+// The scale found is searched again on a grid this many times finer, where it climbs 1 % a step, when that
+// grid is at most kFinestRefinedSide wide (the refinement multiplies the packing's texels by 4).
+constexpr int32_t kRefinement = 2, kFinestRefinedSide = 2048;
+constexpr double kRefinedClimb = 1.01;
 
-struct Search {
-  const std::vector<ChartShape>& charts;
-  const ChartMeasures& measures;
-  const AtlasFrame& frame;
-  const Progress& progress;
-  atlas_detail::PackingSpace space{frame};
-  int trials = 0;
-};
-
-/// The part of the progress range that trial `done` covers, [from, to) of its work.
-Progress trialPart(const Search& search, double done, double from, double to) {
-  auto at = [&](double part) { return std::min(0.99, (done + part) / kExpectedTrials); };
-  return search.progress.range(at(from), at(to));
+/// The search again on a grid kRefinement times finer, from the scale found (its placements, scaled, fit
+/// there): a mask on the finer grid wastes half as much around its chart's outline and the padding is kept
+/// to half a texel, so the charts fit larger (docs/BENCHMARKS.md). `placements` stay in atlas texels.
+Expected<double> refinedOnFinerGrid(const std::vector<ChartShape>& charts, const PackOptions& options,
+                                    const AtlasFrame& frame, double scale, const Progress& progress,
+                                    std::vector<Placement>& placements) {
+  PackOptions fineOptions = options;
+  fineOptions.width = kRefinement * frame.width;
+  fineOptions.height = kRefinement * frame.height;
+  fineOptions.padding = kRefinement * options.padding;
+  const AtlasFrame fine = atlas_detail::atlasFrame(fineOptions);
+  const ChartMeasures measures = atlas_detail::measureCharts(charts, options.rotate, fine);
+  for (Placement& placement : placements) placement.offset = placement.offset * static_cast<double>(kRefinement);
+  const double fits = kRefinement * scale;
+  // Each packing there costs four times as much: only the first order and rotation set climbs.
+  const atlas_detail::ScaleSearchStart start{fits * kRefinedClimb, fits, kRefinedClimb, false};
+  auto found = atlas_detail::largestFittingScale(charts, measures, fine, start, progress, placements);
+  for (Placement& placement : placements) placement.offset = placement.offset / static_cast<double>(kRefinement);
+  if (!found) return found.error();
+  return found.value() / kRefinement;
 }
 
-/// The charts packed at `scale`: rasterized once, then packed in each order, at every rotation and then at
-/// the right angles alone, until one packing fits. Neither rotation set packs better on every chart set: the
-/// extra rotations let long charts lie along the diagonal and odd shapes nest, the right angles alone keep
-/// compact charts in rows.
-PackOutcome tryScale(Search& search, double scale, std::vector<Placement>& placements) {
-  using atlas_detail::Rotations;
-  const double done = search.trials++;
-  const auto masks = atlas_detail::rasterizeAll(search.charts, search.measures.angles, scale, search.frame,
-                                                trialPart(search, done, 0, 0.5));
-  if (!masks) return PackOutcome::Cancelled;
-  std::vector<Rotations> rotationSets{Rotations::All};
-  if (search.measures.beyondRightAngles) rotationSets.push_back(Rotations::RightAngles);
-  const auto& orders = search.measures.orders;
-  const size_t packings = orders.size() * rotationSets.size();
-  for (size_t k = 0; k < packings; ++k) {
-    const Progress part = trialPart(search, done, 0.5 + 0.5 * k / packings, 0.5 + 0.5 * (k + 1) / packings);
-    ThrottledProgress throttled(part, kStage);
-    const PackOutcome outcome = atlas_detail::packMasks(*masks, orders[k / rotationSets.size()],
-                                                        rotationSets[k % rotationSets.size()], search.space, throttled,
-                                                        placements);
-    if (outcome != PackOutcome::DoesNotFit) return outcome;
-  }
-  return PackOutcome::DoesNotFit;
-}
-
-/// The search stops when the bracket [fits, fails] is within 0.5 % (1 % of utilization at most: below that the
-/// greedy packing's luck at one scale or the next outweighs the step), or within half a texel on the largest
-/// chart when that is wider (a small atlas, where a finer scale moves no texel).
-double searchTolerance(const ChartMeasures& measures, double fittingScale) {
-  const double halfTexel = 0.5 / std::max(fittingScale * measures.largestExtent, 1e-300);
-  return std::max(0.005, halfTexel);
-}
-
-/// The next scale to try: down in growing steps until one fits, then up in steps until one fails (never past
-/// the bound), then the geometric middle of the bracket.
-double nextScale(double scale, double fits, double fails, double upper, int shrinks) {
-  if (fits == 0) return scale * (shrinks <= 3 ? kFineStep : kCoarseShrink);
-  if (fails > upper) return std::min(upper, fits / kFineStep);
-  return std::sqrt(fits * fails);
-}
-
-/// The largest scale (within the tolerance) at which the greedy packing fits; its placements in `best`. The
-/// search starts where the charts would fill kExpectedFill of the atlas, so that a few packings bracket it.
-Expected<double> largestFittingScale(Search& search, std::vector<Placement>& best) {
-  double upper = search.measures.scaleUpperBound;
-  // All charts points: any scale packs them the same; 1 texel per unit is as good as any.
-  if (!std::isfinite(upper)) upper = 1;
-  const double unknown = 2 * upper;  // no scale has failed yet (every scale above the bound would)
-  double fits = 0, fails = unknown;
-  double scale = std::min(upper, search.measures.fillScale * std::sqrt(kExpectedFill));
-  std::vector<Placement> placements;
-  for (int shrinks = 0;;) {
-    const PackOutcome outcome = tryScale(search, scale, placements);
-    if (outcome == PackOutcome::Cancelled) return cancelledError("packing");
-    if (outcome == PackOutcome::Packed) {
-      fits = scale;
-      best.swap(placements);
-    } else {
-      fails = scale;
-    }
-    if (fits == 0 && ++shrinks > kMaxShrinks)
-      return Error{ErrorCode::TooLarge, "pack: the charts do not fit at any scale"};
-    if (fits == upper) return fits;
-    if (fits > 0 && fails != unknown && (fits == fails || fails / fits <= 1 + searchTolerance(search.measures, fits)))
-      return fits;
-    scale = nextScale(scale, fits, fails, upper, shrinks);
-  }
+/// The largest scale at which the charts fit the atlas, refined on the finer grid when it is small enough.
+Expected<double> largestScale(const std::vector<ChartShape>& charts, const PackOptions& options,
+                              const AtlasFrame& frame, const ChartMeasures& measures, const Progress& progress,
+                              std::vector<Placement>& placements) {
+  const bool refine = kRefinement * std::max(frame.width, frame.height) <= kFinestRefinedSide;
+  const double start = measures.fillScale * std::sqrt(kExpectedFill);
+  auto found = atlas_detail::largestFittingScale(charts, measures, frame, {start, 0, kClimb, true},
+                                                 refine ? progress.range(0, 0.5) : progress, placements);
+  if (!found || !refine) return found;
+  return refinedOnFinerGrid(charts, options, frame, found.value(), progress.range(0.5, 1), placements);
 }
 
 Packing finishedPacking(const AtlasFrame& frame, double scale, std::vector<Placement> placements, double area) {
@@ -132,20 +80,19 @@ Expected<Packing> packChecked(const std::vector<ChartShape>& charts, const PackO
                               const Progress& progress) {
   const AtlasFrame frame = atlas_detail::atlasFrame(options);
   const ChartMeasures measures = atlas_detail::measureCharts(charts, options.rotate, frame);
-  Search search{charts, measures, frame, progress};
   std::vector<Placement> placements;
   double scale = options.texelsPerUnit;
   if (charts.empty()) {
     // Nothing to place: the density asked for, or none.
   } else if (scale > 0) {
-    const PackOutcome outcome = tryScale(search, scale, placements);
+    const PackOutcome outcome = atlas_detail::packAtScale(charts, measures, frame, scale, progress, placements);
     if (outcome == PackOutcome::Cancelled) return cancelledError("packing");
     if (outcome == PackOutcome::DoesNotFit)
       return Error{ErrorCode::TooLarge, "pack: the charts do not fit in " + std::to_string(frame.width) + " x " +
                                             std::to_string(frame.height) + " texels at " + numberText(scale) +
                                             " texels per unit (texelsPerUnit 0 finds the largest that fits)"};
   } else {
-    auto found = largestFittingScale(search, placements);
+    auto found = largestScale(charts, options, frame, measures, progress, placements);
     if (!found) return found.error();
     scale = found.value();
   }
