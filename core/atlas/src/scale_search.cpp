@@ -53,8 +53,9 @@ PackOutcome tryScale(Search& search, double scale, Combos combos, std::vector<Pl
   const size_t sets = search.measures.beyondRightAngles ? 2 : 1;
   const size_t count = combos.end - combos.first;
   for (size_t k = combos.first; k < combos.end; ++k) {
-    const double part = 0.5 * (k - combos.first) / count;
-    ThrottledProgress throttled(trialPart(search, done, 0.5 + part, 0.5 + part + 0.5 / count), kStage);
+    const double from = 0.5 + 0.5 * (k - combos.first) / count;
+    const Progress part = trialPart(search, done, from, from + 0.5 / count);  // outlives `throttled`, which keeps it
+    ThrottledProgress throttled(part, kStage);
     const Rotations rotations = k % sets == 0 ? Rotations::All : Rotations::RightAngles;
     const PackOutcome outcome = packMasks(*masks, search.measures.orders[k / sets], rotations, search.space, throttled,
                                           placements);

@@ -59,6 +59,8 @@ class Progress {
 class ThrottledProgress {
  public:
   ThrottledProgress(const Progress& progress, const char* stage) : progress_(progress), stage_(stage) {}
+  // It keeps a reference: a temporary would be gone before the first call.
+  ThrottledProgress(Progress&& progress, const char* stage) = delete;
   bool operator()(double fraction) {
     if (fraction < last_ + 0.01) return true;
     last_ = fraction;
