@@ -299,8 +299,9 @@ TEST(AtlasPackScale, GivenDensityIsKeptOrRefused) {
 }
 
 TEST(AtlasPackScale, ManyChartsFillMostOfTheAtlas) {
+  // 0.708 since the scale is refined on the grid twice as fine (0.69 on the atlas's grid alone).
   const Packing packing = packOrFail(mixedCharts(300, 8), PackOptions{});
-  EXPECT_GE(packing.utilization, 0.69);
+  EXPECT_GE(packing.utilization, 0.70);
 }
 
 /// The charts makeCharts cuts a mesh into, as packCharts takes them.
@@ -314,10 +315,11 @@ std::vector<ChartShape> chartsOfMesh(const TriMesh& mesh) {
 TEST(AtlasPackScale, RealChartSetsFillTheAtlas) {
   // Organic outlines, not the synthetic polygons: the charts of the torus sample and of a genus-2 slab, packed
   // at the default padding, and their exact distances checked as for any packing.
-  // The floors are what the packer reaches on these few, long charts (the torus's are rings cut open: they fit
-  // only along the diagonal, which the right angles of their minimum rectangles alone left at 0.29).
+  // The floors are a little under what the packer reaches on these few, long charts (0.659 and 0.750; the
+  // torus's are rings cut open: they fit only along the diagonal, which the right angles of their minimum
+  // rectangles alone left at 0.29).
   const TriMesh torus = makeSample("torus").value(), slab = testing::genusSlab(2);
-  const std::pair<const TriMesh*, double> cases[] = {{&torus, 0.34}, {&slab, 0.42}};
+  const std::pair<const TriMesh*, double> cases[] = {{&torus, 0.64}, {&slab, 0.72}};
   for (const auto& [mesh, floor] : cases) {
     const auto charts = chartsOfMesh(*mesh);
     const Packing packing = packOrFail(charts, PackOptions{});
