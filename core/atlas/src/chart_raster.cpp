@@ -54,6 +54,12 @@ void rasterizeTriangle(const Vec2 (&corner)[3], TexelMask& mask) {
   }
 }
 
+int32_t bitCount(const uint64_t* words, int32_t count) {
+  int32_t bits = 0;
+  for (int32_t k = 0; k < count; ++k) bits += __builtin_popcountll(words[k]);
+  return bits;
+}
+
 /// Per block height, the block of rows with the longest common run (ChartMask::blocks). Blocks of 16 rows are
 /// four blocks of 4, as in the occupancy's.
 void findBlocks(ChartMask& mask) {
@@ -66,6 +72,8 @@ void findBlocks(ChartMask& mask) {
     std::copy(texels.row(row), texels.row(row) + words, common);
     for (int32_t i = 1; i < 4; ++i)
       for (int32_t k = 0; k < words; ++k) common[k] &= texels.row(row + i)[k];
+    // No run is longer than the row's count of set bits: a row that cannot beat the longest so far is not scanned.
+    if (bitCount(common, words) <= mask.blocks[0].length) continue;
     int32_t start = 0;
     const int32_t length = longestRunOfBits(common, texels.width(), &start);
     if (length > mask.blocks[0].length) mask.blocks[0] = {row, start, length};
@@ -74,6 +82,7 @@ void findBlocks(ChartMask& mask) {
   for (int32_t row = 0; row + 16 <= texels.height(); ++row) {
     for (int32_t k = 0; k < words; ++k)
       common[k] = four.row(row)[k] & four.row(row + 4)[k] & four.row(row + 8)[k] & four.row(row + 12)[k];
+    if (bitCount(common.data(), words) <= mask.blocks[1].length) continue;
     int32_t start = 0;
     const int32_t length = longestRunOfBits(common.data(), texels.width(), &start);
     if (length > mask.blocks[1].length) mask.blocks[1] = {row, start, length};
@@ -161,12 +170,15 @@ std::optional<ChartMask> quarterTurned(const ChartMask& mask, double angle, int3
   const int32_t height = from.height();
   for (int32_t block = 0; 64 * block < height; ++block) {
     for (int32_t word = 0; 64 * word < from.width(); ++word) {
-      uint64_t bits[64];
+      uint64_t bits[64], any = 0, all = ~uint64_t{0};
       for (int32_t i = 0; i < 64; ++i) {
         const int32_t row = height - 1 - (64 * block + i);
         bits[i] = row >= 0 ? from.row(row)[word] : 0;
+        any |= bits[i], all &= bits[i];
       }
-      transpose64(bits);
+      // Most blocks of a chart lie wholly outside or inside it: empty or full, they are their own transpose.
+      if (any == 0) continue;
+      if (all != ~uint64_t{0}) transpose64(bits);
       for (int32_t i = 0; i < 64 && 64 * word + i < from.width(); ++i)
         turned.texels.row(64 * word + i)[block] = bits[i];
     }
