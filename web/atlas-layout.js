@@ -37,7 +37,11 @@ export function facesByChart(chartOfFace, charts) {
   return lists;
 }
 
-/** One Path2D per chart in uv units ([0,1]², v up: y = 1 − v), made once per atlas and reused by every redraw. */
+/**
+ * One Path2D per chart in uv units ([0,1]², v up: y = 1 − v), made once per atlas and reused by every
+ * redraw. Only ever filled, and a fill closes each triangle itself: no closePath(), which in Chromium
+ * takes time in proportion to the path so far (a chart of many faces would cost their number squared).
+ */
 export function chartPaths({ cornerUv, chartOfFace, charts }) {
   return facesByChart(chartOfFace, charts).map((faces) => {
     const path = new Path2D();
@@ -45,7 +49,6 @@ export function chartPaths({ cornerUv, chartOfFace, charts }) {
       path.moveTo(cornerUv[6 * f], 1 - cornerUv[6 * f + 1]);
       path.lineTo(cornerUv[6 * f + 2], 1 - cornerUv[6 * f + 3]);
       path.lineTo(cornerUv[6 * f + 4], 1 - cornerUv[6 * f + 5]);
-      path.closePath();
     }
     return path;
   });

@@ -297,14 +297,16 @@ function drawTriangles(ctx, { cornerUv, faceStretch, heat }, px, py, colors) {
     }
   }
 
-  // The mesh edges in uv: one path, so shared edges are not drawn twice as dark.
+  // The mesh edges in uv: one path, so shared edges are not drawn twice as dark. Each triangle ends
+  // with a line back to its first corner, not closePath(): in Chromium each closePath() takes time in
+  // proportion to the path so far, so one path of many triangles would cost their number squared (a
+  // long task on the page's main thread from a few thousand faces on).
   ctx.strokeStyle = heat ? colors.heatEdges : colors.edges;
   ctx.lineWidth = 0.5;
   ctx.beginPath();
   for (let f = 0; f < faces; f++) {
     if (!Number.isFinite(u(f, 0))) continue; // a face left out of the parameterization
-    for (let k = 0; k < 3; k++) ctx[k ? 'lineTo' : 'moveTo'](px(u(f, k)), py(v(f, k)));
-    ctx.closePath();
+    for (let k = 0; k <= 3; k++) ctx[k ? 'lineTo' : 'moveTo'](px(u(f, k % 3)), py(v(f, k % 3)));
   }
   ctx.stroke();
 }
