@@ -6,11 +6,14 @@
 //
 //   node tests/e2e/first-atlas.bench.mjs MESH...      (IDLE_MS=5000)
 
+import { existsSync } from 'node:fs';
 import { startBenchBrowser, whenIdle } from './support/fixtures.mjs';
 
 const files = process.argv.slice(2);
-if (files.length === 0) {
-  console.error('usage: node tests/e2e/first-atlas.bench.mjs MESH...');
+const missing = files.filter((file) => !existsSync(file));
+if (files.length === 0 || missing.length > 0) {
+  console.error('usage: node tests/e2e/first-atlas.bench.mjs MESH_FILE...');
+  if (missing.length > 0) console.error(`no such file: ${missing.join(', ')}`);
   process.exit(2);
 }
 const idleMs = Number(process.env.IDLE_MS ?? 5000);
