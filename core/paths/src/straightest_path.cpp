@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "straightest/base/cache_hints.hpp"
 
@@ -297,42 +298,30 @@ struct StraightestPathTracer::Impl::Walk {
   /// (but for the sum), so the processor overlaps their divisions and square roots, which in one pass
   /// stood in every step's chain. Faces of S and D, where a segment must be tested against the end
   /// points, are walked one at a time. (The choice of exit keeps its branch, which the processor predicts
-  /// well: see STRAIGHTEST_KEEP_BRANCH. Figures in docs/BENCHMARKS.md.)
+  /// well: see STRAIGHTEST_KEEP_BRANCH. Figures in docs/BENCHMARKS.md.) The face step enters face g through
+  /// k = 3g + j (u → w, signs strictly opposite: k runs opposite to the crossed halfedge, so u is its head) and
+  /// leaves through the vertex o on the plane, or through next(k) (w → o) or prev(k) (o → u), whichever has
+  /// opposite signs: only o is new. It starts loading the records of g's two other neighbours, one of which
+  /// it enters next, so that memory latency overlaps the work on g. Between vertex passings every crossed edge
+  /// has one way in and one way out, so a cycle first comes back to the piece's first crossing (in either
+  /// direction): the walk stops there. The step stays in this loop: made a
+  /// function returning its next crossing, its exit became a select (about two thirds slower).
   STRAIGHTEST_INLINE bool crossEdges(Exit& e, Vec3& P, bool& first, int32_t& pieceStart, int64_t& step) {
     const FaceAdjacency* adjacency = mesh.adjacencyData();
     const Vec3* positions = mesh.positions().data();
     const Vec3 normal = tr.plane_.normal, origin = tr.plane_.origin;
     const double onPlane = tr.onPlaneTolerance_;
     const int64_t maxSteps = tr.maxSteps_;
-    const bool keep = tr.options_.keepPoints;
     // The crossing the walk is at: halfedge h = a → b in face f, with the ends' signed distances.
     int32_t h = e.halfedge, f = e.face, a = mesh.tail(h), b = mesh.head(h);
     int32_t k = adjacency[f].twins[h - 3 * f];  // twin(h)
     double da = e.dTail, db = e.dHead;
     double length = out.length;
     int64_t crossed = out.facesCrossed;
-    auto finish = [&](TraceStatus status) {
-      out.length = length;
-      out.facesCrossed = crossed;
-      out.status = status;
-      return true;
-    };
-    // The crossing point as crossing() computes it.
-    auto point = [positions](int32_t a_, int32_t b_, double da_, double db_, double& t) {
-      t = da_ / (da_ - db_);
-      return positions[a_] * (1 - t) + positions[b_] * t;
-    };
-    struct Crossing {
-      int32_t h, a, b;
-      double da, db;
-    };
-    constexpr int kBlock = 64;
     Crossing block[kBlock];
-    enum class End { None, Test, Boundary, Loop, Vertex, StepLimit };
     int32_t vertex = -1, vertexFace = -1;  // End::Vertex: the vertex on the plane, in face vertexFace
     for (;;) {
-      // Pass 1: the faces.
-      int m = 0;
+      int m = 0;  // pass 1: the faces
       End end = End::None;
       for (;;) {
         if (tr.isTargetFace(f) || tr.isSourceFace(f)) {
@@ -340,47 +329,24 @@ struct StraightestPathTracer::Impl::Walk {
             end = End::Test;
             break;
           }
-          // The segment P → X in face f, tested as segment() tests it.
+          const EndFaceStep stepped = segmentInEndFace(Crossing{h, a, b, da, db}, f, P, first);
           ++crossed;
-          double t;
-          const Vec3 X = point(a, b, da, db, t);
-          if (tr.isTargetFace(f) && onSegment(D, P, X)) {
-            length += norm(D - P);
-            emit(dest, D);
-            return finish(TraceStatus::Reached);
-          }
-          if (!first && tr.isSourceFace(f) && onSegment(tr.sourcePosition_, P, X)) {
-            length += norm(tr.sourcePosition_ - P);
-            emit(tr.source_, tr.sourcePosition_);
-            return finish(TraceStatus::OtherComponent);
-          }
-          length += norm(X - P);
+          length += stepped.length;
+          if (stepped.ends) return finish(*stepped.ends, length, crossed);
           first = false;
-          if (keep) emit(SurfacePoint::edge(h, t), X);
-          P = X;
+          P = stepped.to;
         } else {
           block[m++] = Crossing{h, a, b, da, db};
         }
-        if (k < 0) {
-          end = End::Boundary;
-          break;
-        }
-        // Between vertex passings every crossed edge has one way in and one way out, so a cycle first
-        // comes back to the piece's first crossing (in either direction).
-        if (h == pieceStart || k == pieceStart) {
-          end = End::Loop;
+        if (k < 0 || h == pieceStart || k == pieceStart) {
+          end = k < 0 ? End::Boundary : End::Loop;
           break;
         }
         if (pieceStart < 0) pieceStart = h;
-        // Enter face g through k = 3g + j (u → w, signs strictly opposite: k runs opposite to the crossed
-        // halfedge, so u is its head); leave through the vertex o on the plane, or through next(k)
-        // (w → o) or prev(k) (o → u), whichever has opposite signs. Only o is new.
         const int32_t g = static_cast<int32_t>(static_cast<uint32_t>(k) / 3u), j = k - 3 * g, j1 = j == 2 ? 0 : j + 1,
                       j2 = j1 == 2 ? 0 : j1 + 1;
         const FaceAdjacency& face = adjacency[g];
         const int32_t u = face.corners[j], w = face.corners[j1], o = face.corners[j2];
-        // The walk enters one of g's two other neighbours next: start loading both records now, so that
-        // memory latency overlaps the work on g.
         const int32_t kNext = face.twins[j1], kPrev = face.twins[j2];
         prefetchRecordOf(adjacency, kNext);
         prefetchRecordOf(adjacency, kPrev);
@@ -388,14 +354,9 @@ struct StraightestPathTracer::Impl::Walk {
         double dO = dot(normal, positions[o] - origin);  // signedDistance(o)
         if (std::abs(dO) <= onPlane) dO = 0.0;
         ++step;
-        if (dO == 0) {
-          end = End::Vertex;
-          vertex = o;
-          vertexFace = g;
-          break;
-        }
-        if (step > maxSteps) {
-          end = End::StepLimit;
+        if (dO == 0 || step > maxSteps) {
+          end = dO == 0 ? End::Vertex : End::StepLimit;
+          vertex = o, vertexFace = g;
           break;
         }
         if ((dO > 0) != (du > 0)) {
@@ -407,37 +368,100 @@ struct StraightestPathTracer::Impl::Walk {
         f = g;
         if (m == kBlock) break;
       }
-      // Pass 2: the block's points and lengths, in order.
-      for (int i = 0; i < m; ++i) {
-        const Crossing& c = block[i];
-        double t;
-        const Vec3 X = point(c.a, c.b, c.da, c.db, t);
-        length += norm(X - P);
-        if (keep) emit(SurfacePoint::edge(c.h, t), X);
-        P = X;
-      }
+      length = walkBlock(block, m, P, length);
       crossed += m;
       if (m > 0) first = false;
       switch (end) {
         case End::None:
         case End::Test: continue;
-        case End::Boundary: return finish(TraceStatus::HitBoundary);
-        case End::Loop: return finish(TraceStatus::Loop);
-        case End::StepLimit: return finish(TraceStatus::StepLimit);
-        case End::Vertex: {
-          out.length = length;
-          out.facesCrossed = crossed;
-          Exit ev;
-          ev.valid = true;
-          ev.isVertex = true;
-          ev.vertex = vertex;
-          ev.position = positions[vertex];
-          ev.face = vertexFace;
-          e = ev;
+        case End::Boundary: return finish(TraceStatus::HitBoundary, length, crossed);
+        case End::Loop: return finish(TraceStatus::Loop, length, crossed);
+        case End::StepLimit: return finish(TraceStatus::StepLimit, length, crossed);
+        case End::Vertex:
+          writeBack(length, crossed);
+          e = vertexExit(vertex, vertexFace);
           return false;
-        }
       }
     }
+  }
+
+  // crossEdges' parts off its face-to-face loop: each takes and returns values, so that the loop's state
+  // stays in registers (a reference to a local would keep it in memory).
+
+  /// A crossing of crossEdges: halfedge h = a → b, its ends' signed distances.
+  struct Crossing {
+    int32_t h, a, b;
+    double da, db;
+  };
+  /// The pieces of the section crossEdges collects before it computes their points (its pass 2).
+  static constexpr int kBlock = 64;
+  /// Why crossEdges' face-to-face pass stopped.
+  enum class End { None, Test, Boundary, Loop, Vertex, StepLimit };
+
+  /// The crossing point as crossing() computes it (the same bits), its parameter on the edge in t.
+  Vec3 crossingPoint(const Crossing& c, double& t) const {
+    t = c.da / (c.da - c.db);
+    return mesh.position(c.a) * (1 - t) + mesh.position(c.b) * t;
+  }
+
+  /// Pass 2 of crossEdges: the block's crossing points from P, in order, with the same arithmetic as
+  /// segment(); the length after them. P ends at the last point.
+  double walkBlock(const Crossing* block, int m, Vec3& P, double length) {
+    const bool keep = tr.options_.keepPoints;
+    for (int i = 0; i < m; ++i) {
+      double t;
+      const Vec3 X = crossingPoint(block[i], t);
+      length += norm(X - P);
+      if (keep) emit(SurfacePoint::edge(block[i].h, t), X);
+      P = X;
+    }
+    return length;
+  }
+
+  struct EndFaceStep {
+    std::optional<TraceStatus> ends;  // the walk ends at D or at S (another component's way back)
+    Vec3 to;                          // else: the crossing point it goes on from
+    double length;                    // the segment's length either way
+  };
+
+  /// The segment from P across crossing c in face f, a face of S or D, tested as segment() tests it.
+  EndFaceStep segmentInEndFace(const Crossing& c, int32_t f, const Vec3& P, bool first) {
+    double t;
+    const Vec3 X = crossingPoint(c, t);
+    if (tr.isTargetFace(f) && onSegment(D, P, X)) {
+      emit(dest, D);
+      return {TraceStatus::Reached, D, norm(D - P)};
+    }
+    if (!first && tr.isSourceFace(f) && onSegment(tr.sourcePosition_, P, X)) {
+      emit(tr.source_, tr.sourcePosition_);
+      return {TraceStatus::OtherComponent, tr.sourcePosition_, norm(tr.sourcePosition_ - P)};
+    }
+    if (tr.options_.keepPoints) emit(SurfacePoint::edge(c.h, t), X);
+    return {std::nullopt, X, norm(X - P)};
+  }
+
+  /// crossEdges' length and count of crossed faces, written back to the result.
+  void writeBack(double length, int64_t crossed) {
+    out.length = length;
+    out.facesCrossed = crossed;
+  }
+
+  /// crossEdges' end: its length and count written back, the walk ended with `status`.
+  bool finish(TraceStatus status, double length, int64_t crossed) {
+    writeBack(length, crossed);
+    out.status = status;
+    return true;
+  }
+
+  /// The exit through a vertex of face f on the plane, where crossEdges hands the walk back to run().
+  Exit vertexExit(int32_t vertex, int32_t f) const {
+    Exit exit;
+    exit.valid = true;
+    exit.isVertex = true;
+    exit.vertex = vertex;
+    exit.position = mesh.position(vertex);
+    exit.face = f;
+    return exit;
   }
 
   bool sourceOnBoundary() const {
