@@ -38,6 +38,9 @@ struct MergeRule {
   int32_t maxFaces = 0;      // 0: any size
   bool facingApart = false;  // try pairs whose average normals are more than 90° apart too
   size_t fewestCharts = 0;   // stop merging at this many charts
+  // The faces all trials may flatten together, per mesh face (0: no bound, the merges go on while any is
+  // acceptable: a cap the caller asked for is worth the time).
+  int64_t trialFacesPerFace = kTrialFacesPerFace;
 };
 
 /// Adjacent pairs worth a trial, best first, each chart in at most one; none whose union exceeds the rule's
@@ -91,20 +94,23 @@ std::vector<int32_t> unionOf(const std::vector<int32_t>& a, const std::vector<in
 Expected<int32_t> mergeRounds(const TriMesh& mesh, std::vector<FlatChart>& charts, ChartPairs& knownBad,
                               const MergeRule& rule, const FreeBoundaryOptions& free, const Progress& progress) {
   int32_t merges = 0;
-  const int64_t fullBudget = kTrialFacesPerFace * static_cast<int64_t>(mesh.numFaces());
+  const bool bounded = rule.trialFacesPerFace > 0;
+  // Unbounded, progress is counted against the bound the caps-free merges have; it stops short of 1.
+  const int64_t fullBudget = (bounded ? rule.trialFacesPerFace : kTrialFacesPerFace) *
+                             static_cast<int64_t>(std::max(mesh.numFaces(), 1));
   int64_t budget = fullBudget;
   // Progress is the budget spent, so it only grows from round to round.
   auto spent = [&] {
-    return std::min(1.0, static_cast<double>(fullBudget - budget) / static_cast<double>(fullBudget));
+    return std::min(0.99, static_cast<double>(fullBudget - budget) / static_cast<double>(fullBudget));
   };
-  while (budget > 0 && charts.size() > rule.fewestCharts) {
+  while ((budget > 0 || !bounded) && charts.size() > rule.fewestCharts) {
     std::vector<MergeTrial> trials = chooseTrials(mesh, charts, knownBad, rule);
     // Each merge takes one chart away: no more trials than charts above the fewest.
     if (rule.fewestCharts > 0) trials.resize(std::min(trials.size(), charts.size() - rule.fewestCharts));
     std::vector<std::vector<int32_t>> unions;
     const double roundBegins = spent();
     for (const MergeTrial& t : trials) {
-      if (budget <= 0) break;  // the trials are best first: the ones left out matter least
+      if (bounded && budget <= 0) break;  // the trials are best first: the ones left out matter least
       unions.push_back(unionOf(charts[t.a].faces, charts[t.b].faces));
       budget -= static_cast<int64_t>(unions.back().size());
     }
@@ -146,7 +152,7 @@ Expected<int32_t> mergeCharts(const TriMesh& mesh, std::vector<FlatChart>& chart
 Expected<int32_t> mergeDownTo(const TriMesh& mesh, std::vector<FlatChart>& charts, size_t count,
                               const FreeBoundaryOptions& free, const Progress& progress) {
   ChartPairs knownBad;  // pairs that failed the stricter limits may pass these
-  const MergeRule anyBijective{ChartLimits{std::numeric_limits<double>::infinity(), 0}, 0, true, count};
+  const MergeRule anyBijective{ChartLimits{std::numeric_limits<double>::infinity(), 0}, 0, true, count, 0};
   return mergeRounds(mesh, charts, knownBad, anyBijective, free, progress);
 }
 
