@@ -114,11 +114,15 @@ double closestChartsDistance(const Packing& packing, const std::vector<ChartShap
   return closest;
 }
 
-void expectInsideUnitSquare(const Packing& packing, const std::vector<ChartShape>& charts) {
+/// Every chart point inside the atlas, at least its border of ceil(padding / 2) texels from each side (so
+/// that tiled copies of the atlas keep the padding too).
+void expectInsideTheBorder(const Packing& packing, const std::vector<ChartShape>& charts, double padding) {
+  const double border = std::ceil(padding / 2) - 1e-7;
   for (size_t c = 0; c < charts.size(); ++c)
     for (const Vec2& uv : charts[c].triangles) {
-      const Vec2 p = placeInAtlas(packing, static_cast<int32_t>(c), uv);
-      ASSERT_TRUE(p.x >= 0 && p.x <= 1 && p.y >= 0 && p.y <= 1) << "chart " << c << " at " << p.x << ", " << p.y;
+      const Vec2 p = placeInTexels(packing, static_cast<int32_t>(c), uv);
+      ASSERT_TRUE(p.x >= border && p.x <= packing.width - border && p.y >= border && p.y <= packing.height - border)
+          << "chart " << c << " at " << p.x << ", " << p.y << " texels, padding " << padding;
     }
 }
 
@@ -141,7 +145,7 @@ std::vector<ChartShape> testCharts(int count, uint32_t seed) {
 void expectPaddingKept(const std::vector<ChartShape>& charts, const PackOptions& options) {
   const Packing packing = packOrFail(charts, options);
   ASSERT_EQ(packing.placements.size(), charts.size());
-  expectInsideUnitSquare(packing, charts);
+  expectInsideTheBorder(packing, charts, options.padding);
   const double closest = closestChartsDistance(packing, charts, options.padding + 1);
   EXPECT_GE(closest, options.padding - 1e-7) << "padding " << options.padding;
   EXPECT_GT(closest, 0) << "charts meet";
@@ -196,7 +200,7 @@ TEST(AtlasPackOverlap, ZeroPaddingChartsNeverOverlap) {
   options.padding = 0;
   const auto charts = testCharts(30, 4);
   const Packing packing = packOrFail(charts, options);
-  expectInsideUnitSquare(packing, charts);
+  expectInsideTheBorder(packing, charts, options.padding);
   // Charts may touch along texel edges; their interiors never overlap: any triangle's centroid lies outside every
   // other chart's triangles (shrunk slightly, so that touching edges do not count).
   const auto placed = placedCharts(packing, charts);
@@ -280,7 +284,7 @@ TEST(AtlasPackScale, LongStripLiesAlongTheDiagonal) {
   const Packing packing = packOrFail({strip}, PackOptions{});
   EXPECT_GE(packing.texelsPerUnit, 1025.0);
   EXPECT_LE(packing.texelsPerUnit, 1022 / ((1.3 + 0.1) / std::sqrt(2.0)));
-  expectInsideUnitSquare(packing, {strip});
+  expectInsideTheBorder(packing, {strip}, PackOptions{}.padding);
 }
 
 TEST(AtlasPackScale, GivenDensityIsKeptOrRefused) {
@@ -290,7 +294,7 @@ TEST(AtlasPackScale, GivenDensityIsKeptOrRefused) {
   options.texelsPerUnit = 20;
   const Packing packing = packOrFail(charts, options);
   EXPECT_EQ(packing.texelsPerUnit, 20);
-  expectInsideUnitSquare(packing, charts);
+  expectInsideTheBorder(packing, charts, options.padding);
   options.texelsPerUnit = 400;
   const auto refused = packCharts(charts, options);
   ASSERT_FALSE(refused.ok());

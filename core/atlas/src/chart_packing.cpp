@@ -42,7 +42,8 @@ Expected<double> refinedOnFinerGrid(const std::vector<ChartShape>& charts, const
   fineOptions.width = kRefinement * frame.width;
   fineOptions.height = kRefinement * frame.height;
   fineOptions.padding = kRefinement * options.padding;
-  const AtlasFrame fine = atlas_detail::atlasFrame(fineOptions);
+  AtlasFrame fine = atlas_detail::atlasFrame(fineOptions);
+  fine.border = kRefinement * frame.border;  // the atlas's border, not half a padding of fine texels
   const ChartMeasures measures = atlas_detail::measureCharts(charts, options.rotate, fine);
   for (Placement& placement : placements) placement.offset = placement.offset * static_cast<double>(kRefinement);
   const double fits = kRefinement * scale;
