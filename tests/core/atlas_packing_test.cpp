@@ -194,6 +194,15 @@ TEST(AtlasPackOverlap, AnAtlasWiderThan4096IsPackedOnACoarserGridAndScaledUp) {
   }
 }
 
+TEST(AtlasPackOverlap, AThinAtlasWiderThan4096KeepsARowForTheCharts) {
+  // 16384 × 6 at padding 2: a grid 4 times coarser would be 1 texel high, all border; a coarser grid is
+  // taken only as far as its short side keeps a free row.
+  PackOptions options;
+  options.width = 16384;
+  options.height = 6;
+  expectPaddingKept({fanChart({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), fanChart({{0, 0}, {2, 0}, {2, 1}, {0, 1}})}, options);
+}
+
 TEST(AtlasPackOverlap, ZeroPaddingChartsNeverOverlap) {
   PackOptions options;
   options.resolution = 128;

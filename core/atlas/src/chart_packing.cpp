@@ -105,7 +105,9 @@ Expected<Packing> packChecked(const std::vector<ChartShape>& charts, const PackO
 Expected<Packing> packOnFinestGrid(const std::vector<ChartShape>& charts, const PackOptions& options,
                                    const Progress& progress) {
   const AtlasFrame frame = atlas_detail::atlasFrame(options);
-  const int32_t k = (std::max(frame.width, frame.height) + kFinestPackingSide - 1) / kFinestPackingSide;
+  int32_t k = (std::max(frame.width, frame.height) + kFinestPackingSide - 1) / kFinestPackingSide;
+  // A thin atlas's short side must still hold a row of texels inside the coarse border.
+  while (k > 1 && std::min(frame.width, frame.height) / k < 2 * ((frame.border + k - 1) / k) + 1) --k;
   if (k <= 1) return packChecked(charts, options, progress);
   PackOptions coarse = options;
   coarse.width = std::max(frame.width / k, 1);
