@@ -40,11 +40,17 @@ export function toSeamSplitGeometry(mesh: Mesh, parameterization: Pick<Parameter
 export interface UnwrapOptions extends AtlasOptions, MeshFromBufferGeometryOptions {
   /** The attribute that receives the atlas uv: 'uv' (default) or 'uv1' (three's second set, e.g. for a lightmap). */
   channel?: 'uv' | 'uv1';
+  /**
+   * Merge vertices whose positions agree before the atlas is made: true (the default here: within 1e-7 of the
+   * bounding box's diagonal), a distance, or false. The geometry keeps its own vertices either way; welding
+   * only lets the charts cross its uv and normal seams (and three's cylinder and cone caps, whose centre repeats).
+   */
+  weld?: boolean | number;
 }
 
 /**
- * Unwraps a geometry into a texture atlas (Mesh.atlas). weld defaults to true (here only): the atlas's charts may
- * cross the geometry's uv and normal seams, where its vertices repeat; the new geometry keeps its own vertices.
+ * Unwraps a geometry into a texture atlas (Mesh.atlas). weld defaults to true (as in packAtlas): the atlas's charts
+ * may cross the geometry's uv and normal seams, where its vertices repeat; the new geometry keeps its own vertices.
  * The new geometry is split along the atlas's seams (one vertex per distinct geometry vertex and uv), keeps
  * every other attribute, morph target, group and the triangles' order, and has the atlas uv on `channel`;
  * userData.vertexOrigin maps each of its vertices to the geometry's. Every triangle of the geometry is unwrapped
