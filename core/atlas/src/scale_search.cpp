@@ -27,7 +27,8 @@ struct Search {
   int trials = 0;
 };
 
-/// The order × rotation-set combinations a scale can be packed with, the first one alone or all of them.
+/// A range [first, end) of the order × rotation-set combinations a scale can be packed with (k: order k / sets,
+/// the right angles alone when k is odd and there are two sets).
 /// Neither rotation set packs better on every chart set: the extra rotations let long charts lie along the
 /// diagonal and odd shapes nest, the right angles alone keep compact charts in rows.
 struct Combos {
