@@ -178,7 +178,7 @@ std::optional<T> decimal(const char* value) {
   T v{};
   const char* last = value + std::strlen(value);
   const auto [end, error] = std::from_chars(value, last, v);
-  if (!*value || error != std::errc{} || end != last) return std::nullopt;
+  if (error != std::errc{} || end != last) return std::nullopt;
   return v;
 }
 
@@ -306,21 +306,20 @@ Expected<TriMesh> openMesh(const Options& o) {
   if (o.mesh.compare(0, prefix.size(), prefix) == 0) return makeSample(o.mesh.substr(prefix.size()));
   if (o.mesh.compare(0, field.size(), field) == 0) {
     const std::string n = o.mesh.substr(field.size());
-    char* end = nullptr;
-    const long size = std::strtol(n.c_str(), &end, 10);
-    if (n.empty() || *end || size < 2 || size > 10000)
+    const auto size = decimal<int32_t>(n.c_str());
+    if (!size || *size < 2 || *size > 10000)
       return Error{ErrorCode::InvalidArgument, "heightfield:N needs 2 <= N <= 10000 (N × N vertices), got '" + n + "'"};
-    return makeHeightField(static_cast<int>(size));
+    return makeHeightField(*size);
   }
   return loadMeshFile(o.mesh, o.limits);
 }
 
 /// A vertex given on the command line: a non-negative integer that names a vertex used by a face.
 Expected<int32_t> parseVertex(const TriMesh& mesh, const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end || v < 0)
+  const auto index = decimal<int64_t>(text.c_str());
+  if (!index || *index < 0)
     return Error{ErrorCode::InvalidArgument, what + " must be a vertex index, got '" + text + "'"};
+  const int64_t v = *index;
   if (v >= mesh.numVertices())
     return Error{ErrorCode::InvalidArgument, what + " " + text + " is out of range (the mesh has " +
                                                  std::to_string(mesh.numVertices()) + " vertices)"};
@@ -472,11 +471,11 @@ int runShoot(const Options& o, const TriMesh& mesh, double loadMs) {
     shot = shootGeodesicToward(mesh, source.value(), SurfacePoint::vertex(d.value()), o.length, {},
                                progressLines(o.progress));
   } else {
-    char* end = nullptr;
-    const double angle = std::strtod(o.direction.c_str(), &end);
-    if (*end || !std::isfinite(angle))
+    const auto direction = decimal<double>(o.direction.c_str());
+    if (!direction || !std::isfinite(*direction))
       return fail(o, Error{ErrorCode::InvalidArgument,
                            "--direction expects an angle in radians, got '" + o.direction + "'"});
+    const double angle = *direction;
     if (!o.length) return fail(o, Error{ErrorCode::InvalidArgument, "--direction needs --length L"});
     shot = shootGeodesicAtAngle(mesh, source.value(), angle, *o.length, {}, progressLines(o.progress));
   }
